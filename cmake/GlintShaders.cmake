@@ -1,0 +1,123 @@
+# HLSL -> SPIR-V for glint.
+#
+#   glint_add_hlsl_shader(NAME <name> ENTRY <file.cs.hlsl>
+#                         [DEFINES <D=V>...] [PERMUTATIONS "<suffix>:<D=V>[,<D=V>...]"...])
+#
+# compiles <file> with DXC when GLINT_DXC is set (or dxc is on PATH) and with glslang's HLSL
+# front end otherwise, validates every module with spirv-val, and records each output so that
+# glint_embed_shaders() can bake them into the host library. A permutation produces a second
+# module "<name>.<suffix>" with the base defines plus its own. All shaders and their
+# permutations are listed in one place: hlsl/CMakeLists.txt.
+#
+#   glint_check_hlsl_header(<header> [STUBS <stub.hlsl>])
+#
+# compiles one library header on its own (optionally with a stub file that defines its
+# callbacks and calls its entry function) so that a header that only compiles after some
+# other include is caught.
+
+set(GLINT_HLSL_ROOT "${PROJECT_SOURCE_DIR}/hlsl")
+set(GLINT_SPIRV_DIR "${PROJECT_BINARY_DIR}/spirv")
+set(GLINT_SPIRV_TARGET_ENV vulkan1.1)
+
+# The compile command line for one module, for whichever compiler is in use.
+function(_glint_hlsl_command out_var input output depfile defines)
+  set(defs "")
+  foreach(d IN LISTS defines)
+    list(APPEND defs "-D${d}")
+  endforeach()
+  if(GLINT_DXC)
+    set(cmd "${GLINT_DXC}" -spirv -fspv-target-env=${GLINT_SPIRV_TARGET_ENV} -HV 2021 -WX
+            -T cs_6_2 -E main -enable-16bit-types -I "${GLINT_HLSL_ROOT}" -DGLINT_COMPILER_DXC=1
+            ${defs} -Fo "${output}" "${input}")
+  else()
+    set(cmd "${GLINT_GLSLANG}" -V -D --target-env ${GLINT_SPIRV_TARGET_ENV} -S comp -e main
+            --hlsl-enable-16bit-types -I${GLINT_HLSL_ROOT} -DGLINT_COMPILER_GLSLANG=1 ${defs}
+            --depfile "${depfile}" -o "${output}" "${input}")
+  endif()
+  set(${out_var} "${cmd}" PARENT_SCOPE)
+endfunction()
+
+function(_glint_compile_module name input defines)
+  set(output "${GLINT_SPIRV_DIR}/${name}.spv")
+  set(depfile "${GLINT_SPIRV_DIR}/${name}.d")
+  _glint_hlsl_command(cmd "${input}" "${output}" "${depfile}" "${defines}")
+  set(extra "")
+  if(NOT GLINT_DXC)
+    set(extra DEPFILE "${depfile}")
+  endif()
+  add_custom_command(
+    OUTPUT "${output}"
+    COMMAND "${CMAKE_COMMAND}" -E make_directory "${GLINT_SPIRV_DIR}"
+    COMMAND ${cmd}
+    COMMAND "${GLINT_SPIRV_VAL}" --target-env ${GLINT_SPIRV_TARGET_ENV} "${output}"
+    DEPENDS "${input}" ${GLINT_HLSL_HEADERS}
+    ${extra}
+    COMMENT "HLSL -> SPIR-V ${name}"
+    VERBATIM)
+  set_property(GLOBAL APPEND PROPERTY GLINT_SHADER_NAMES "${name}")
+  set_property(GLOBAL APPEND PROPERTY GLINT_SHADER_FILES "${output}")
+endfunction()
+
+function(glint_add_hlsl_shader)
+  cmake_parse_arguments(ARG "" "NAME;ENTRY" "DEFINES;PERMUTATIONS" ${ARGN})
+  if(NOT ARG_NAME OR NOT ARG_ENTRY)
+    message(FATAL_ERROR "glint_add_hlsl_shader needs NAME and ENTRY")
+  endif()
+  cmake_path(ABSOLUTE_PATH ARG_ENTRY BASE_DIRECTORY "${CMAKE_CURRENT_SOURCE_DIR}")
+  _glint_compile_module("${ARG_NAME}" "${ARG_ENTRY}" "${ARG_DEFINES}")
+  foreach(perm IN LISTS ARG_PERMUTATIONS)
+    string(FIND "${perm}" ":" colon)
+    if(colon LESS 1)
+      message(FATAL_ERROR "permutation '${perm}' of ${ARG_NAME} must read <suffix>:<D=V>,...")
+    endif()
+    string(SUBSTRING "${perm}" 0 ${colon} suffix)
+    math(EXPR start "${colon} + 1")
+    string(SUBSTRING "${perm}" ${start} -1 perm_defs)
+    string(REPLACE "," ";" perm_defs "${perm_defs}")
+    _glint_compile_module("${ARG_NAME}.${suffix}" "${ARG_ENTRY}" "${ARG_DEFINES};${perm_defs}")
+  endforeach()
+endfunction()
+
+# Generates <target>'s embedded shader table: one C++ source in the build tree holding every
+# module compiled so far as a uint32_t array, plus a sorted name -> span index.
+function(glint_embed_shaders target)
+  get_property(names GLOBAL PROPERTY GLINT_SHADER_NAMES)
+  get_property(files GLOBAL PROPERTY GLINT_SHADER_FILES)
+  set(generated "${PROJECT_BINARY_DIR}/generated/glint_embedded_shaders.cpp")
+  add_custom_command(
+    OUTPUT "${generated}"
+    COMMAND "${CMAKE_COMMAND}" "-DNAMES=${names}" "-DFILES=${files}" "-DOUTPUT=${generated}"
+            -P "${PROJECT_SOURCE_DIR}/cmake/GlintEmbedSpirv.cmake"
+    DEPENDS ${files} "${PROJECT_SOURCE_DIR}/cmake/GlintEmbedSpirv.cmake"
+    COMMENT "Embedding SPIR-V modules"
+    VERBATIM)
+  target_sources(${target} PRIVATE "${generated}")
+endfunction()
+
+function(glint_check_hlsl_header header)
+  cmake_parse_arguments(ARG "" "STUBS" "" ${ARGN})
+  cmake_path(ABSOLUTE_PATH header BASE_DIRECTORY "${CMAKE_CURRENT_SOURCE_DIR}")
+  cmake_path(GET header STEM stem)
+  set(check_src "${PROJECT_BINARY_DIR}/hlsl_check/${stem}.check.hlsl")
+  # glslang resolves includes only through its search path, so name files relative to hlsl/.
+  file(RELATIVE_PATH header_rel "${GLINT_HLSL_ROOT}" "${header}")
+  set(body "// Generated: compiles ${header_rel} alone.\n#include \"${header_rel}\"\n")
+  if(ARG_STUBS)
+    cmake_path(ABSOLUTE_PATH ARG_STUBS BASE_DIRECTORY "${CMAKE_CURRENT_SOURCE_DIR}")
+    file(RELATIVE_PATH stubs_rel "${GLINT_HLSL_ROOT}" "${ARG_STUBS}")
+    string(APPEND body "#include \"${stubs_rel}\"\n")
+  else()
+    string(APPEND body "[numthreads(1, 1, 1)] void main() {}\n")
+  endif()
+  file(GENERATE OUTPUT "${check_src}" CONTENT "${body}")
+  set(output "${PROJECT_BINARY_DIR}/hlsl_check/${stem}.spv")
+  _glint_hlsl_command(cmd "${check_src}" "${output}" "${output}.d" "GLINT_HEADER_CHECK=1")
+  add_custom_command(
+    OUTPUT "${output}"
+    COMMAND ${cmd}
+    COMMAND "${GLINT_SPIRV_VAL}" --target-env ${GLINT_SPIRV_TARGET_ENV} "${output}"
+    DEPENDS "${header}" ${ARG_STUBS} ${GLINT_HLSL_HEADERS}
+    COMMENT "HLSL header check ${stem}"
+    VERBATIM)
+  set_property(GLOBAL APPEND PROPERTY GLINT_HLSL_CHECK_OUTPUTS "${output}")
+endfunction()

@@ -1,0 +1,18 @@
+# Strict warnings (and errors) for glint's own targets only; third-party headers are
+# included as SYSTEM by their imported targets, so their warnings never fail our build.
+function(glint_target_defaults target)
+  target_compile_options(${target} PRIVATE
+    -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wsign-conversion
+    -Wnon-virtual-dtor -Wold-style-cast -Wcast-align -Woverloaded-virtual
+    -Wnull-dereference -Wdouble-promotion -Wformat=2 -Wimplicit-fallthrough
+    # VkFooCreateInfo info{VK_STRUCTURE_TYPE_FOO}; zero-initialises the rest on purpose.
+    -Wno-missing-field-initializers)
+  if(GLINT_WERROR)
+    target_compile_options(${target} PRIVATE -Werror)
+  endif()
+  if(GLINT_SANITIZE)
+    target_compile_options(${target} PRIVATE -fsanitize=address,undefined -fno-omit-frame-pointer
+                                             -fno-sanitize-recover=undefined)
+    target_link_options(${target} PRIVATE -fsanitize=address,undefined)
+  endif()
+endfunction()

@@ -1,0 +1,56 @@
+// glint public API: an effect as data.
+//
+// Every effect is described as an ordered list of passes. A pass names its compute pipeline
+// (an embedded SPIR-V module), the resources it reads and writes under the names its shader
+// binds them by, its constants, and how it is dispatched (a direct grid, or indirect from a
+// buffer that an earlier pass wrote). The Vulkan backend executes such a list, deriving
+// barriers from the declared accesses; an engine can execute the same list with its own
+// renderer (the NRD model). Nothing here touches a graphics API.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace glint {
+
+enum class Access : std::uint8_t {
+    Read = 1,          // sampled or storage read by the shader
+    Write = 2,         // storage write (contents before the pass are not needed)
+    ReadWrite = 3,     // storage read-modify-write or atomics
+    IndirectArgs = 4,  // read by the dispatch itself as VkDispatchIndirectCommand
+};
+
+struct ResourceUse {
+    std::string binding;  // the shader's variable name, e.g. "g_glint_material"
+    std::string resource; // the effect-level resource name, e.g. "material"
+    Access access = Access::Read;
+};
+
+struct DirectDispatch {
+    std::uint32_t groupsX = 1, groupsY = 1, groupsZ = 1;
+};
+
+struct IndirectDispatch {
+    std::string resource;      // the buffer holding the arguments
+    std::uint64_t offset = 0;  // byte offset of the 3 x uint32 arguments, 4-byte aligned
+};
+
+struct Pass {
+    std::string name;      // unique within the effect, used for timings and dumps
+    std::string pipeline;  // embedded shader module name, e.g. "gbuffer_extract_roughness"
+    std::uint32_t groupSize[3] = {8, 8, 1}; // must equal the shader's [numthreads]
+    std::vector<ResourceUse> uses;
+    std::string constantsBinding;           // empty when the pass has no constants
+    std::vector<std::byte> constants;       // packed exactly as the shader's cbuffer
+    std::variant<DirectDispatch, IndirectDispatch> dispatch;
+};
+
+struct EffectPlan {
+    std::string effect;
+    std::vector<Pass> passes;
+};
+
+} // namespace glint

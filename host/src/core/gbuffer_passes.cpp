@@ -1,0 +1,56 @@
+// The G-buffer preparation passes as data.
+#include "glint/glint_gbuffer.h"
+
+#include "core/dispatch.h"
+#include "glint/gbuffer/glint_gbuffer_constants.h"
+
+namespace glint {
+
+const char* resultName(Result result) {
+    switch (result) {
+    case Result::Ok:
+        return "ok";
+    case Result::InvalidArgument:
+        return "invalid argument";
+    case Result::Unsupported:
+        return "unsupported";
+    case Result::DeviceError:
+        return "device error";
+    }
+    return "unknown result";
+}
+
+namespace {
+constexpr std::uint32_t kMaxExtent = 16384;
+
+Result invalid(std::string* error, const char* message) {
+    if (error) *error = message;
+    return Result::InvalidArgument;
+}
+} // namespace
+
+Result planRoughnessExtraction(const RoughnessExtractionDesc& desc, EffectPlan& plan, std::string* error) {
+    if (desc.size.width == 0 || desc.size.height == 0 || desc.size.width > kMaxExtent || desc.size.height > kMaxExtent)
+        return invalid(error, "roughness extraction: size must be 1..16384 in each dimension");
+    if (desc.materialChannel > 3) return invalid(error, "roughness extraction: materialChannel must be 0..3");
+
+    shaders::GLINT_GBufferRoughnessConstants constants{};
+    constants.size = {desc.size.width, desc.size.height};
+    constants.materialChannel = desc.materialChannel;
+    constants.inputIsPerceptual = desc.inputIsPerceptual ? 1u : 0u;
+
+    Pass pass;
+    pass.name = "extract_roughness";
+    pass.pipeline = desc.halfPrecisionOutput ? "gbuffer_extract_roughness.fp16" : "gbuffer_extract_roughness";
+    pass.uses = {{"g_glint_material", "material", Access::Read}, {"g_glint_alpha", "roughness", Access::Write}};
+    pass.constantsBinding = "g_glint_constants";
+    pass.constants = core::packConstants(constants);
+    pass.dispatch = core::gridFor(desc.size.width, desc.size.height, 1, pass.groupSize);
+
+    plan = EffectPlan{};
+    plan.effect = "gbuffer";
+    plan.passes.push_back(std::move(pass));
+    return Result::Ok;
+}
+
+} // namespace glint

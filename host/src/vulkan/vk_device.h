@@ -1,0 +1,23 @@
+// The device glint runs on. The application (or the harness) owns every handle here; glint
+// only borrows them, so an engine can hand over its own device and queue.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+
+namespace glint::vk {
+
+struct Device {
+    VkPhysicalDevice physical = VK_NULL_HANDLE;
+    VkDevice device = VK_NULL_HANDLE;
+    VkQueue queue = VK_NULL_HANDLE; // must support compute
+    uint32_t queueFamily = 0;
+    VkPhysicalDeviceProperties properties{};
+    VkPhysicalDeviceMemoryProperties memory{};
+    uint32_t subgroupSize = 0;      // VkPhysicalDeviceSubgroupProperties::subgroupSize
+    bool timestamps = false;        // queue family has timestampValidBits > 0
+    uint32_t timestampValidBits = 0;
+};
+
+} // namespace glint::vk

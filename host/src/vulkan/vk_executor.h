@@ -1,0 +1,52 @@
+// Executes an EffectPlan (glint/glint_pass.h) on a command buffer: pipelines by name,
+// descriptors bound by the shader's variable names, barriers from the declared accesses.
+//
+// Images are used in VK_IMAGE_LAYOUT_GENERAL throughout (sampled and storage alike); the
+// application transitions them there once. Everything the plan reads must be written and
+// visible to "all commands" before the command buffer reaches the plan; the executor's first
+// barrier per resource waits for that external write.
+#pragma once
+
+#include "glint/glint_pass.h"
+#include "vulkan/vk_pipeline.h"
+#include "vulkan/vk_resources.h"
+
+#include <functional>
+#include <map>
+#include <string>
+
+namespace glint::vk {
+
+struct ResourceTable {
+    std::map<std::string, const Image*> images;
+    std::map<std::string, const Buffer*> buffers;
+};
+
+// Called around each dispatch, e.g. to write timestamps or debug labels.
+struct PassHooks {
+    std::function<void(VkCommandBuffer, std::size_t passIndex)> beforeDispatch;
+    std::function<void(VkCommandBuffer, std::size_t passIndex)> afterDispatch;
+};
+
+struct Executor {
+    const Device* device = nullptr;
+    std::map<std::string, ComputePipeline> pipelines; // created on first use
+    VkDescriptorPool descriptorPool = VK_NULL_HANDLE;
+    VkSampler linearClampSampler = VK_NULL_HANDLE;      // bound to every sampler binding
+    Buffer constantRing;                                // per-pass constants, host-visible
+    VkDeviceSize constantRingUsed = 0;
+};
+
+Executor createExecutor(const Device& device);
+void destroyExecutor(Executor& executor);
+
+// Recycles descriptors and constant memory. Call only after the GPU finished every command
+// buffer recorded since the previous reset.
+void resetExecutor(Executor& executor);
+
+// Records the plan. Throws std::runtime_error with one line naming the pass when the plan
+// does not match its shaders (unknown binding, missing resource, group size mismatch...).
+void recordPlan(Executor& executor, VkCommandBuffer cmd, const EffectPlan& plan, const ResourceTable& resources,
+                const PassHooks& hooks = {});
+
+} // namespace glint::vk

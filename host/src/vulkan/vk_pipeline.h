@@ -1,0 +1,26 @@
+// Compute pipelines built from embedded SPIR-V, with the descriptor set layout that
+// reflection of the same module gives.
+#pragma once
+
+#include "vulkan/vk_device.h"
+#include "vulkan/vk_reflect.h"
+
+#include <string>
+
+namespace glint::vk {
+
+struct ComputePipeline {
+    std::string name;
+    ReflectedShader shader;
+    VkShaderModule module = VK_NULL_HANDLE;
+    VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
+    VkPipelineLayout layout = VK_NULL_HANDLE;
+    VkPipeline pipeline = VK_NULL_HANDLE;
+};
+
+// name is an embedded module (core/shader_library.h). Throws on unknown names, reflection
+// problems and Vulkan errors.
+ComputePipeline createComputePipeline(const Device& device, const std::string& name);
+void destroyComputePipeline(const Device& device, ComputePipeline& pipeline);
+
+} // namespace glint::vk

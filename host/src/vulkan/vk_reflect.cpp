@@ -1,0 +1,84 @@
+#include "vulkan/vk_reflect.h"
+
+#include <spirv_cross/spirv_cross.hpp>
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace glint::vk {
+namespace {
+
+void addBindings(const spirv_cross::Compiler& compiler, const spirv_cross::SmallVector<spirv_cross::Resource>& resources,
+                 VkDescriptorType type, const std::string& moduleName, ReflectedShader& out) {
+    for (const spirv_cross::Resource& resource : resources) {
+        const uint32_t set = compiler.get_decoration(resource.id, spv::DecorationDescriptorSet);
+        if (set != 0)
+            throw std::runtime_error(moduleName + ": '" + resource.name + "' is in descriptor set " +
+                                     std::to_string(set) + "; glint entry files use set 0 only");
+        ReflectedBinding binding;
+        binding.name = compiler.get_name(resource.id);
+        if (binding.name.empty()) binding.name = resource.name;
+        binding.binding = compiler.get_decoration(resource.id, spv::DecorationBinding);
+        binding.type = type;
+        const spirv_cross::SPIRType& spirType = compiler.get_type(resource.type_id);
+        binding.count = 1;
+        for (uint32_t dimension : spirType.array) binding.count *= std::max(dimension, 1u);
+        const spirv_cross::Bitset decorations = compiler.get_decoration_bitset(resource.id);
+        binding.writable = !decorations.get(spv::DecorationNonWritable);
+        if (type == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER) {
+            const spirv_cross::SPIRType& block = compiler.get_type(resource.base_type_id);
+            binding.blockSize = static_cast<uint32_t>(compiler.get_declared_struct_size(block));
+            for (uint32_t i = 0; i < block.member_types.size(); ++i) {
+                BlockMember member;
+                member.name = compiler.get_member_name(resource.base_type_id, i);
+                member.offset = compiler.type_struct_member_offset(block, i);
+                member.size = static_cast<uint32_t>(compiler.get_declared_struct_member_size(block, i));
+                binding.members.push_back(std::move(member));
+            }
+        }
+        out.bindings.push_back(std::move(binding));
+    }
+}
+
+} // namespace
+
+ReflectedShader reflectComputeShader(std::span<const uint32_t> spirv, const std::string& moduleName) {
+    if (spirv.empty()) throw std::runtime_error(moduleName + ": no SPIR-V module of that name is embedded");
+    try {
+        spirv_cross::Compiler compiler(spirv.data(), spirv.size());
+        ReflectedShader shader;
+        const auto entryPoints = compiler.get_entry_points_and_stages();
+        if (entryPoints.empty() || entryPoints[0].execution_model != spv::ExecutionModelGLCompute)
+            throw std::runtime_error(moduleName + ": not a compute shader");
+        const spirv_cross::SPIREntryPoint& entry =
+            compiler.get_entry_point(entryPoints[0].name, spv::ExecutionModelGLCompute);
+        shader.localSize[0] = entry.workgroup_size.x;
+        shader.localSize[1] = entry.workgroup_size.y;
+        shader.localSize[2] = entry.workgroup_size.z;
+
+        const spirv_cross::ShaderResources resources = compiler.get_shader_resources();
+        if (!resources.push_constant_buffers.empty())
+            throw std::runtime_error(moduleName + ": push constants are not used by glint entry files");
+        if (!resources.subpass_inputs.empty() || !resources.acceleration_structures.empty() ||
+            !resources.atomic_counters.empty())
+            throw std::runtime_error(moduleName + ": declares a resource kind the compute backend does not bind");
+        addBindings(compiler, resources.uniform_buffers, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, moduleName, shader);
+        addBindings(compiler, resources.storage_buffers, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, moduleName, shader);
+        addBindings(compiler, resources.storage_images, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, moduleName, shader);
+        addBindings(compiler, resources.separate_images, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, moduleName, shader);
+        addBindings(compiler, resources.separate_samplers, VK_DESCRIPTOR_TYPE_SAMPLER, moduleName, shader);
+        addBindings(compiler, resources.sampled_images, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, moduleName, shader);
+        std::sort(shader.bindings.begin(), shader.bindings.end(),
+                  [](const ReflectedBinding& a, const ReflectedBinding& b) { return a.binding < b.binding; });
+        for (std::size_t i = 1; i < shader.bindings.size(); ++i)
+            if (shader.bindings[i].binding == shader.bindings[i - 1].binding)
+                throw std::runtime_error(moduleName + ": '" + shader.bindings[i].name + "' and '" +
+                                         shader.bindings[i - 1].name + "' share binding " +
+                                         std::to_string(shader.bindings[i].binding));
+        return shader;
+    } catch (const spirv_cross::CompilerError& error) {
+        throw std::runtime_error(moduleName + ": SPIR-V reflection failed: " + error.what());
+    }
+}
+
+} // namespace glint::vk
