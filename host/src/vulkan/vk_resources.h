@@ -25,8 +25,8 @@ struct Buffer {
 struct Image {
     VkImage image = VK_NULL_HANDLE;
     VkDeviceMemory memory = VK_NULL_HANDLE;
-    VkImageView view = VK_NULL_HANDLE;              // all mips, for sampled/storage reads
-    VkImageView mipViews[16] = {};                  // one per mip, for storage writes
+    VkImageView view = VK_NULL_HANDLE; // all mips, for sampled/storage reads
+    VkImageView mipViews[16] = {};     // one per mip, for storage writes
     VkFormat format = VK_FORMAT_UNDEFINED;
     uint32_t width = 0;
     uint32_t height = 0;

@@ -1,0 +1,41 @@
+// glint: frame-capture and device tool. Verbs are registered here and implemented one per
+// file (cli_<verb>.cpp); later verbs (simulate, run, dump, bench, study, view) join them.
+#include "cli_commands.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <exception>
+
+int main(int argc, char** argv) {
+    CLI::App app{"glint: reflections and shadow-denoising passes on frame captures"};
+    app.require_subcommand(1);
+    bool validate = false;
+    app.add_flag("--validate", validate,
+                 "Run under VK_LAYER_KHRONOS_validation (with synchronization validation); any error exits 1");
+
+    CLI::App* devices = app.add_subcommand("devices", "List Vulkan devices: driver, subgroup size, float16 support");
+
+    std::string infoPath;
+    bool headerOnly = false;
+    CLI::App* info = app.add_subcommand("info", "Describe a frame capture (.exr) or a sequence folder");
+    info->add_option("capture", infoPath, "frame file or sequence folder")->required();
+    info->add_flag("--header-only", headerOnly, "read headers only; skip pixels and non-finite counts");
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& error) {
+        // CLI11 exits 0 for --help and non-zero for real usage errors; map the latter to 2.
+        const int code = app.exit(error);
+        return code == 0 ? glint::cli::kExitOk : glint::cli::kExitUsage;
+    }
+
+    try {
+        if (*devices) return glint::cli::runDevices(validate);
+        if (*info) return glint::cli::runInfo(infoPath, !headerOnly);
+    } catch (const std::exception& error) {
+        std::fprintf(stderr, "glint: %s\n", error.what());
+        return glint::cli::kExitUsage;
+    }
+    return glint::cli::kExitUsage;
+}

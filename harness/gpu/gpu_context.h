@@ -1,0 +1,53 @@
+// The harness's Vulkan instance, device and queue: created once per tool run or test process,
+// then borrowed by glint as a glint::vk::Device.
+#pragma once
+
+#include <gpu/gpu_devices.h>
+#include <gpu/gpu_validation.h>
+
+#include "vulkan/vk_device.h"
+
+#include <functional>
+#include <memory>
+#include <string>
+
+namespace glint::gpu {
+
+// GLINT_DEVICE's value, or "" when unset (see chooseDevice for the syntax).
+std::string deviceSelectorFromEnvironment();
+
+struct ContextOptions {
+    // VK_LAYER_KHRONOS_validation with a counting messenger; createContext fails with a clear
+    // error if the layer is not installed.
+    bool validation = false;
+    // The layer's synchronization validation (hazards between dispatches, copies and host
+    // access). Only with validation. Best-practices checks stay off: they flag style, not bugs.
+    bool synchronizationValidation = false;
+    // Off for tests that provoke validation errors on purpose and only count them.
+    bool printValidationErrors = true;
+    std::string deviceSelector = deviceSelectorFromEnvironment();
+};
+
+struct Context {
+    VkInstance instance = VK_NULL_HANDLE;
+    uint32_t instanceApiVersion = 0;
+    VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
+    vk::Device device;
+    DeviceInfo info; // the features it reports (float16, int16, storage16) are enabled
+    VkCommandPool commandPool = VK_NULL_HANDLE; // for submitAndWait; resettable buffers
+    // Non-null when validation is on. Heap-allocated because the messenger holds its address.
+    std::unique_ptr<ValidationStats> validation;
+};
+
+// Throws glint::vk::VulkanError or std::runtime_error with a one-line message on failure,
+// having destroyed whatever it had created.
+Context createContext(const ContextOptions& options);
+// Waits for the device to go idle, then destroys everything but `validation`, which stays
+// readable: vkDestroyDevice is where the layer reports objects the caller never destroyed.
+void destroyContext(Context& context);
+
+// Records one command buffer with `record`, submits it to the context's queue and waits for
+// it to finish. Not thread-safe: the harness drives the queue from one thread.
+void submitAndWait(const Context& context, const std::function<void(VkCommandBuffer)>& record);
+
+} // namespace glint::gpu

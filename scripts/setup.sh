@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# Installs whatever system packages are missing, then configures and builds one preset.
+# Idempotent: with everything installed and built, it checks and returns in seconds.
+#   scripts/setup.sh <debug|release>
+set -euo pipefail
+preset=${1:?usage: scripts/setup.sh <debug|release>}
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+
+# Debian bookworm package names; every dependency of the project is in this list.
+packages=(
+  cmake ninja-build g++ pkg-config git clang-format
+  libvulkan-dev vulkan-validationlayers mesa-vulkan-drivers vulkan-tools
+  glslang-tools spirv-tools libspirv-cross-c-shared-dev
+  libopenexr-dev libimath-dev catch2 libcli11-dev nlohmann-json3-dev libtomlplusplus-dev
+)
+
+missing=()
+for package in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$package")
+  fi
+done
+if ((${#missing[@]})); then
+  echo "setup: installing ${missing[*]}"
+  sudo=()
+  if [ "$(id -u)" -ne 0 ]; then sudo=(sudo); fi
+  export DEBIAN_FRONTEND=noninteractive
+  "${sudo[@]}" apt-get update -q
+  "${sudo[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
+fi
+
+cd "$root"
+if [ ! -f "build/$preset/CMakeCache.txt" ]; then
+  cmake --preset "$preset"
+fi
+cmake --build --preset "$preset"

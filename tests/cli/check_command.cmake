@@ -1,0 +1,23 @@
+# Script mode: runs COMMAND and checks its exit code, its stdout against EXPECT_STDOUT (a
+# regex, newlines folded to spaces) and, when EXPECT_STDERR_ONE_LINE is set, that stderr is
+# exactly one line matching it.
+execute_process(COMMAND ${COMMAND} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+message(STATUS "exit ${status}\n--- stdout\n${out}--- stderr\n${err}---")
+if(NOT "${status}" STREQUAL "${EXPECT_EXIT}")
+  message(FATAL_ERROR "expected exit code ${EXPECT_EXIT}, got ${status}")
+endif()
+if(EXPECT_STDOUT)
+  string(REPLACE "\n" " " flat "${out}")
+  if(NOT flat MATCHES "${EXPECT_STDOUT}")
+    message(FATAL_ERROR "stdout does not match '${EXPECT_STDOUT}'")
+  endif()
+endif()
+if(EXPECT_STDERR_ONE_LINE)
+  string(STRIP "${err}" stripped)
+  if(stripped MATCHES "\n")
+    message(FATAL_ERROR "stderr has more than one line")
+  endif()
+  if(NOT stripped MATCHES "${EXPECT_STDERR_ONE_LINE}")
+    message(FATAL_ERROR "stderr does not match '${EXPECT_STDERR_ONE_LINE}'")
+  endif()
+endif()

@@ -1,0 +1,16 @@
+# Script mode: writes the sample sequence with glint_make_sample, then malformed files.
+file(REMOVE_RECURSE "${DIR}")
+file(MAKE_DIRECTORY "${DIR}")
+execute_process(COMMAND "${MAKE_SAMPLE}" "${DIR}" RESULT_VARIABLE status)
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "glint_make_sample failed: ${status}")
+endif()
+# A truncated copy: the header survives, most of the pixel data does not.
+file(SIZE "${DIR}/sample/frame_0000.exr" size)
+math(EXPR keep "${size} / 2")
+execute_process(COMMAND head -c ${keep} "${DIR}/sample/frame_0000.exr" OUTPUT_FILE "${DIR}/truncated.exr"
+                RESULT_VARIABLE status)
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "could not write truncated.exr")
+endif()
+file(WRITE "${DIR}/not_exr.exr" "this is a text file, not an OpenEXR image\n")

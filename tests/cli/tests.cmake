@@ -1,0 +1,38 @@
+# The glint command as a user runs it: exit codes and what it prints.
+#   glint_cli_test(NAME LABELS EXIT CODE [STDOUT regex] [STDERR_ONE_LINE regex] [SETUP cmd] COMMAND args...)
+set(GLINT_CLI_SAMPLE_DIR "${PROJECT_BINARY_DIR}/test-output/cli")
+function(glint_cli_test)
+  cmake_parse_arguments(ARG "" "NAME;LABELS;EXIT;STDOUT;STDERR_ONE_LINE" "COMMAND" ${ARGN})
+  add_test(NAME "cli: ${ARG_NAME}"
+    COMMAND "${CMAKE_COMMAND}" "-DCOMMAND=$<TARGET_FILE:glint>;${ARG_COMMAND}" "-DEXPECT_EXIT=${ARG_EXIT}"
+            "-DEXPECT_STDOUT=${ARG_STDOUT}" "-DEXPECT_STDERR_ONE_LINE=${ARG_STDERR_ONE_LINE}"
+            -P "${CMAKE_CURRENT_SOURCE_DIR}/cli/check_command.cmake")
+  set_tests_properties("cli: ${ARG_NAME}" PROPERTIES LABELS "${ARG_LABELS}" FIXTURES_REQUIRED cli_samples)
+endfunction()
+
+# Fixture: the bundled sample sequence plus malformed files made from it.
+add_test(NAME "cli: make samples"
+  COMMAND "${CMAKE_COMMAND}" "-DMAKE_SAMPLE=$<TARGET_FILE:glint_make_sample>" "-DDIR=${GLINT_CLI_SAMPLE_DIR}"
+          -P "${CMAKE_CURRENT_SOURCE_DIR}/cli/make_cli_samples.cmake")
+set_tests_properties("cli: make samples" PROPERTIES FIXTURES_SETUP cli_samples LABELS "unit")
+
+glint_cli_test(NAME "info describes a sample frame" LABELS unit EXIT 0
+  STDOUT "64.48.*color.*depth.*normal.*material.*motion.*reflections"
+  COMMAND info "${GLINT_CLI_SAMPLE_DIR}/sample/frame_0000.exr")
+glint_cli_test(NAME "info describes a sample sequence" LABELS unit EXIT 0
+  STDOUT "2 frames.*frame_0000.exr.*frame_0001.exr"
+  COMMAND info "${GLINT_CLI_SAMPLE_DIR}/sample")
+glint_cli_test(NAME "info on a truncated capture prints one line and exits 2" LABELS unit EXIT 2
+  STDERR_ONE_LINE "truncated.exr"
+  COMMAND info "${GLINT_CLI_SAMPLE_DIR}/truncated.exr")
+glint_cli_test(NAME "info on a file that is not EXR prints one line and exits 2" LABELS unit EXIT 2
+  STDERR_ONE_LINE "not_exr.exr"
+  COMMAND info "${GLINT_CLI_SAMPLE_DIR}/not_exr.exr")
+glint_cli_test(NAME "info on a missing file prints one line and exits 2" LABELS unit EXIT 2
+  STDERR_ONE_LINE "does_not_exist.exr"
+  COMMAND info "${GLINT_CLI_SAMPLE_DIR}/does_not_exist.exr")
+glint_cli_test(NAME "an unknown verb is a usage error" LABELS unit EXIT 2
+  COMMAND frobnicate)
+glint_cli_test(NAME "devices lists at least one Vulkan device with its subgroup size" LABELS gpu EXIT 0
+  STDOUT "subgroup size [0-9]+"
+  COMMAND --validate devices)
