@@ -4,7 +4,7 @@ function(glint_target_defaults target)
   target_compile_options(${target} PRIVATE
     -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wsign-conversion
     -Wnon-virtual-dtor -Wold-style-cast -Wcast-align -Woverloaded-virtual
-    -Wnull-dereference -Wdouble-promotion -Wformat=2 -Wimplicit-fallthrough
+    -Wdouble-promotion -Wformat=2 -Wimplicit-fallthrough
     # VkFooCreateInfo info{VK_STRUCTURE_TYPE_FOO}; zero-initialises the rest on purpose.
     -Wno-missing-field-initializers)
   if(GLINT_WERROR)

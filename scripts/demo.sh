@@ -3,7 +3,7 @@
 # devices and describes the bundled sample capture. Output goes to out/ (report.md).
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-"$root/scripts/setup.sh" release
+"$root/scripts/setup.sh" release glint glint_make_sample
 cd "$root"
 bin=build/release/harness
 out=${GLINT_OUT:-out}

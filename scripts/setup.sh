@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs whatever system packages are missing, then configures and builds one preset.
 # Idempotent: with everything installed and built, it checks and returns in seconds.
-#   scripts/setup.sh <debug|release>
+#   scripts/setup.sh <debug|release> [target...]
 set -euo pipefail
 preset=${1:?usage: scripts/setup.sh <debug|release>}
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -33,4 +33,5 @@ cd "$root"
 if [ ! -f "build/$preset/CMakeCache.txt" ]; then
   cmake --preset "$preset"
 fi
-cmake --build --preset "$preset"
+# Optional targets after the preset limit the build to what the caller runs.
+cmake --build --preset "$preset" ${2:+--target "${@:2}"}

@@ -193,7 +193,7 @@ Environment makeSampleEnvironment(std::uint32_t width, std::uint32_t height) {
     env.layout = EnvironmentLayout::LatLong;
     env.width = width;
     env.height = height;
-    env.rgb.resize(std::size_t{width} * height * 3);
+    env.rgb.assign(std::size_t{width} * height * 3, 0.0f);
     for (std::uint32_t y = 0; y < height; ++y) {
         // OpenEXR lat-long: latitude +pi/2 on the top row, -pi/2 on the bottom row.
         const double latitude = std::numbers::pi * (0.5 - (y + 0.5) / height);

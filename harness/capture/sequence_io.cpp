@@ -9,7 +9,6 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
-#include <iterator>
 #include <set>
 
 namespace glint::capture {
@@ -38,9 +37,10 @@ nlohmann::json parseManifest(const std::filesystem::path& manifest) {
     if (!std::filesystem::is_regular_file(manifest, ec)) fail(manifest, "not a regular file");
     const std::uintmax_t bytes = std::filesystem::file_size(manifest, ec);
     if (ec || bytes > kMaxManifestBytes) fail(manifest, "manifest is unreadable or larger than 16 MiB");
+    std::string text(static_cast<std::size_t>(bytes), '\0');
     std::ifstream in(manifest, std::ios::binary);
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (!in && !in.eof()) fail(manifest, "cannot read the manifest");
+    if (!in.read(text.data(), static_cast<std::streamsize>(text.size())))
+        fail(manifest, "cannot read the manifest");
     try {
         return nlohmann::json::parse(text);
     } catch (const nlohmann::json::exception& e) {

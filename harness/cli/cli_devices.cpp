@@ -24,7 +24,10 @@ std::string subgroupOpsText(VkSubgroupFeatureFlags ops) {
                 {VK_SUBGROUP_FEATURE_QUAD_BIT, "quad"}};
     std::string text;
     for (const auto& op : kOps)
-        if (ops & op.bit) text += (text.empty() ? "" : ",") + std::string(op.name);
+        if (ops & op.bit) {
+            if (!text.empty()) text.push_back(',');
+            text.append(op.name);
+        }
     return text.empty() ? "none" : text;
 }
 

@@ -11,7 +11,6 @@
 
 #include <cmath>
 #include <fstream>
-#include <iterator>
 
 namespace glint::capture::test {
 
@@ -141,8 +140,10 @@ void writeBytes(const std::filesystem::path& file, const std::string& bytes) {
 }
 
 std::string readBytes(const std::filesystem::path& file) {
+    std::string bytes(static_cast<std::size_t>(std::filesystem::file_size(file)), '\0');
     std::ifstream in(file, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    return bytes;
 }
 
 } // namespace glint::capture::test

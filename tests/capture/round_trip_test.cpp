@@ -3,6 +3,8 @@
 #include <capture/frame_io.h>
 
 #include <Imath/half.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfTiledOutputFile.h>
 #include <catch2/catch.hpp>
 
 #include <bit>
@@ -140,4 +142,29 @@ TEST_CASE("the header-only read reports layers, storage and the declared convent
     REQUIRE(reference != nullptr);
     CHECK(reference->channels == std::vector<std::string>{"R", "G", "B"});
     CHECK(findLayer(h, "depth")->storage == SampleType::Float);
+}
+
+TEST_CASE("a tiled file with ZIP or PIZ compression reads like the scanline file it was made from",
+          "[capture]") {
+    const auto dir = test::freshTestDir("round_trip_tiled");
+    const Frame written = test::makeDepthOnlyFrame(37, 21); // FLOAT only: one slice type
+    writeFrame(dir / "scanline.exr", written);
+    for (Imf::Compression compression : {Imf::ZIP_COMPRESSION, Imf::PIZ_COMPRESSION}) {
+        Imf::Header header = test::exrHeaderOf(dir / "scanline.exr");
+        header.compression() = compression;
+        header.setTileDescription(Imf::TileDescription(16, 8, Imf::ONE_LEVEL));
+        {
+            Imf::TiledOutputFile out((dir / "tiled.exr").c_str(), header);
+            const Layer& depth = *findLayer(written, "depth");
+            Imf::FrameBuffer buffer;
+            buffer.insert("depth.Z",
+                          Imf::Slice(Imf::FLOAT,
+                                     reinterpret_cast<char*>(const_cast<float*>(depth.pixels.data())),
+                                     sizeof(float), sizeof(float) * written.width));
+            out.setFrameBuffer(buffer);
+            out.writeTiles(0, out.numXTiles() - 1, 0, out.numYTiles() - 1);
+        }
+        const Frame read = readFrame(dir / "tiled.exr");
+        CHECK(findLayer(read, "depth")->pixels == findLayer(written, "depth")->pixels);
+    }
 }

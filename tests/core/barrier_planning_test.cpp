@@ -90,3 +90,18 @@ TEST_CASE("a resource bound twice by one pass gets one barrier with the union of
     REQUIRE(barriers.size() == 1);
     CHECK(barriers[0].dst == (kAccessShaderRead | kAccessShaderWrite));
 }
+
+TEST_CASE("a buffer zeroed before a dispatch is ordered after earlier uses and before the dispatch", "[barriers]") {
+    Pass first = pass("count", {{"counter", "c", Access::ReadWrite}});
+    Pass second = pass("count_again", {{"counter", "c", Access::ReadWrite}});
+    second.zeroBuffers = {"c"};
+    const auto barriers = planBarriers(plan({first, second}));
+    const auto atSecond = before(barriers, 1);
+    REQUIRE(atSecond.size() == 2);
+    CHECK(atSecond[0].point == BarrierPoint::BeforeFills);
+    CHECK(atSecond[0].src == kAccessShaderWrite);
+    CHECK(atSecond[0].dst == kAccessTransferWrite);
+    CHECK(atSecond[1].point == BarrierPoint::BeforeDispatch);
+    CHECK(atSecond[1].src == kAccessTransferWrite);
+    CHECK(atSecond[1].dst == (kAccessShaderRead | kAccessShaderWrite));
+}

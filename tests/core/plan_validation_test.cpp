@@ -72,3 +72,24 @@ TEST_CASE("the fp16 permutation is chosen by the desc", "[plan]") {
     REQUIRE(planRoughnessExtraction(desc, plan, nullptr) == Result::Ok);
     CHECK(plan.passes[0].pipeline == "gbuffer_extract_roughness.fp16");
 }
+
+TEST_CASE("a pass may only zero buffers the plan defines", "[plan]") {
+    EffectPlan plan = validRoughnessPlan();
+    plan.passes[0].zeroBuffers = {"counter"};
+    CHECK_THAT(core::validatePlan(plan), Catch::Contains("'counter'"));
+    plan.buffers.push_back({"counter", 4, false});
+    CHECK(core::validatePlan(plan).empty());
+}
+
+TEST_CASE("resource descriptions need unique names and non-zero sizes", "[plan]") {
+    EffectPlan plan = validRoughnessPlan();
+    plan.images.push_back({"pyramid", 64, 64, 7, Format::R32Float});
+    CHECK(core::validatePlan(plan).empty());
+    plan.buffers.push_back({"pyramid", 16, false});
+    CHECK_THAT(core::validatePlan(plan), Catch::Contains("duplicate resource 'pyramid'"));
+    plan.buffers.back() = {"counter", 6, false};
+    CHECK_THAT(core::validatePlan(plan), Catch::Contains("multiple of 4"));
+    plan.buffers.pop_back();
+    plan.images.back().mipLevels = 0;
+    CHECK_THAT(core::validatePlan(plan), Catch::Contains("level count"));
+}

@@ -38,6 +38,36 @@ struct IndirectDispatch {
     std::uint64_t offset = 0;  // byte offset of the 3 x uint32 arguments, 4-byte aligned
 };
 
+// Formats of the resources an effect owns. Every storage image declares exactly one of these
+// in its entry file (GLINT_IMAGE_FORMAT), and the backend checks the bound image against it.
+enum class Format : std::uint8_t {
+    R32Float,
+    RG32Float,
+    RGBA32Float,
+    R16Float,
+    RG16Float,
+    RGBA16Float,
+    R8Unorm,
+    RGBA8Unorm,
+    R32Uint,
+};
+
+// An image the effect needs the application (or harness) to create: the plan is the single
+// source of truth for its size, format and level count, and the backend refuses a bound
+// image that disagrees.
+struct ImageDesc {
+    std::string name;
+    std::uint32_t width = 0, height = 0;
+    std::uint32_t mipLevels = 1;
+    Format format = Format::R32Float;
+};
+
+struct BufferDesc {
+    std::string name;
+    std::uint64_t size = 0;    // bytes
+    bool indirectArgs = false; // also used as VkDispatchIndirectCommand source
+};
+
 struct Pass {
     std::string name;      // unique within the effect, used for timings and dumps
     std::string pipeline;  // embedded shader module name, e.g. "gbuffer_extract_roughness"
@@ -46,11 +76,16 @@ struct Pass {
     std::string constantsBinding;           // empty when the pass has no constants
     std::vector<std::byte> constants;       // packed exactly as the shader's cbuffer
     std::variant<DirectDispatch, IndirectDispatch> dispatch;
+    // Buffers set to zero right before the dispatch (e.g. atomic counters), ordered after every
+    // earlier access and before the dispatch's own.
+    std::vector<std::string> zeroBuffers;
 };
 
 struct EffectPlan {
     std::string effect;
     std::vector<Pass> passes;
+    std::vector<ImageDesc> images;   // images the effect defines (not the application's inputs)
+    std::vector<BufferDesc> buffers; // buffers the effect defines
 };
 
 } // namespace glint

@@ -2,6 +2,7 @@
 
 #include "core/dispatch.h"
 
+#include <algorithm>
 #include <map>
 #include <set>
 
@@ -52,6 +53,17 @@ std::string checkDispatch(const Pass& pass) {
 } // namespace
 
 std::string validatePlan(const EffectPlan& plan) {
+    std::set<std::string> resourceNames;
+    for (const ImageDesc& image : plan.images) {
+        if (!resourceNames.insert(image.name).second) return "effect '" + plan.effect + "': duplicate resource '" + image.name + "'";
+        if (image.width == 0 || image.height == 0 || image.mipLevels == 0)
+            return "effect '" + plan.effect + "': image '" + image.name + "' has a zero size or level count";
+    }
+    for (const BufferDesc& buffer : plan.buffers) {
+        if (!resourceNames.insert(buffer.name).second) return "effect '" + plan.effect + "': duplicate resource '" + buffer.name + "'";
+        if (buffer.size == 0 || buffer.size % 4 != 0)
+            return "effect '" + plan.effect + "': buffer '" + buffer.name + "' size must be a non-zero multiple of 4";
+    }
     std::set<std::string> names;
     for (const Pass& pass : plan.passes) {
         if (pass.name.empty()) return "effect '" + plan.effect + "': a pass has no name";
@@ -67,6 +79,10 @@ std::string validatePlan(const EffectPlan& plan) {
             if ((flags & kAccessIndirectRead) && (flags & kAccessShaderWrite))
                 return "pass '" + pass.name + "': '" + resource + "' is written and read as indirect arguments";
         if (std::string error = checkDispatch(pass); !error.empty()) return error;
+        for (const std::string& buffer : pass.zeroBuffers)
+            if (std::none_of(plan.buffers.begin(), plan.buffers.end(),
+                             [&](const BufferDesc& desc) { return desc.name == buffer; }))
+                return "pass '" + pass.name + "': zeroes '" + buffer + "', which is not among the plan's buffers";
     }
     return {};
 }
@@ -78,23 +94,28 @@ std::vector<PlannedBarrier> planBarriers(const EffectPlan& plan) {
     };
     std::map<std::string, State> states;
     std::vector<PlannedBarrier> barriers;
-    for (std::size_t index = 0; index < plan.passes.size(); ++index) {
-        for (const auto& [resource, flags] : passAccesses(plan.passes[index])) {
-            State& state = states[resource];
-            const bool writes = (flags & kAccessShaderWrite) != 0;
-            const bool hazard = state.pendingWrite != kAccessNone || (writes && state.readsSinceWrite != kAccessNone);
-            if (hazard) {
-                barriers.push_back({index, resource, state.pendingWrite | state.readsSinceWrite, flags});
-                state.pendingWrite = kAccessNone;
-                state.readsSinceWrite = kAccessNone;
-            }
-            if (writes) {
-                state.pendingWrite = kAccessShaderWrite;
-                state.readsSinceWrite = kAccessNone;
-            } else {
-                state.readsSinceWrite |= flags;
-            }
+    auto access = [&](std::size_t index, BarrierPoint point, const std::string& resource, std::uint32_t flags) {
+        State& state = states[resource];
+        const bool writes = (flags & (kAccessShaderWrite | kAccessTransferWrite)) != 0;
+        const bool hazard = state.pendingWrite != kAccessNone || (writes && state.readsSinceWrite != kAccessNone);
+        if (hazard) {
+            barriers.push_back({index, point, resource, state.pendingWrite | state.readsSinceWrite, flags});
+            state.pendingWrite = kAccessNone;
+            state.readsSinceWrite = kAccessNone;
         }
+        if (writes) {
+            state.pendingWrite = flags & (kAccessShaderWrite | kAccessTransferWrite);
+            state.readsSinceWrite = kAccessNone;
+        } else {
+            state.readsSinceWrite |= flags;
+        }
+    };
+    for (std::size_t index = 0; index < plan.passes.size(); ++index) {
+        const Pass& pass = plan.passes[index];
+        for (const std::string& buffer : pass.zeroBuffers)
+            access(index, BarrierPoint::BeforeFills, buffer, kAccessTransferWrite);
+        for (const auto& [resource, flags] : passAccesses(pass))
+            access(index, BarrierPoint::BeforeDispatch, resource, flags);
     }
     return barriers;
 }

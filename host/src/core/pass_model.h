@@ -17,10 +17,15 @@ enum AccessFlags : std::uint32_t {
     kAccessShaderWrite = 1u << 1,
     kAccessIndirectRead = 1u << 2,
     kAccessExternalWrite = 1u << 3, // anything before the plan: uploads, the engine's own passes
+    kAccessTransferWrite = 1u << 4, // a pass's zeroBuffers fill
 };
+
+// Where in a pass a barrier goes: before its buffer fills, or between them and the dispatch.
+enum class BarrierPoint : std::uint8_t { BeforeFills, BeforeDispatch };
 
 struct PlannedBarrier {
     std::size_t beforePass = 0;
+    BarrierPoint point = BarrierPoint::BeforeDispatch;
     std::string resource;
     std::uint32_t src = kAccessNone;
     std::uint32_t dst = kAccessNone;

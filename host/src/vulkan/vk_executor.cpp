@@ -23,6 +23,7 @@ VkPipelineStageFlags stagesFor(uint32_t flags) {
     if (flags & (core::kAccessShaderRead | core::kAccessShaderWrite)) stages |= VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
     if (flags & core::kAccessIndirectRead) stages |= VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT;
     if (flags & core::kAccessExternalWrite) stages |= VK_PIPELINE_STAGE_ALL_COMMANDS_BIT;
+    if (flags & core::kAccessTransferWrite) stages |= VK_PIPELINE_STAGE_TRANSFER_BIT;
     return stages;
 }
 
@@ -32,6 +33,7 @@ VkAccessFlags accessMaskFor(uint32_t flags) {
     if (flags & core::kAccessShaderWrite) mask |= VK_ACCESS_SHADER_WRITE_BIT;
     if (flags & core::kAccessIndirectRead) mask |= VK_ACCESS_INDIRECT_COMMAND_READ_BIT;
     if (flags & core::kAccessExternalWrite) mask |= VK_ACCESS_MEMORY_WRITE_BIT;
+    if (flags & core::kAccessTransferWrite) mask |= VK_ACCESS_TRANSFER_WRITE_BIT;
     return mask;
 }
 
@@ -78,16 +80,76 @@ void recordBarriers(VkCommandBuffer cmd, const std::vector<core::PlannedBarrier>
                          bufferBarriers.data(), static_cast<uint32_t>(imageBarriers.size()), imageBarriers.data());
 }
 
-// Storage images bind one mip per array element; sampled images see every mip.
-void addImageInfos(const ReflectedBinding& binding, const Image& image, std::vector<VkDescriptorImageInfo>& infos) {
+const Image& spareImage(Executor& executor, VkFormat format) {
+    auto it = executor.spareImages.find(format);
+    if (it == executor.spareImages.end()) {
+        it = executor.spareImages.emplace(format, createImage2D(*executor.device, 1, 1, format)).first;
+        executor.spareImagesToInitialize.push_back(it->second.image);
+    }
+    return it->second;
+}
+
+// Storage images bind one mip per array element, and slots past the last level get a spare
+// image; sampled images see every mip.
+void addImageInfos(Executor& executor, const ReflectedBinding& binding, const Image& image,
+                   std::vector<VkDescriptorImageInfo>& infos) {
     for (uint32_t element = 0; element < binding.count; ++element) {
         VkDescriptorImageInfo info{};
         info.imageLayout = VK_IMAGE_LAYOUT_GENERAL;
-        if (binding.type == VK_DESCRIPTOR_TYPE_STORAGE_IMAGE)
-            info.imageView = image.mipViews[std::min(element, image.mipLevels - 1)];
-        else
+        if (binding.type != VK_DESCRIPTOR_TYPE_STORAGE_IMAGE)
             info.imageView = image.view;
+        else if (element < image.mipLevels)
+            info.imageView = image.mipViews[element];
+        else
+            info.imageView = spareImage(executor, image.format).mipViews[0];
         infos.push_back(info);
+    }
+}
+
+// Moves spare images created while recording into GENERAL before the first dispatch.
+void initializeSpareImages(Executor& executor, VkCommandBuffer cmd) {
+    std::vector<VkImageMemoryBarrier> barriers;
+    for (VkImage image : executor.spareImagesToInitialize) {
+        VkImageMemoryBarrier barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+        barrier.srcAccessMask = 0;
+        barrier.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
+        barrier.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+        barrier.newLayout = VK_IMAGE_LAYOUT_GENERAL;
+        barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+        barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+        barrier.image = image;
+        barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+        barriers.push_back(barrier);
+    }
+    executor.spareImagesToInitialize.clear();
+    if (barriers.empty()) return;
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 0, nullptr, 0,
+                         nullptr, static_cast<uint32_t>(barriers.size()), barriers.data());
+}
+
+// The plan's resource descriptions are the single source of truth for sizes, formats and
+// level counts; a bound resource that disagrees is a host bug caught here, not on the GPU.
+void checkResources(const EffectPlan& plan, const ResourceTable& resources) {
+    for (const ImageDesc& desc : plan.images) {
+        const auto it = resources.images.find(desc.name);
+        if (it == resources.images.end())
+            throw std::runtime_error("effect '" + plan.effect + "': image '" + desc.name + "' is not in the resource table");
+        const Image& image = *it->second;
+        if (image.width != desc.width || image.height != desc.height || image.mipLevels != desc.mipLevels ||
+            image.format != toVkFormat(desc.format))
+            throw std::runtime_error("effect '" + plan.effect + "': image '" + desc.name + "' is " +
+                                     std::to_string(image.width) + "x" + std::to_string(image.height) + " with " +
+                                     std::to_string(image.mipLevels) + " levels; the plan needs " +
+                                     std::to_string(desc.width) + "x" + std::to_string(desc.height) + " with " +
+                                     std::to_string(desc.mipLevels) + " levels in its declared format");
+    }
+    for (const BufferDesc& desc : plan.buffers) {
+        const auto it = resources.buffers.find(desc.name);
+        if (it == resources.buffers.end())
+            throw std::runtime_error("effect '" + plan.effect + "': buffer '" + desc.name + "' is not in the resource table");
+        if (it->second->size < desc.size)
+            throw std::runtime_error("effect '" + plan.effect + "': buffer '" + desc.name + "' is smaller than the " +
+                                     std::to_string(desc.size) + " bytes the plan needs");
     }
 }
 
@@ -154,7 +216,7 @@ VkDescriptorSet writeDescriptors(Executor& executor, const ComputePipeline& pipe
             const auto image = resources.images.find(use->resource);
             if (image == resources.images.end()) fail(pass, "image '" + use->resource + "' is not in the resource table");
             const std::size_t first = imageInfos.size();
-            addImageInfos(binding, *image->second, imageInfos);
+            addImageInfos(executor, binding, *image->second, imageInfos);
             write.pImageInfo = &imageInfos[first];
         }
         writes.push_back(write);
@@ -212,6 +274,7 @@ void destroyExecutor(Executor& executor) {
     if (!executor.device) return;
     const Device& device = *executor.device;
     for (auto& [name, pipeline] : executor.pipelines) destroyComputePipeline(device, pipeline);
+    for (auto& [format, image] : executor.spareImages) destroyImage(device, image);
     destroyBuffer(device, executor.constantRing);
     if (executor.linearClampSampler) vkDestroySampler(device.device, executor.linearClampSampler, nullptr);
     if (executor.descriptorPool) vkDestroyDescriptorPool(device.device, executor.descriptorPool, nullptr);
@@ -226,8 +289,16 @@ void resetExecutor(Executor& executor) {
 void recordPlan(Executor& executor, VkCommandBuffer cmd, const EffectPlan& plan, const ResourceTable& resources,
                 const PassHooks& hooks) {
     if (const std::string error = core::validatePlan(plan); !error.empty()) throw std::runtime_error(error);
+    checkResources(plan, resources);
     const std::vector<core::PlannedBarrier> barriers = core::planBarriers(plan);
     auto nextBarrier = barriers.begin();
+    auto takeBarriers = [&](std::size_t index, core::BarrierPoint point) {
+        std::vector<core::PlannedBarrier> taken;
+        for (; nextBarrier != barriers.end() && nextBarrier->beforePass == index && nextBarrier->point == point;
+             ++nextBarrier)
+            taken.push_back(*nextBarrier);
+        return taken;
+    };
     for (std::size_t index = 0; index < plan.passes.size(); ++index) {
         const Pass& pass = plan.passes[index];
         ComputePipeline& pipeline = pipelineFor(executor, pass.pipeline);
@@ -236,10 +307,15 @@ void recordPlan(Executor& executor, VkCommandBuffer cmd, const EffectPlan& plan,
                 fail(pass, "declared group size differs from the shader's [numthreads]");
         const VkDescriptorSet set = writeDescriptors(executor, pipeline, pass, resources);
 
-        std::vector<core::PlannedBarrier> passBarriers;
-        for (; nextBarrier != barriers.end() && nextBarrier->beforePass == index; ++nextBarrier)
-            passBarriers.push_back(*nextBarrier);
-        recordBarriers(cmd, passBarriers, resources);
+        initializeSpareImages(executor, cmd);
+
+        recordBarriers(cmd, takeBarriers(index, core::BarrierPoint::BeforeFills), resources);
+        for (const std::string& name : pass.zeroBuffers) {
+            const auto buffer = resources.buffers.find(name);
+            if (buffer == resources.buffers.end()) fail(pass, "buffer '" + name + "' is not in the resource table");
+            vkCmdFillBuffer(cmd, buffer->second->buffer, 0, VK_WHOLE_SIZE, 0);
+        }
+        recordBarriers(cmd, takeBarriers(index, core::BarrierPoint::BeforeDispatch), resources);
 
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.pipeline);
         vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline.layout, 0, 1, &set, 0, nullptr);

@@ -35,6 +35,11 @@ struct Executor {
     VkSampler linearClampSampler = VK_NULL_HANDLE;      // bound to every sampler binding
     Buffer constantRing;                                // per-pass constants, host-visible
     VkDeviceSize constantRingUsed = 0;
+    // 1x1 images bound to storage-image array slots past an image's last level, one per
+    // format, so that no spare slot ever aliases a live level (reference defect: spare mip
+    // slots bound to mip 0 let late writes land there).
+    std::map<VkFormat, Image> spareImages;
+    std::vector<VkImage> spareImagesToInitialize; // created, not yet moved to GENERAL
 };
 
 Executor createExecutor(const Device& device);

@@ -297,4 +297,28 @@ uint32_t formatChannelCount(VkFormat format) {
     }
 }
 
+VkFormat toVkFormat(Format format) {
+    switch (format) {
+    case Format::R32Float:
+        return VK_FORMAT_R32_SFLOAT;
+    case Format::RG32Float:
+        return VK_FORMAT_R32G32_SFLOAT;
+    case Format::RGBA32Float:
+        return VK_FORMAT_R32G32B32A32_SFLOAT;
+    case Format::R16Float:
+        return VK_FORMAT_R16_SFLOAT;
+    case Format::RG16Float:
+        return VK_FORMAT_R16G16_SFLOAT;
+    case Format::RGBA16Float:
+        return VK_FORMAT_R16G16B16A16_SFLOAT;
+    case Format::R8Unorm:
+        return VK_FORMAT_R8_UNORM;
+    case Format::RGBA8Unorm:
+        return VK_FORMAT_R8G8B8A8_UNORM;
+    case Format::R32Uint:
+        return VK_FORMAT_R32_UINT;
+    }
+    return VK_FORMAT_UNDEFINED;
+}
+
 } // namespace glint::vk

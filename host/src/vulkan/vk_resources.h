@@ -2,6 +2,7 @@
 // framework. Every create has a matching destroy that accepts an empty (null) object.
 #pragma once
 
+#include "glint/glint_pass.h"
 #include "vulkan/vk_device.h"
 
 #include <cstdint>
@@ -59,6 +60,7 @@ uint32_t findMemoryType(const Device& device, uint32_t typeBits, VkMemoryPropert
 // Size in bytes of one texel of the formats the harness uses (R32F, RG32F, RGBA32F, R16F,
 // RG16F, RGBA16F, R8/RGBA8 UNORM, R32_UINT, RG32_UINT); 0 for anything else.
 uint32_t formatTexelSize(VkFormat format);
+VkFormat toVkFormat(Format format);
 uint32_t formatChannelCount(VkFormat format);
 
 } // namespace glint::vk

@@ -1,0 +1,69 @@
+// Entry for the depth pyramid: bindings, callbacks, main. Engines read this file as the
+// integration example for hlsl/glint/depth_pyramid/glint_depth_pyramid.hlsli.
+//
+// Permutations: GLINT_DEPTH_PYRAMID_REVERSED=1 (closest = max), GLINT_DEPTH_PYRAMID_FARTHEST=1
+// (RG32F: closest and farthest).
+#include "entry/common/glint_entry_common.hlsli"
+#include "glint/depth_pyramid/glint_depth_pyramid_constants.h"
+#include "glint/depth_pyramid/glint_depth_pyramid.hlsli"
+
+[[vk::binding(0, 0)]] ConstantBuffer<GLINT_DepthPyramidConstants> g_glint_constants;
+[[vk::binding(1, 0)]] Texture2D<float> g_glint_depth;
+#if GLINT_DEPTH_PYRAMID_FARTHEST
+[[vk::binding(2, 0)]] GLINT_IMAGE_FORMAT(rg32f) globallycoherent RWTexture2D<float2> g_glint_pyramid[GLINT_DEPTH_PYRAMID_MAX_LEVELS];
+#else
+[[vk::binding(2, 0)]] GLINT_IMAGE_FORMAT(r32f) globallycoherent RWTexture2D<float> g_glint_pyramid[GLINT_DEPTH_PYRAMID_MAX_LEVELS];
+#endif
+[[vk::binding(3, 0)]] globallycoherent RWStructuredBuffer<uint> g_glint_counter;
+
+float GLINT_DEPTH_PYRAMID_LoadDepth(int2 pixel)
+{
+    return g_glint_depth.Load(int3(pixel, 0));
+}
+
+float2 GLINT_DEPTH_PYRAMID_Reduce(float2 a, float2 b)
+{
+#if GLINT_DEPTH_PYRAMID_REVERSED
+    return float2(max(a.x, b.x), min(a.y, b.y));
+#else
+    return float2(min(a.x, b.x), max(a.y, b.y));
+#endif
+}
+
+void GLINT_DEPTH_PYRAMID_StoreLevel(int2 texel, uint level, float2 value)
+{
+#if GLINT_DEPTH_PYRAMID_FARTHEST
+    g_glint_pyramid[level][texel] = value;
+#else
+    g_glint_pyramid[level][texel] = value.x;
+#endif
+}
+
+float2 GLINT_DEPTH_PYRAMID_LoadLevelCoherent(int2 texel, uint level)
+{
+#if GLINT_DEPTH_PYRAMID_FARTHEST
+    return g_glint_pyramid[level][texel];
+#else
+    float closest = g_glint_pyramid[level][texel];
+    return float2(closest, closest);
+#endif
+}
+
+uint GLINT_DEPTH_PYRAMID_IncrementCounter()
+{
+    uint previous;
+    InterlockedAdd(g_glint_counter[0], 1u, previous);
+    return previous;
+}
+
+void GLINT_DEPTH_PYRAMID_ResetCounter()
+{
+    uint previous;
+    InterlockedExchange(g_glint_counter[0], 0u, previous);
+}
+
+[numthreads(256, 1, 1)] void main(uint3 groupId : SV_GroupID, uint groupIndex : SV_GroupIndex)
+{
+    GLINT_DEPTH_PYRAMID_Build(groupId.xy, groupIndex, g_glint_constants.inputSize, g_glint_constants.level0Size,
+                              g_glint_constants.levelCount, g_glint_constants.groupCount, g_glint_constants.farDepth);
+}

@@ -1,0 +1,1 @@
+# depth pyramid suites (being written)
