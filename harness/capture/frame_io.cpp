@@ -86,8 +86,8 @@ Frame readFrame(const std::filesystem::path& file) {
         input.setFrameBuffer(buffer);
         input.readPixels(0, static_cast<int>(size.height) - 1);
     });
+    convertMotionToConventionA(frame); // before counting: an extreme scale can overflow
     for (Layer& layer : frame.layers) layer.nonFinite = countNonFinite(layer.pixels);
-    convertMotionToConventionA(frame);
     return frame;
 }
 

@@ -1,6 +1,7 @@
 // The verbs of the glint command. Each returns the process exit code.
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 namespace glint::cli {
@@ -12,7 +13,18 @@ enum ExitCode : int {
     kExitUsage = 2,       // bad arguments or unreadable/malformed input
 };
 
+struct BenchOptions {
+    std::string effect;
+    uint32_t width = 1920, height = 1080;
+    uint32_t runs = 200;
+    uint32_t levels = 0; // depth pyramid: 0 = full chain
+    bool reversed = false;
+    bool farthest = false;
+    bool validate = false;
+};
+
 int runDevices(bool validate);
+int runBench(const BenchOptions& options);
 int runInfo(const std::string& path, bool loadPixels);
 
 } // namespace glint::cli

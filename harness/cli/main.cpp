@@ -6,6 +6,7 @@
 
 #include <cstdio>
 #include <exception>
+#include <stdexcept>
 
 int main(int argc, char** argv) {
     CLI::App app{"glint: reflections and shadow-denoising passes on frame captures"};
@@ -22,6 +23,16 @@ int main(int argc, char** argv) {
     info->add_option("capture", infoPath, "frame file or sequence folder")->required();
     info->add_flag("--header-only", headerOnly, "read headers only; skip pixels and non-finite counts");
 
+    glint::cli::BenchOptions bench;
+    std::string benchSize = "1920x1080";
+    CLI::App* benchCommand = app.add_subcommand("bench", "GPU time of one effect (median of timestamped runs)");
+    benchCommand->add_option("effect", bench.effect, "depth_pyramid | roughness")->required();
+    benchCommand->add_option("--size", benchSize, "render size WxH")->capture_default_str();
+    benchCommand->add_option("--runs", bench.runs, "measured runs")->capture_default_str();
+    benchCommand->add_option("--levels", bench.levels, "depth pyramid levels (0 = full chain)");
+    benchCommand->add_flag("--reversed", bench.reversed, "reversed depth (closest = max)");
+    benchCommand->add_flag("--farthest", bench.farthest, "closest and farthest channels");
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {
@@ -33,6 +44,12 @@ int main(int argc, char** argv) {
     try {
         if (*devices) return glint::cli::runDevices(validate);
         if (*info) return glint::cli::runInfo(infoPath, !headerOnly);
+        if (*benchCommand) {
+            if (std::sscanf(benchSize.c_str(), "%ux%u", &bench.width, &bench.height) != 2)
+                throw std::invalid_argument("bench: --size must read WxH, e.g. 1920x1080");
+            bench.validate = validate;
+            return glint::cli::runBench(bench);
+        }
     } catch (const std::exception& error) {
         std::fprintf(stderr, "glint: %s\n", error.what());
         return glint::cli::kExitUsage;

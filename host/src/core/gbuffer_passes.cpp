@@ -49,6 +49,8 @@ Result planRoughnessExtraction(const RoughnessExtractionDesc& desc, EffectPlan& 
 
     plan = EffectPlan{};
     plan.effect = "gbuffer";
+    plan.images.push_back({"roughness", desc.size.width, desc.size.height, 1,
+                           desc.halfPrecisionOutput ? Format::R16Float : Format::R32Float});
     plan.passes.push_back(std::move(pass));
     return Result::Ok;
 }
