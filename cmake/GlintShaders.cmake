@@ -1,13 +1,14 @@
 # HLSL -> SPIR-V for glint.
 #
-#   glint_add_hlsl_shader(NAME <name> ENTRY <file.cs.hlsl>
+#   glint_add_hlsl_shader(NAME <name> ENTRY <file.cs.hlsl> [GROUP <group>]
 #                         [DEFINES <D=V>...] [PERMUTATIONS "<suffix>:<D=V>[,<D=V>...]"...])
 #
 # compiles <file> with DXC when GLINT_DXC is set (or dxc is on PATH) and with glslang's HLSL
 # front end otherwise, validates every module with spirv-val, and records each output so that
 # glint_embed_shaders() can bake them into the host library. A permutation produces a second
-# module "<name>.<suffix>" with the base defines plus its own. All shaders and their
-# permutations are listed in one place: hlsl/CMakeLists.txt.
+# module "<name>.<suffix>" with the base defines plus its own. The library's shaders and their
+# permutations are listed in one place, hlsl/CMakeLists.txt (group "glint", embedded into
+# glint_core); harness-only shaders use their own group and table (harness/shaders).
 #
 #   glint_check_hlsl_header(<header> [STUBS <stub.hlsl>])
 #
@@ -37,7 +38,7 @@ function(_glint_hlsl_command out_var input output depfile defines)
   set(${out_var} "${cmd}" PARENT_SCOPE)
 endfunction()
 
-function(_glint_compile_module name input defines)
+function(_glint_compile_module name input defines group)
   set(output "${GLINT_SPIRV_DIR}/${name}.spv")
   set(depfile "${GLINT_SPIRV_DIR}/${name}.d")
   _glint_hlsl_command(cmd "${input}" "${output}" "${depfile}" "${defines}")
@@ -54,17 +55,21 @@ function(_glint_compile_module name input defines)
     ${extra}
     COMMENT "HLSL -> SPIR-V ${name}"
     VERBATIM)
-  set_property(GLOBAL APPEND PROPERTY GLINT_SHADER_NAMES "${name}")
+  set_property(GLOBAL APPEND PROPERTY GLINT_SHADER_NAMES_${group} "${name}")
+  set_property(GLOBAL APPEND PROPERTY GLINT_SHADER_FILES_${group} "${output}")
   set_property(GLOBAL APPEND PROPERTY GLINT_SHADER_FILES "${output}")
 endfunction()
 
 function(glint_add_hlsl_shader)
-  cmake_parse_arguments(ARG "" "NAME;ENTRY" "DEFINES;PERMUTATIONS" ${ARGN})
+  cmake_parse_arguments(ARG "" "NAME;ENTRY;GROUP" "DEFINES;PERMUTATIONS" ${ARGN})
+  if(NOT ARG_GROUP)
+    set(ARG_GROUP glint)
+  endif()
   if(NOT ARG_NAME OR NOT ARG_ENTRY)
     message(FATAL_ERROR "glint_add_hlsl_shader needs NAME and ENTRY")
   endif()
   cmake_path(ABSOLUTE_PATH ARG_ENTRY BASE_DIRECTORY "${CMAKE_CURRENT_SOURCE_DIR}")
-  _glint_compile_module("${ARG_NAME}" "${ARG_ENTRY}" "${ARG_DEFINES}")
+  _glint_compile_module("${ARG_NAME}" "${ARG_ENTRY}" "${ARG_DEFINES}" "${ARG_GROUP}")
   foreach(perm IN LISTS ARG_PERMUTATIONS)
     string(FIND "${perm}" ":" colon)
     if(colon LESS 1)
@@ -74,22 +79,26 @@ function(glint_add_hlsl_shader)
     math(EXPR start "${colon} + 1")
     string(SUBSTRING "${perm}" ${start} -1 perm_defs)
     string(REPLACE "," ";" perm_defs "${perm_defs}")
-    _glint_compile_module("${ARG_NAME}.${suffix}" "${ARG_ENTRY}" "${ARG_DEFINES};${perm_defs}")
+    _glint_compile_module("${ARG_NAME}.${suffix}" "${ARG_ENTRY}" "${ARG_DEFINES};${perm_defs}" "${ARG_GROUP}")
   endforeach()
 endfunction()
 
-# Generates <target>'s embedded shader table: one C++ source in the build tree holding every
-# module compiled so far as a uint32_t array, plus a sorted name -> span index.
+# Generates <target>'s embedded shader table for one group: a C++ source in the build tree
+# holding each module as a uint32_t array, plus a sorted name -> span index, defining
+#   std::span<const std::uint32_t> <NAMESPACE>::findShader(std::string_view)
+#   std::vector<std::string_view> <NAMESPACE>::shaderNames()
 function(glint_embed_shaders target)
-  get_property(names GLOBAL PROPERTY GLINT_SHADER_NAMES)
-  get_property(files GLOBAL PROPERTY GLINT_SHADER_FILES)
-  set(generated "${PROJECT_BINARY_DIR}/generated/glint_embedded_shaders.cpp")
+  cmake_parse_arguments(ARG "" "GROUP;NAMESPACE;HEADER" "" ${ARGN})
+  get_property(names GLOBAL PROPERTY GLINT_SHADER_NAMES_${ARG_GROUP})
+  get_property(files GLOBAL PROPERTY GLINT_SHADER_FILES_${ARG_GROUP})
+  set(generated "${PROJECT_BINARY_DIR}/generated/${ARG_GROUP}_embedded_shaders.cpp")
   add_custom_command(
     OUTPUT "${generated}"
     COMMAND "${CMAKE_COMMAND}" "-DNAMES=${names}" "-DFILES=${files}" "-DOUTPUT=${generated}"
+            "-DNAMESPACE=${ARG_NAMESPACE}" "-DHEADER=${ARG_HEADER}"
             -P "${PROJECT_SOURCE_DIR}/cmake/GlintEmbedSpirv.cmake"
     DEPENDS ${files} "${PROJECT_SOURCE_DIR}/cmake/GlintEmbedSpirv.cmake"
-    COMMENT "Embedding SPIR-V modules"
+    COMMENT "Embedding SPIR-V modules of group ${ARG_GROUP}"
     VERBATIM)
   target_sources(${target} PRIVATE "${generated}")
 endfunction()

@@ -1,6 +1,7 @@
 #include "vulkan/vk_executor.h"
 
 #include "core/pass_model.h"
+#include "core/shader_library.h"
 #include "vulkan/vk_check.h"
 
 #include <algorithm>
@@ -40,7 +41,8 @@ VkAccessFlags accessMaskFor(uint32_t flags) {
 ComputePipeline& pipelineFor(Executor& executor, const std::string& name) {
     auto it = executor.pipelines.find(name);
     if (it == executor.pipelines.end())
-        it = executor.pipelines.emplace(name, createComputePipeline(*executor.device, name)).first;
+        it = executor.pipelines.emplace(name, createComputePipeline(*executor.device, name, executor.findShader(name)))
+                 .first;
     return it->second;
 }
 
@@ -236,6 +238,7 @@ VkDescriptorSet writeDescriptors(Executor& executor, const ComputePipeline& pipe
 Executor createExecutor(const Device& device) {
     Executor executor;
     executor.device = &device;
+    executor.findShader = core::findShader;
     try {
         const VkDescriptorPoolSize sizes[] = {
             {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kMaxSetsPerReset},

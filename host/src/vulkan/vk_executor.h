@@ -13,6 +13,8 @@
 
 #include <functional>
 #include <map>
+#include <span>
+#include <string_view>
 #include <string>
 
 namespace glint::vk {
@@ -28,8 +30,12 @@ struct PassHooks {
     std::function<void(VkCommandBuffer, std::size_t passIndex)> afterDispatch;
 };
 
+// Finds a pipeline's SPIR-V by name; empty when there is none.
+using ShaderLookup = std::function<std::span<const uint32_t>(std::string_view)>;
+
 struct Executor {
     const Device* device = nullptr;
+    ShaderLookup findShader; // glint's embedded modules unless the caller adds its own
     std::map<std::string, ComputePipeline> pipelines; // created on first use
     VkDescriptorPool descriptorPool = VK_NULL_HANDLE;
     VkSampler linearClampSampler = VK_NULL_HANDLE;      // bound to every sampler binding

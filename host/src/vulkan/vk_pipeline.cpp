@@ -1,14 +1,12 @@
 #include "vulkan/vk_pipeline.h"
 
-#include "core/shader_library.h"
 #include "vulkan/vk_check.h"
 
 #include <vector>
 
 namespace glint::vk {
 
-ComputePipeline createComputePipeline(const Device& device, const std::string& name) {
-    const std::span<const uint32_t> code = core::findShader(name);
+ComputePipeline createComputePipeline(const Device& device, const std::string& name, std::span<const uint32_t> code) {
     ComputePipeline pipeline;
     pipeline.name = name;
     pipeline.shader = reflectComputeShader(code, name);

@@ -5,6 +5,7 @@
 #include "vulkan/vk_device.h"
 #include "vulkan/vk_reflect.h"
 
+#include <span>
 #include <string>
 
 namespace glint::vk {
@@ -18,9 +19,9 @@ struct ComputePipeline {
     VkPipeline pipeline = VK_NULL_HANDLE;
 };
 
-// name is an embedded module (core/shader_library.h). Throws on unknown names, reflection
-// problems and Vulkan errors.
-ComputePipeline createComputePipeline(const Device& device, const std::string& name);
+// code is the SPIR-V of the module called name (used in messages). Throws on an empty module,
+// reflection problems and Vulkan errors.
+ComputePipeline createComputePipeline(const Device& device, const std::string& name, std::span<const uint32_t> code);
 void destroyComputePipeline(const Device& device, ComputePipeline& pipeline);
 
 } // namespace glint::vk
