@@ -22,8 +22,8 @@ std::vector<float> syntheticDepth(uint32_t width, uint32_t height) {
     std::vector<float> depth(std::size_t{width} * height);
     for (uint32_t y = 0; y < height; ++y)
         for (uint32_t x = 0; x < width; ++x)
-            depth[std::size_t{y} * width + x] =
-                0.5f + 0.3f * std::sin(0.05f * static_cast<float>(x)) * std::cos(0.07f * static_cast<float>(y));
+            depth[std::size_t{y} * width + x] = 0.5f + 0.3f * std::sin(0.05f * static_cast<float>(x)) *
+                                                           std::cos(0.07f * static_cast<float>(y));
     return depth;
 }
 
@@ -43,7 +43,8 @@ Setup setupEffect(const BenchOptions& options) {
         DepthPyramidDesc desc;
         desc.size = size;
         desc.depth = options.reversed ? DepthConvention::Reversed : DepthConvention::Standard;
-        desc.channels = options.farthest ? DepthPyramidChannels::ClosestAndFarthest : DepthPyramidChannels::Closest;
+        desc.channels =
+            options.farthest ? DepthPyramidChannels::ClosestAndFarthest : DepthPyramidChannels::Closest;
         desc.levelCount = options.levels;
         if (planDepthPyramid(desc, setup.plan, &error) != Result::Ok) throw std::invalid_argument(error);
         setup.inputName = "depth";
@@ -53,14 +54,16 @@ Setup setupEffect(const BenchOptions& options) {
         RoughnessExtractionDesc desc;
         desc.size = size;
         desc.materialChannel = 1;
-        if (planRoughnessExtraction(desc, setup.plan, &error) != Result::Ok) throw std::invalid_argument(error);
+        if (planRoughnessExtraction(desc, setup.plan, &error) != Result::Ok)
+            throw std::invalid_argument(error);
         setup.inputName = "material";
         setup.inputFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
         setup.inputChannels = 4;
         const std::vector<float> ramp = syntheticDepth(size.width, size.height);
         for (float value : ramp) setup.input.insert(setup.input.end(), {value, value, value, 1.0f});
     } else {
-        throw std::invalid_argument("bench: unknown effect '" + options.effect + "' (depth_pyramid, roughness)");
+        throw std::invalid_argument("bench: unknown effect '" + options.effect +
+                                    "' (depth_pyramid, roughness)");
     }
     return setup;
 }
@@ -88,8 +91,9 @@ int runBench(const BenchOptions& options) {
 
     std::printf("device: %s, driver %s %s\n", context.info.name.c_str(), context.info.driverName.c_str(),
                 context.info.driverInfo.c_str());
-    std::printf("effect %s at %ux%u, %u runs%s%s\n", options.effect.c_str(), options.width, options.height, options.runs,
-                options.reversed ? ", reversed depth" : "", options.farthest ? ", closest+farthest" : "");
+    std::printf("effect %s at %ux%u, %u runs%s%s\n", options.effect.c_str(), options.width, options.height,
+                options.runs, options.reversed ? ", reversed depth" : "",
+                options.farthest ? ", closest+farthest" : "");
     for (std::size_t pass = 0; pass < timings.passes.size(); ++pass) {
         std::vector<double> values;
         for (const auto& run : timings.times) values.push_back(run.at(pass));

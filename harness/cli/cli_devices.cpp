@@ -40,7 +40,8 @@ int runDevices(bool validate) {
     options.validation = validate;
     options.synchronizationValidation = validate;
     gpu::Context context = gpu::createContext(options);
-    const std::vector<gpu::DeviceInfo> devices = gpu::listDevices(context.instance, context.instanceApiVersion);
+    const std::vector<gpu::DeviceInfo> devices =
+        gpu::listDevices(context.instance, context.instanceApiVersion);
     for (const gpu::DeviceInfo& device : devices) {
         const bool chosen = device.index == context.info.index;
         std::printf("%c %u: %s (%s)\n", chosen ? '*' : ' ', device.index, device.name.c_str(),
@@ -49,10 +50,12 @@ int runDevices(bool validate) {
                     device.driverName.empty() ? "?" : device.driverName.c_str(), device.driverInfo.c_str(),
                     gpu::versionString(device.apiVersion).c_str(), device.vendorID);
         std::printf("     subgroup size %u (%s), float16 %s, int16 %s, 16-bit storage %s, timestamps %s\n",
-                    device.subgroupSize, subgroupOpsText(device.subgroupOps).c_str(), device.float16 ? "yes" : "no",
-                    device.int16 ? "yes" : "no", device.storage16 ? "yes" : "no", device.timestamps ? "yes" : "no");
+                    device.subgroupSize, subgroupOpsText(device.subgroupOps).c_str(),
+                    device.float16 ? "yes" : "no", device.int16 ? "yes" : "no",
+                    device.storage16 ? "yes" : "no", device.timestamps ? "yes" : "no");
     }
-    std::printf("* = selected (GLINT_DEVICE=%s)\n", options.deviceSelector.empty() ? "<unset>" : options.deviceSelector.c_str());
+    std::printf("* = selected (GLINT_DEVICE=%s)\n",
+                options.deviceSelector.empty() ? "<unset>" : options.deviceSelector.c_str());
     gpu::destroyContext(context);
     const uint32_t validationErrors = context.validation ? context.validation->errors.load() : 0u;
     if (validationErrors > 0) std::fprintf(stderr, "glint: %u validation errors\n", validationErrors);

@@ -29,8 +29,8 @@ int runInfo(const std::string& path, bool loadPixels) {
         return kExitOk;
     }
     const capture::Sequence sequence = capture::readSequence(target);
-    std::printf("sequence %s: %zu frames at %.6g fps, %ux%u, environment %s\n", sequence.directory.string().c_str(),
-                sequence.frameFiles.size(), sequence.frameRate,
+    std::printf("sequence %s: %zu frames at %.6g fps, %ux%u, environment %s\n",
+                sequence.directory.string().c_str(), sequence.frameFiles.size(), sequence.frameRate,
                 sequence.headers.empty() ? 0u : sequence.headers.front().width,
                 sequence.headers.empty() ? 0u : sequence.headers.front().height,
                 sequence.environment.empty() ? "none" : sequence.environment.c_str());

@@ -12,10 +12,12 @@ int main(int argc, char** argv) {
     CLI::App app{"glint: reflections and shadow-denoising passes on frame captures"};
     app.require_subcommand(1);
     bool validate = false;
-    app.add_flag("--validate", validate,
-                 "Run under VK_LAYER_KHRONOS_validation (with synchronization validation); any error exits 1");
+    app.add_flag(
+        "--validate", validate,
+        "Run under VK_LAYER_KHRONOS_validation (with synchronization validation); any error exits 1");
 
-    CLI::App* devices = app.add_subcommand("devices", "List Vulkan devices: driver, subgroup size, float16 support");
+    CLI::App* devices =
+        app.add_subcommand("devices", "List Vulkan devices: driver, subgroup size, float16 support");
 
     std::string infoPath;
     bool headerOnly = false;
@@ -25,7 +27,8 @@ int main(int argc, char** argv) {
 
     glint::cli::BenchOptions bench;
     std::string benchSize = "1920x1080";
-    CLI::App* benchCommand = app.add_subcommand("bench", "GPU time of one effect (median of timestamped runs)");
+    CLI::App* benchCommand =
+        app.add_subcommand("bench", "GPU time of one effect (median of timestamped runs)");
     benchCommand->add_option("effect", bench.effect, "depth_pyramid | roughness")->required();
     benchCommand->add_option("--size", benchSize, "render size WxH")->capture_default_str();
     benchCommand->add_option("--runs", bench.runs, "measured runs")->capture_default_str();

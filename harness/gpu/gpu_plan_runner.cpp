@@ -46,7 +46,8 @@ void destroyPlanResources(const Context& context, PlanResources& resources) {
     resources = PlanResources{};
 }
 
-vk::ResourceTable resourceTable(const PlanResources& owned, const std::map<std::string, const vk::Image*>& external) {
+vk::ResourceTable resourceTable(const PlanResources& owned,
+                                const std::map<std::string, const vk::Image*>& external) {
     vk::ResourceTable table;
     table.images = external;
     for (const auto& [name, image] : owned.images) table.images[name] = &image;

@@ -26,7 +26,8 @@ PlanResources createPlanResources(const Context& context, const EffectPlan& plan
 void destroyPlanResources(const Context& context, PlanResources& resources);
 
 // A table holding the plan's own resources plus the application's inputs and outputs.
-vk::ResourceTable resourceTable(const PlanResources& owned, const std::map<std::string, const vk::Image*>& external = {});
+vk::ResourceTable resourceTable(const PlanResources& owned,
+                                const std::map<std::string, const vk::Image*>& external = {});
 
 // GPU milliseconds of each pass in each run: times[run][pass]. Runs are separate
 // submissions so that no run overlaps another; empty when the queue has no timestamps.

@@ -33,7 +33,8 @@ std::vector<PlannedBarrier> before(const std::vector<PlannedBarrier>& all, std::
 } // namespace
 
 TEST_CASE("the first use of every resource waits for the external write that produced it", "[barriers]") {
-    const auto barriers = planBarriers(plan({pass("a", {{"in", "x", Access::Read}, {"out", "y", Access::Write}})}));
+    const auto barriers =
+        planBarriers(plan({pass("a", {{"in", "x", Access::Read}, {"out", "y", Access::Write}})}));
     REQUIRE(barriers.size() == 2);
     for (const PlannedBarrier& b : barriers) {
         CHECK(b.beforePass == 0);
@@ -42,7 +43,8 @@ TEST_CASE("the first use of every resource waits for the external write that pro
 }
 
 TEST_CASE("a read after a write gets a barrier from shader write to shader read", "[barriers]") {
-    const auto barriers = planBarriers(plan({pass("a", {{"o", "y", Access::Write}}), pass("b", {{"i", "y", Access::Read}})}));
+    const auto barriers =
+        planBarriers(plan({pass("a", {{"o", "y", Access::Write}}), pass("b", {{"i", "y", Access::Read}})}));
     const auto second = before(barriers, 1);
     REQUIRE(second.size() == 1);
     CHECK(second[0].resource == "y");
@@ -51,16 +53,17 @@ TEST_CASE("a read after a write gets a barrier from shader write to shader read"
 }
 
 TEST_CASE("reads after reads need no barrier", "[barriers]") {
-    const auto barriers = planBarriers(
-        plan({pass("a", {{"i", "x", Access::Read}}), pass("b", {{"i", "x", Access::Read}}), pass("c", {{"i", "x", Access::Read}})}));
+    const auto barriers =
+        planBarriers(plan({pass("a", {{"i", "x", Access::Read}}), pass("b", {{"i", "x", Access::Read}}),
+                           pass("c", {{"i", "x", Access::Read}})}));
     CHECK(before(barriers, 1).empty());
     CHECK(before(barriers, 2).empty());
 }
 
 TEST_CASE("a write after reads waits for every earlier read", "[barriers]") {
-    const auto barriers = planBarriers(plan({pass("a", {{"i", "x", Access::Read}}),
-                                             pass("b", {{"args", "x", Access::IndirectArgs}}),
-                                             pass("c", {{"o", "x", Access::Write}})}));
+    const auto barriers = planBarriers(
+        plan({pass("a", {{"i", "x", Access::Read}}), pass("b", {{"args", "x", Access::IndirectArgs}}),
+              pass("c", {{"o", "x", Access::Write}})}));
     const auto third = before(barriers, 2);
     REQUIRE(third.size() == 1);
     CHECK(third[0].src == (kAccessShaderRead | kAccessIndirectRead));
@@ -68,7 +71,8 @@ TEST_CASE("a write after reads waits for every earlier read", "[barriers]") {
 }
 
 TEST_CASE("consecutive writes to one resource are ordered", "[barriers]") {
-    const auto barriers = planBarriers(plan({pass("a", {{"o", "x", Access::Write}}), pass("b", {{"o", "x", Access::ReadWrite}})}));
+    const auto barriers = planBarriers(
+        plan({pass("a", {{"o", "x", Access::Write}}), pass("b", {{"o", "x", Access::ReadWrite}})}));
     const auto second = before(barriers, 1);
     REQUIRE(second.size() == 1);
     CHECK(second[0].src == kAccessShaderWrite);
@@ -86,12 +90,14 @@ TEST_CASE("an indirect dispatch waits for the pass that wrote its arguments", "[
 }
 
 TEST_CASE("a resource bound twice by one pass gets one barrier with the union of accesses", "[barriers]") {
-    const auto barriers = planBarriers(plan({pass("a", {{"r", "x", Access::Read}, {"w", "x", Access::Write}})}));
+    const auto barriers =
+        planBarriers(plan({pass("a", {{"r", "x", Access::Read}, {"w", "x", Access::Write}})}));
     REQUIRE(barriers.size() == 1);
     CHECK(barriers[0].dst == (kAccessShaderRead | kAccessShaderWrite));
 }
 
-TEST_CASE("a buffer zeroed before a dispatch is ordered after earlier uses and before the dispatch", "[barriers]") {
+TEST_CASE("a buffer zeroed before a dispatch is ordered after earlier uses and before the dispatch",
+          "[barriers]") {
     Pass first = pass("count", {{"counter", "c", Access::ReadWrite}});
     Pass second = pass("count_again", {{"counter", "c", Access::ReadWrite}});
     second.zeroBuffers = {"c"};

@@ -11,7 +11,8 @@
 
 namespace {
 
-std::map<std::string, std::uint32_t> reflectedOffsets(const char* module, const char* binding, std::uint32_t& size) {
+std::map<std::string, std::uint32_t> reflectedOffsets(const char* module, const char* binding,
+                                                      std::uint32_t& size) {
     const auto shader = glint::vk::reflectComputeShader(glint::core::findShader(module), module);
     for (const auto& b : shader.bindings) {
         if (b.name != binding) continue;
@@ -35,6 +36,7 @@ TEST_CASE("roughness extraction constants have the same layout in C++ and HLSL",
         CHECK(size == sizeof(GLINT_GBufferRoughnessConstants));
         CHECK(offsets.at("size") == offsetof(GLINT_GBufferRoughnessConstants, size));
         CHECK(offsets.at("materialChannel") == offsetof(GLINT_GBufferRoughnessConstants, materialChannel));
-        CHECK(offsets.at("inputIsPerceptual") == offsetof(GLINT_GBufferRoughnessConstants, inputIsPerceptual));
+        CHECK(offsets.at("inputIsPerceptual") ==
+              offsetof(GLINT_GBufferRoughnessConstants, inputIsPerceptual));
     }
 }

@@ -25,7 +25,8 @@ TEST_CASE("looking up an unknown module gives an empty span", "[shaders]") {
 }
 
 TEST_CASE("reflection of an empty module names the module", "[shaders]") {
-    CHECK_THROWS_WITH(glint::vk::reflectComputeShader({}, "missing_module"), Catch::Contains("missing_module"));
+    CHECK_THROWS_WITH(glint::vk::reflectComputeShader({}, "missing_module"),
+                      Catch::Contains("missing_module"));
 }
 
 TEST_CASE("the roughness extraction permutations exist with their declared formats", "[shaders]") {

@@ -8,7 +8,7 @@
 
 using namespace glint;
 
-TEST_CASE("3840x2160 reversed depth, closest and farthest: bit-exact pyramid", "[exact][slow]") {
+TEST_CASE("3840x2160 reversed depth, closest and farthest: bit-exact pyramid", "[exact][4k]") {
     DepthPyramidDesc desc;
     desc.size = {3840, 2160};
     desc.depth = DepthConvention::Reversed;

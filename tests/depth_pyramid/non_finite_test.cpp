@@ -138,3 +138,20 @@ TEST_CASE("an image of only NaN or only -Inf is far at every level", "[non-finit
         }
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }
+
+TEST_CASE("denormal depths are kept, negative ones clamped to +0", "[non-finite]") {
+    // A flushed denormal would break the contract: in reversed depth +0 is far (the closest
+    // channel loses it), in standard depth +0 is nearer (the farthest channel loses it).
+    // SPIR-V leaves denormal handling to the device unless DenormPreserve is requested.
+    gpu::Context& context = test::testContext();
+    for (const auto depth : {DepthConvention::Standard, DepthConvention::Reversed}) {
+        const DepthPyramidDesc desc = descFor(300, 200, depth);
+        std::vector<float> input = test::structuredDepth(300, 200, depth, 3);
+        for (std::size_t k = 0; k < input.size(); k += 97) input[k] = 1e-40f;
+        for (std::size_t k = 5; k < input.size(); k += 89) input[k] = -1e-40f;
+        input.back() = 1e-45f; // the smallest denormal, in the corner
+        test::PyramidRunner runner(context, desc);
+        test::checkPyramid(input, desc, runner.build(input));
+    }
+    GLINT_REQUIRE_NO_VALIDATION_ERRORS();
+}

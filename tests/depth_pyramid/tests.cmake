@@ -10,7 +10,8 @@ glint_add_test_suite(NAME depth_pyramid_unit LABELS unit
 
 # The reference and its brute-force checker scan every level-0 pixel once per level; keep
 # them fast in Debug (sanitizers stay on).
-set_source_files_properties(reference/depth_pyramid_reference.cpp PROPERTIES COMPILE_OPTIONS "-O2")
+set_source_files_properties(reference/depth_pyramid_reference.cpp depth_pyramid/depth_inputs.cpp
+  PROPERTIES COMPILE_OPTIONS "-O2")
 
 glint_add_test_suite(NAME depth_pyramid LABELS gpu
   SOURCES

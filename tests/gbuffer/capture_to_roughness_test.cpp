@@ -41,8 +41,8 @@ TEST_CASE("roughness from a capture file's material layer matches the CPU refere
     desc.inputIsPerceptual = frame.roughness.perceptual;
     const test::RoughnessRun run = test::runRoughnessExtraction(test::testContext(), rgba, desc);
 
-    const std::vector<float> expected =
-        reference::extractRoughness(material->pixels, stride, static_cast<std::size_t>(channel), frame.roughness.perceptual);
+    const std::vector<float> expected = reference::extractRoughness(
+        material->pixels, stride, static_cast<std::size_t>(channel), frame.roughness.perceptual);
     REQUIRE(run.alpha.size() == expected.size());
     for (std::size_t i = 0; i < expected.size(); ++i) {
         INFO("pixel " << i);
@@ -50,7 +50,8 @@ TEST_CASE("roughness from a capture file's material layer matches the CPU refere
         REQUIRE(run.alpha[i] == expected[i]);
     }
     // The sample varies roughness across the image; a constant output would mean the wrong channel.
-    CHECK(*std::max_element(expected.begin(), expected.end()) > *std::min_element(expected.begin(), expected.end()));
+    CHECK(*std::max_element(expected.begin(), expected.end()) >
+          *std::min_element(expected.begin(), expected.end()));
     if (test::testContext().device.timestamps) CHECK(run.dispatchMs >= 0.0);
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }

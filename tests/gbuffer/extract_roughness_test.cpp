@@ -22,8 +22,10 @@ std::vector<float> testMaterial(uint32_t width, uint32_t height) {
     std::uniform_real_distribution<float> uniform(-0.1f, 1.1f);
     std::vector<float> material(std::size_t{width} * height * 4);
     for (float& value : material) value = uniform(rng);
-    const float specials[] = {std::numeric_limits<float>::quiet_NaN(), INFINITY, -INFINITY, 0.0f, 1.0f, -0.0f, 1e-3f};
-    for (std::size_t i = 0; i < std::size(specials) * 4 && i < material.size(); ++i) material[i] = specials[i % 7];
+    const float specials[] = {
+        std::numeric_limits<float>::quiet_NaN(), INFINITY, -INFINITY, 0.0f, 1.0f, -0.0f, 1e-3f};
+    for (std::size_t i = 0; i < std::size(specials) * 4 && i < material.size(); ++i)
+        material[i] = specials[i % 7];
     return material;
 }
 
@@ -60,7 +62,8 @@ void requireMatchesFp16(const std::vector<float>& gpu, const std::vector<float>&
 
 } // namespace
 
-TEST_CASE("roughness extraction matches the CPU reference for every channel and input kind", "[gbuffer][gpu]") {
+TEST_CASE("roughness extraction matches the CPU reference for every channel and input kind",
+          "[gbuffer][gpu]") {
     const uint32_t width = 13, height = 7; // odd sizes: partial groups in both dimensions
     const std::vector<float> material = testMaterial(width, height);
     for (uint32_t channel = 0; channel < 4; ++channel) {

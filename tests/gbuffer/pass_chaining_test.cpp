@@ -4,8 +4,8 @@
 #include "reference/roughness_reference.h"
 #include "support/gpu_test_context.h"
 
-#include "vulkan/vk_executor.h"
 #include "glint/glint_gbuffer.h"
+#include "vulkan/vk_executor.h"
 
 #include <gpu/gpu_transfer.h>
 
@@ -13,7 +13,8 @@
 
 using namespace glint;
 
-TEST_CASE("a pass reading an earlier pass's output sees its writes through a derived barrier", "[gbuffer][gpu]") {
+TEST_CASE("a pass reading an earlier pass's output sees its writes through a derived barrier",
+          "[gbuffer][gpu]") {
     gpu::Context& context = test::testContext();
     const vk::Device& device = context.device;
     const uint32_t width = 9, height = 11;
@@ -49,7 +50,8 @@ TEST_CASE("a pass reading an earlier pass's output sees its writes through a der
     vk::Executor executor = vk::createExecutor(device);
     vk::ResourceTable resources;
     resources.images = {{"material", &materialImage}, {"alpha_once", &once}, {"alpha_twice", &twice}};
-    gpu::submitAndWait(context, [&](VkCommandBuffer cmd) { vk::recordPlan(executor, cmd, chained, resources); });
+    gpu::submitAndWait(context,
+                       [&](VkCommandBuffer cmd) { vk::recordPlan(executor, cmd, chained, resources); });
     const std::vector<float> result = gpu::readbackImage(context, twice);
 
     const std::vector<float> onceReference = reference::extractRoughness(material, 4, 3, true);
@@ -67,7 +69,8 @@ TEST_CASE("a pass reading an earlier pass's output sees its writes through a der
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }
 
-TEST_CASE("a plan whose resources are missing from the table fails naming the effect and resource", "[gbuffer][gpu]") {
+TEST_CASE("a plan whose resources are missing from the table fails naming the effect and resource",
+          "[gbuffer][gpu]") {
     gpu::Context& context = test::testContext();
     RoughnessExtractionDesc desc;
     desc.size = {4, 4};
@@ -83,7 +86,8 @@ TEST_CASE("a plan whose resources are missing from the table fails naming the ef
             message = error.what();
         }
     });
-    CHECK_THAT(message, Catch::Contains("gbuffer") && Catch::Contains("'roughness' is not in the resource table"));
+    CHECK_THAT(message,
+               Catch::Contains("gbuffer") && Catch::Contains("'roughness' is not in the resource table"));
     vk::destroyExecutor(executor);
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }

@@ -16,9 +16,11 @@ RoughnessRun runRoughnessExtraction(gpu::Context& context, const std::vector<flo
     std::string error;
     REQUIRE(planRoughnessExtraction(desc, plan, &error) == Result::Ok);
 
-    vk::Image materialImage = vk::createImage2D(device, desc.size.width, desc.size.height, VK_FORMAT_R32G32B32A32_SFLOAT);
-    vk::Image alphaImage = vk::createImage2D(device, desc.size.width, desc.size.height,
-                                             desc.halfPrecisionOutput ? VK_FORMAT_R16_SFLOAT : VK_FORMAT_R32_SFLOAT);
+    vk::Image materialImage =
+        vk::createImage2D(device, desc.size.width, desc.size.height, VK_FORMAT_R32G32B32A32_SFLOAT);
+    vk::Image alphaImage =
+        vk::createImage2D(device, desc.size.width, desc.size.height,
+                          desc.halfPrecisionOutput ? VK_FORMAT_R16_SFLOAT : VK_FORMAT_R32_SFLOAT);
     gpu::uploadImage(context, materialImage, material, 4);
     // The output starts as NaN so that a pixel the pass forgets to write cannot pass a check.
     VkClearColorValue nan{};
@@ -33,11 +35,11 @@ RoughnessRun runRoughnessExtraction(gpu::Context& context, const std::vector<flo
     vk::PassHooks hooks;
     if (device.timestamps) {
         hooks.beforeDispatch = [&](VkCommandBuffer cmd, std::size_t) {
-        gpu::writeTimestamp(cmd, timestamps, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
-    };
-    hooks.afterDispatch = [&](VkCommandBuffer cmd, std::size_t) {
-        gpu::writeTimestamp(cmd, timestamps, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT);
-    };
+            gpu::writeTimestamp(cmd, timestamps, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
+        };
+        hooks.afterDispatch = [&](VkCommandBuffer cmd, std::size_t) {
+            gpu::writeTimestamp(cmd, timestamps, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT);
+        };
     }
     gpu::submitAndWait(context, [&](VkCommandBuffer cmd) {
         if (device.timestamps) gpu::resetTimestamps(cmd, timestamps);

@@ -11,8 +11,8 @@
 namespace glint::test {
 
 struct RoughnessRun {
-    std::vector<float> alpha;  // one value per pixel, row-major
-    double dispatchMs = -1.0;  // GPU time of the dispatch; < 0 when the queue has no timestamps
+    std::vector<float> alpha; // one value per pixel, row-major
+    double dispatchMs = -1.0; // GPU time of the dispatch; < 0 when the queue has no timestamps
 };
 
 // material: 4 floats per pixel (RGBA).

@@ -27,10 +27,10 @@ enum class DepthPyramidChannels : std::uint8_t {
 };
 
 struct DepthPyramidDesc {
-    Extent2D size;                    // input depth size, 1..16384 each
+    Extent2D size; // input depth size, 1..16384 each
     DepthConvention depth = DepthConvention::Standard;
     DepthPyramidChannels channels = DepthPyramidChannels::Closest;
-    std::uint32_t levelCount = 0;     // 0: the full chain down to 1x1; otherwise 1..full
+    std::uint32_t levelCount = 0; // 0: the full chain down to 1x1; otherwise 1..full
 };
 
 // Sizes only: no plan, no validation beyond clamping to the supported range.

@@ -13,10 +13,10 @@
 namespace glint {
 
 struct RoughnessExtractionDesc {
-    Extent2D size;                    // render size in pixels, 1..16384 each
+    Extent2D size;                     // render size in pixels, 1..16384 each
     std::uint32_t materialChannel = 0; // 0..3: which channel of the material texture holds roughness
-    bool inputIsPerceptual = true;    // true: the channel holds r, square it; false: it holds alpha
-    bool halfPrecisionOutput = false; // write R16F instead of R32F (the fp16 permutation)
+    bool inputIsPerceptual = true;     // true: the channel holds r, square it; false: it holds alpha
+    bool halfPrecisionOutput = false;  // write R16F instead of R32F (the fp16 permutation)
 };
 
 // Resources the plan refers to: "material" (read, any float/unorm RGBA texture) and

@@ -17,10 +17,10 @@
 namespace glint {
 
 enum class Access : std::uint8_t {
-    Read = 1,          // sampled or storage read by the shader
-    Write = 2,         // storage write (contents before the pass are not needed)
-    ReadWrite = 3,     // storage read-modify-write or atomics
-    IndirectArgs = 4,  // read by the dispatch itself as VkDispatchIndirectCommand
+    Read = 1,         // sampled or storage read by the shader
+    Write = 2,        // storage write (contents before the pass are not needed)
+    ReadWrite = 3,    // storage read-modify-write or atomics
+    IndirectArgs = 4, // read by the dispatch itself as VkDispatchIndirectCommand
 };
 
 struct ResourceUse {
@@ -34,8 +34,8 @@ struct DirectDispatch {
 };
 
 struct IndirectDispatch {
-    std::string resource;      // the buffer holding the arguments
-    std::uint64_t offset = 0;  // byte offset of the 3 x uint32 arguments, 4-byte aligned
+    std::string resource;     // the buffer holding the arguments
+    std::uint64_t offset = 0; // byte offset of the 3 x uint32 arguments, 4-byte aligned
 };
 
 // Formats of the resources an effect owns. Every storage image declares exactly one of these
@@ -69,12 +69,12 @@ struct BufferDesc {
 };
 
 struct Pass {
-    std::string name;      // unique within the effect, used for timings and dumps
-    std::string pipeline;  // embedded shader module name, e.g. "gbuffer_extract_roughness"
+    std::string name;                       // unique within the effect, used for timings and dumps
+    std::string pipeline;                   // embedded shader module name, e.g. "gbuffer_extract_roughness"
     std::uint32_t groupSize[3] = {8, 8, 1}; // must equal the shader's [numthreads]
     std::vector<ResourceUse> uses;
-    std::string constantsBinding;           // empty when the pass has no constants
-    std::vector<std::byte> constants;       // packed exactly as the shader's cbuffer
+    std::string constantsBinding;     // empty when the pass has no constants
+    std::vector<std::byte> constants; // packed exactly as the shader's cbuffer
     std::variant<DirectDispatch, IndirectDispatch> dispatch;
     // Buffers set to zero right before the dispatch (e.g. atomic counters), ordered after every
     // earlier access and before the dispatch's own.

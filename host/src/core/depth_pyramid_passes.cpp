@@ -13,7 +13,9 @@ namespace {
 constexpr std::uint32_t kTile = 64; // a group's tile of level 0: levels 1-6 need 2^6 texels
 constexpr std::uint32_t kMaxExtent = 16384;
 
-constexpr std::uint32_t roundUpToTile(std::uint32_t value) { return core::divideRoundUp(value, kTile) * kTile; }
+constexpr std::uint32_t roundUpToTile(std::uint32_t value) {
+    return core::divideRoundUp(value, kTile) * kTile;
+}
 
 Result invalid(std::string* error, const std::string& message) {
     if (error) *error = "depth pyramid: " + message;
@@ -33,19 +35,24 @@ DepthPyramidLayout depthPyramidLayout(Extent2D size, std::uint32_t requestedLeve
     DepthPyramidLayout layout;
     layout.level0 = {roundUpToTile(std::max(size.width, 1u)), roundUpToTile(std::max(size.height, 1u))};
     // The ordinary mip chain of a W0 x H0 image: 1 + floor(log2(max(W0, H0))) levels.
-    layout.fullLevelCount = static_cast<std::uint32_t>(std::bit_width(std::max(layout.level0.width, layout.level0.height)));
-    layout.levelCount = requestedLevels == 0 ? layout.fullLevelCount : std::min(requestedLevels, layout.fullLevelCount);
+    layout.fullLevelCount =
+        static_cast<std::uint32_t>(std::bit_width(std::max(layout.level0.width, layout.level0.height)));
+    layout.levelCount =
+        requestedLevels == 0 ? layout.fullLevelCount : std::min(requestedLevels, layout.fullLevelCount);
     return layout;
 }
 
 Result planDepthPyramid(const DepthPyramidDesc& desc, EffectPlan& plan, std::string* error) {
-    if (desc.size.width == 0 || desc.size.height == 0 || desc.size.width > kMaxExtent || desc.size.height > kMaxExtent)
+    if (desc.size.width == 0 || desc.size.height == 0 || desc.size.width > kMaxExtent ||
+        desc.size.height > kMaxExtent)
         return invalid(error, "size must be 1..16384 in each dimension");
     const DepthPyramidLayout layout = depthPyramidLayout(desc.size, desc.levelCount);
     if (desc.levelCount > layout.fullLevelCount)
-        return invalid(error, "levelCount " + std::to_string(desc.levelCount) + " exceeds the full chain of " +
-                                  std::to_string(layout.fullLevelCount) + " levels");
-    static_assert(GLINT_DEPTH_PYRAMID_MAX_LEVELS >= 15, "the shader must have a slot for every level of 16384");
+        return invalid(error, "levelCount " + std::to_string(desc.levelCount) +
+                                  " exceeds the full chain of " + std::to_string(layout.fullLevelCount) +
+                                  " levels");
+    static_assert(GLINT_DEPTH_PYRAMID_MAX_LEVELS >= 15,
+                  "the shader must have a slot for every level of 16384");
 
     Pass pass;
     pass.name = "build";
@@ -65,13 +72,14 @@ Result planDepthPyramid(const DepthPyramidDesc& desc, EffectPlan& plan, std::str
     pass.constantsBinding = "g_glint_constants";
     pass.constants = core::packConstants(constants);
 
-    pass.uses = {{"g_glint_depth", "depth", Access::Read}, {"g_glint_pyramid", "depth_pyramid", Access::Write}};
+    pass.uses = {{"g_glint_depth", "depth", Access::Read},
+                 {"g_glint_pyramid", "depth_pyramid", Access::Write}};
 
     plan = EffectPlan{};
     plan.effect = "depth_pyramid";
-    plan.images.push_back({"depth_pyramid", layout.level0.width, layout.level0.height, layout.levelCount,
-                           desc.channels == DepthPyramidChannels::ClosestAndFarthest ? Format::RG32Float
-                                                                                      : Format::R32Float});
+    plan.images.push_back(
+        {"depth_pyramid", layout.level0.width, layout.level0.height, layout.levelCount,
+         desc.channels == DepthPyramidChannels::ClosestAndFarthest ? Format::RG32Float : Format::R32Float});
     // The counter exists only for the last-group pattern; the shader binds it regardless, so
     // a 4-byte buffer is still needed, but it is only zeroed when it is used.
     plan.buffers.push_back({"depth_pyramid_counter", 4, false});

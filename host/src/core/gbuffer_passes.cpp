@@ -30,7 +30,8 @@ Result invalid(std::string* error, const char* message) {
 } // namespace
 
 Result planRoughnessExtraction(const RoughnessExtractionDesc& desc, EffectPlan& plan, std::string* error) {
-    if (desc.size.width == 0 || desc.size.height == 0 || desc.size.width > kMaxExtent || desc.size.height > kMaxExtent)
+    if (desc.size.width == 0 || desc.size.height == 0 || desc.size.width > kMaxExtent ||
+        desc.size.height > kMaxExtent)
         return invalid(error, "roughness extraction: size must be 1..16384 in each dimension");
     if (desc.materialChannel > 3) return invalid(error, "roughness extraction: materialChannel must be 0..3");
 
@@ -42,7 +43,8 @@ Result planRoughnessExtraction(const RoughnessExtractionDesc& desc, EffectPlan& 
     Pass pass;
     pass.name = "extract_roughness";
     pass.pipeline = desc.halfPrecisionOutput ? "gbuffer_extract_roughness.fp16" : "gbuffer_extract_roughness";
-    pass.uses = {{"g_glint_material", "material", Access::Read}, {"g_glint_alpha", "roughness", Access::Write}};
+    pass.uses = {{"g_glint_material", "material", Access::Read},
+                 {"g_glint_alpha", "roughness", Access::Write}};
     pass.constantsBinding = "g_glint_constants";
     pass.constants = core::packConstants(constants);
     pass.dispatch = core::gridFor(desc.size.width, desc.size.height, 1, pass.groupSize);

@@ -45,7 +45,8 @@ std::string checkDispatch(const Pass& pass) {
     } else {
         const auto& indirect = std::get<IndirectDispatch>(pass.dispatch);
         if (indirect.resource.empty()) return "pass '" + pass.name + "': indirect dispatch names no buffer";
-        if (indirect.offset % 4 != 0) return "pass '" + pass.name + "': indirect offset is not 4-byte aligned";
+        if (indirect.offset % 4 != 0)
+            return "pass '" + pass.name + "': indirect offset is not 4-byte aligned";
     }
     return {};
 }
@@ -55,34 +56,41 @@ std::string checkDispatch(const Pass& pass) {
 std::string validatePlan(const EffectPlan& plan) {
     std::set<std::string> resourceNames;
     for (const ImageDesc& image : plan.images) {
-        if (!resourceNames.insert(image.name).second) return "effect '" + plan.effect + "': duplicate resource '" + image.name + "'";
+        if (!resourceNames.insert(image.name).second)
+            return "effect '" + plan.effect + "': duplicate resource '" + image.name + "'";
         if (image.width == 0 || image.height == 0 || image.mipLevels == 0)
             return "effect '" + plan.effect + "': image '" + image.name + "' has a zero size or level count";
     }
     for (const BufferDesc& buffer : plan.buffers) {
-        if (!resourceNames.insert(buffer.name).second) return "effect '" + plan.effect + "': duplicate resource '" + buffer.name + "'";
+        if (!resourceNames.insert(buffer.name).second)
+            return "effect '" + plan.effect + "': duplicate resource '" + buffer.name + "'";
         if (buffer.size == 0 || buffer.size % 4 != 0)
-            return "effect '" + plan.effect + "': buffer '" + buffer.name + "' size must be a non-zero multiple of 4";
+            return "effect '" + plan.effect + "': buffer '" + buffer.name +
+                   "' size must be a non-zero multiple of 4";
     }
     std::set<std::string> names;
     for (const Pass& pass : plan.passes) {
         if (pass.name.empty()) return "effect '" + plan.effect + "': a pass has no name";
-        if (!names.insert(pass.name).second) return "effect '" + plan.effect + "': duplicate pass '" + pass.name + "'";
+        if (!names.insert(pass.name).second)
+            return "effect '" + plan.effect + "': duplicate pass '" + pass.name + "'";
         if (pass.pipeline.empty()) return "pass '" + pass.name + "': no pipeline";
         if (pass.constants.empty() != pass.constantsBinding.empty())
             return "pass '" + pass.name + "': constants and their binding name must come together";
-        if (pass.constants.size() % 16 != 0) return "pass '" + pass.name + "': constants are not a multiple of 16 bytes";
+        if (pass.constants.size() % 16 != 0)
+            return "pass '" + pass.name + "': constants are not a multiple of 16 bytes";
         for (const ResourceUse& use : pass.uses)
             if (use.binding.empty() || use.resource.empty())
                 return "pass '" + pass.name + "': a resource use lacks its binding or resource name";
         for (const auto& [resource, flags] : passAccesses(pass))
             if ((flags & kAccessIndirectRead) && (flags & kAccessShaderWrite))
-                return "pass '" + pass.name + "': '" + resource + "' is written and read as indirect arguments";
+                return "pass '" + pass.name + "': '" + resource +
+                       "' is written and read as indirect arguments";
         if (std::string error = checkDispatch(pass); !error.empty()) return error;
         for (const std::string& buffer : pass.zeroBuffers)
             if (std::none_of(plan.buffers.begin(), plan.buffers.end(),
                              [&](const BufferDesc& desc) { return desc.name == buffer; }))
-                return "pass '" + pass.name + "': zeroes '" + buffer + "', which is not among the plan's buffers";
+                return "pass '" + pass.name + "': zeroes '" + buffer +
+                       "', which is not among the plan's buffers";
     }
     return {};
 }
@@ -94,10 +102,12 @@ std::vector<PlannedBarrier> planBarriers(const EffectPlan& plan) {
     };
     std::map<std::string, State> states;
     std::vector<PlannedBarrier> barriers;
-    auto access = [&](std::size_t index, BarrierPoint point, const std::string& resource, std::uint32_t flags) {
+    auto access = [&](std::size_t index, BarrierPoint point, const std::string& resource,
+                      std::uint32_t flags) {
         State& state = states[resource];
         const bool writes = (flags & (kAccessShaderWrite | kAccessTransferWrite)) != 0;
-        const bool hazard = state.pendingWrite != kAccessNone || (writes && state.readsSinceWrite != kAccessNone);
+        const bool hazard =
+            state.pendingWrite != kAccessNone || (writes && state.readsSinceWrite != kAccessNone);
         if (hazard) {
             barriers.push_back({index, point, resource, state.pendingWrite | state.readsSinceWrite, flags});
             state.pendingWrite = kAccessNone;

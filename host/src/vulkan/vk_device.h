@@ -15,8 +15,8 @@ struct Device {
     uint32_t queueFamily = 0;
     VkPhysicalDeviceProperties properties{};
     VkPhysicalDeviceMemoryProperties memory{};
-    uint32_t subgroupSize = 0;      // VkPhysicalDeviceSubgroupProperties::subgroupSize
-    bool timestamps = false;        // queue family has timestampValidBits > 0
+    uint32_t subgroupSize = 0; // VkPhysicalDeviceSubgroupProperties::subgroupSize
+    bool timestamps = false;   // queue family has timestampValidBits > 0
     uint32_t timestampValidBits = 0;
 };
 

@@ -21,7 +21,8 @@ constexpr uint32_t kMaxSetsPerReset = 1024;
 
 VkPipelineStageFlags stagesFor(uint32_t flags) {
     VkPipelineStageFlags stages = 0;
-    if (flags & (core::kAccessShaderRead | core::kAccessShaderWrite)) stages |= VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
+    if (flags & (core::kAccessShaderRead | core::kAccessShaderWrite))
+        stages |= VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
     if (flags & core::kAccessIndirectRead) stages |= VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT;
     if (flags & core::kAccessExternalWrite) stages |= VK_PIPELINE_STAGE_ALL_COMMANDS_BIT;
     if (flags & core::kAccessTransferWrite) stages |= VK_PIPELINE_STAGE_TRANSFER_BIT;
@@ -41,7 +42,8 @@ VkAccessFlags accessMaskFor(uint32_t flags) {
 ComputePipeline& pipelineFor(Executor& executor, const std::string& name) {
     auto it = executor.pipelines.find(name);
     if (it == executor.pipelines.end())
-        it = executor.pipelines.emplace(name, createComputePipeline(*executor.device, name, executor.findShader(name)))
+        it = executor.pipelines
+                 .emplace(name, createComputePipeline(*executor.device, name, executor.findShader(name)))
                  .first;
     return it->second;
 }
@@ -66,7 +68,8 @@ void recordBarriers(VkCommandBuffer cmd, const std::vector<core::PlannedBarrier>
             barrier.image = image->second->image;
             barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, VK_REMAINING_MIP_LEVELS, 0, 1};
             imageBarriers.push_back(barrier);
-        } else if (auto buffer = resources.buffers.find(planned.resource); buffer != resources.buffers.end()) {
+        } else if (auto buffer = resources.buffers.find(planned.resource);
+                   buffer != resources.buffers.end()) {
             VkBufferMemoryBarrier barrier{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER};
             barrier.srcAccessMask = accessMaskFor(planned.src);
             barrier.dstAccessMask = accessMaskFor(planned.dst);
@@ -78,8 +81,9 @@ void recordBarriers(VkCommandBuffer cmd, const std::vector<core::PlannedBarrier>
         }
     }
     if (imageBarriers.empty() && bufferBarriers.empty()) return;
-    vkCmdPipelineBarrier(cmd, srcStages, dstStages, 0, 0, nullptr, static_cast<uint32_t>(bufferBarriers.size()),
-                         bufferBarriers.data(), static_cast<uint32_t>(imageBarriers.size()), imageBarriers.data());
+    vkCmdPipelineBarrier(cmd, srcStages, dstStages, 0, 0, nullptr,
+                         static_cast<uint32_t>(bufferBarriers.size()), bufferBarriers.data(),
+                         static_cast<uint32_t>(imageBarriers.size()), imageBarriers.data());
 }
 
 const Image& spareImage(Executor& executor, VkFormat format) {
@@ -125,8 +129,8 @@ void initializeSpareImages(Executor& executor, VkCommandBuffer cmd) {
     }
     executor.spareImagesToInitialize.clear();
     if (barriers.empty()) return;
-    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 0, nullptr, 0,
-                         nullptr, static_cast<uint32_t>(barriers.size()), barriers.data());
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 0,
+                         nullptr, 0, nullptr, static_cast<uint32_t>(barriers.size()), barriers.data());
 }
 
 // The plan's resource descriptions are the single source of truth for sizes, formats and
@@ -135,23 +139,26 @@ void checkResources(const EffectPlan& plan, const ResourceTable& resources) {
     for (const ImageDesc& desc : plan.images) {
         const auto it = resources.images.find(desc.name);
         if (it == resources.images.end())
-            throw std::runtime_error("effect '" + plan.effect + "': image '" + desc.name + "' is not in the resource table");
+            throw std::runtime_error("effect '" + plan.effect + "': image '" + desc.name +
+                                     "' is not in the resource table");
         const Image& image = *it->second;
         if (image.width != desc.width || image.height != desc.height || image.mipLevels != desc.mipLevels ||
             image.format != toVkFormat(desc.format))
-            throw std::runtime_error("effect '" + plan.effect + "': image '" + desc.name + "' is " +
-                                     std::to_string(image.width) + "x" + std::to_string(image.height) + " with " +
-                                     std::to_string(image.mipLevels) + " levels; the plan needs " +
-                                     std::to_string(desc.width) + "x" + std::to_string(desc.height) + " with " +
-                                     std::to_string(desc.mipLevels) + " levels in its declared format");
+            throw std::runtime_error(
+                "effect '" + plan.effect + "': image '" + desc.name + "' is " + std::to_string(image.width) +
+                "x" + std::to_string(image.height) + " with " + std::to_string(image.mipLevels) +
+                " levels; the plan needs " + std::to_string(desc.width) + "x" + std::to_string(desc.height) +
+                " with " + std::to_string(desc.mipLevels) + " levels in its declared format");
     }
     for (const BufferDesc& desc : plan.buffers) {
         const auto it = resources.buffers.find(desc.name);
         if (it == resources.buffers.end())
-            throw std::runtime_error("effect '" + plan.effect + "': buffer '" + desc.name + "' is not in the resource table");
+            throw std::runtime_error("effect '" + plan.effect + "': buffer '" + desc.name +
+                                     "' is not in the resource table");
         if (it->second->size < desc.size)
-            throw std::runtime_error("effect '" + plan.effect + "': buffer '" + desc.name + "' is smaller than the " +
-                                     std::to_string(desc.size) + " bytes the plan needs");
+            throw std::runtime_error("effect '" + plan.effect + "': buffer '" + desc.name +
+                                     "' is smaller than the " + std::to_string(desc.size) +
+                                     " bytes the plan needs");
     }
 }
 
@@ -181,16 +188,19 @@ VkDescriptorSet writeDescriptors(Executor& executor, const ComputePipeline& pipe
         write.descriptorCount = binding.count;
         if (binding.type == VK_DESCRIPTOR_TYPE_SAMPLER) {
             for (uint32_t i = 0; i < binding.count; ++i)
-                imageInfos.push_back({executor.linearClampSampler, VK_NULL_HANDLE, VK_IMAGE_LAYOUT_UNDEFINED});
+                imageInfos.push_back(
+                    {executor.linearClampSampler, VK_NULL_HANDLE, VK_IMAGE_LAYOUT_UNDEFINED});
             write.pImageInfo = &imageInfos[imageInfos.size() - binding.count];
             writes.push_back(write);
             continue;
         }
         if (binding.name == pass.constantsBinding && binding.type == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER) {
             if (pass.constants.size() != binding.blockSize)
-                fail(pass, "constants are " + std::to_string(pass.constants.size()) + " bytes, the shader's '" +
-                               binding.name + "' is " + std::to_string(binding.blockSize));
-            const VkDeviceSize alignment = std::max<VkDeviceSize>(device.properties.limits.minUniformBufferOffsetAlignment, 16);
+                fail(pass, "constants are " + std::to_string(pass.constants.size()) +
+                               " bytes, the shader's '" + binding.name + "' is " +
+                               std::to_string(binding.blockSize));
+            const VkDeviceSize alignment =
+                std::max<VkDeviceSize>(device.properties.limits.minUniformBufferOffsetAlignment, 16);
             const VkDeviceSize offset = (executor.constantRingUsed + alignment - 1) / alignment * alignment;
             if (offset + pass.constants.size() > executor.constantRing.size)
                 fail(pass, "constant ring exhausted; reset the executor between frames");
@@ -211,12 +221,14 @@ VkDescriptorSet writeDescriptors(Executor& executor, const ComputePipeline& pipe
                               binding.type == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
         if (isBuffer) {
             const auto buffer = resources.buffers.find(use->resource);
-            if (buffer == resources.buffers.end()) fail(pass, "buffer '" + use->resource + "' is not in the resource table");
+            if (buffer == resources.buffers.end())
+                fail(pass, "buffer '" + use->resource + "' is not in the resource table");
             bufferInfos.push_back({buffer->second->buffer, 0, VK_WHOLE_SIZE});
             write.pBufferInfo = &bufferInfos.back();
         } else {
             const auto image = resources.images.find(use->resource);
-            if (image == resources.images.end()) fail(pass, "image '" + use->resource + "' is not in the resource table");
+            if (image == resources.images.end())
+                fail(pass, "image '" + use->resource + "' is not in the resource table");
             const std::size_t first = imageInfos.size();
             addImageInfos(executor, binding, *image->second, imageInfos);
             write.pImageInfo = &imageInfos[first];
@@ -227,7 +239,8 @@ VkDescriptorSet writeDescriptors(Executor& executor, const ComputePipeline& pipe
         const bool bound = std::any_of(pipeline.shader.bindings.begin(), pipeline.shader.bindings.end(),
                                        [&](const ReflectedBinding& b) { return b.name == use.binding; });
         if (!bound && use.access != Access::IndirectArgs)
-            fail(pass, "resource '" + use.resource + "' names binding '" + use.binding + "', which the shader lacks");
+            fail(pass, "resource '" + use.resource + "' names binding '" + use.binding +
+                           "', which the shader lacks");
     }
     vkUpdateDescriptorSets(device.device, static_cast<uint32_t>(writes.size()), writes.data(), 0, nullptr);
     return set;
@@ -289,15 +302,16 @@ void resetExecutor(Executor& executor) {
     executor.constantRingUsed = 0;
 }
 
-void recordPlan(Executor& executor, VkCommandBuffer cmd, const EffectPlan& plan, const ResourceTable& resources,
-                const PassHooks& hooks) {
+void recordPlan(Executor& executor, VkCommandBuffer cmd, const EffectPlan& plan,
+                const ResourceTable& resources, const PassHooks& hooks) {
     if (const std::string error = core::validatePlan(plan); !error.empty()) throw std::runtime_error(error);
     checkResources(plan, resources);
     const std::vector<core::PlannedBarrier> barriers = core::planBarriers(plan);
     auto nextBarrier = barriers.begin();
     auto takeBarriers = [&](std::size_t index, core::BarrierPoint point) {
         std::vector<core::PlannedBarrier> taken;
-        for (; nextBarrier != barriers.end() && nextBarrier->beforePass == index && nextBarrier->point == point;
+        for (;
+             nextBarrier != barriers.end() && nextBarrier->beforePass == index && nextBarrier->point == point;
              ++nextBarrier)
             taken.push_back(*nextBarrier);
         return taken;
@@ -315,7 +329,8 @@ void recordPlan(Executor& executor, VkCommandBuffer cmd, const EffectPlan& plan,
         recordBarriers(cmd, takeBarriers(index, core::BarrierPoint::BeforeFills), resources);
         for (const std::string& name : pass.zeroBuffers) {
             const auto buffer = resources.buffers.find(name);
-            if (buffer == resources.buffers.end()) fail(pass, "buffer '" + name + "' is not in the resource table");
+            if (buffer == resources.buffers.end())
+                fail(pass, "buffer '" + name + "' is not in the resource table");
             vkCmdFillBuffer(cmd, buffer->second->buffer, 0, VK_WHOLE_SIZE, 0);
         }
         recordBarriers(cmd, takeBarriers(index, core::BarrierPoint::BeforeDispatch), resources);
@@ -330,7 +345,8 @@ void recordPlan(Executor& executor, VkCommandBuffer cmd, const EffectPlan& plan,
             const auto& indirect = std::get<IndirectDispatch>(pass.dispatch);
             const auto buffer = resources.buffers.find(indirect.resource);
             if (buffer == resources.buffers.end())
-                fail(pass, "indirect argument buffer '" + indirect.resource + "' is not in the resource table");
+                fail(pass,
+                     "indirect argument buffer '" + indirect.resource + "' is not in the resource table");
             vkCmdDispatchIndirect(cmd, buffer->second->buffer, indirect.offset);
         }
         if (hooks.afterDispatch) hooks.afterDispatch(cmd, index);

@@ -14,8 +14,8 @@
 #include <functional>
 #include <map>
 #include <span>
-#include <string_view>
 #include <string>
+#include <string_view>
 
 namespace glint::vk {
 
@@ -38,8 +38,8 @@ struct Executor {
     ShaderLookup findShader; // glint's embedded modules unless the caller adds its own
     std::map<std::string, ComputePipeline> pipelines; // created on first use
     VkDescriptorPool descriptorPool = VK_NULL_HANDLE;
-    VkSampler linearClampSampler = VK_NULL_HANDLE;      // bound to every sampler binding
-    Buffer constantRing;                                // per-pass constants, host-visible
+    VkSampler linearClampSampler = VK_NULL_HANDLE; // bound to every sampler binding
+    Buffer constantRing;                           // per-pass constants, host-visible
     VkDeviceSize constantRingUsed = 0;
     // 1x1 images bound to storage-image array slots past an image's last level, one per
     // format, so that no spare slot ever aliases a live level (reference defect: spare mip
@@ -57,7 +57,7 @@ void resetExecutor(Executor& executor);
 
 // Records the plan. Throws std::runtime_error with one line naming the pass when the plan
 // does not match its shaders (unknown binding, missing resource, group size mismatch...).
-void recordPlan(Executor& executor, VkCommandBuffer cmd, const EffectPlan& plan, const ResourceTable& resources,
-                const PassHooks& hooks = {});
+void recordPlan(Executor& executor, VkCommandBuffer cmd, const EffectPlan& plan,
+                const ResourceTable& resources, const PassHooks& hooks = {});
 
 } // namespace glint::vk

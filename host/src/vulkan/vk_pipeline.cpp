@@ -6,7 +6,8 @@
 
 namespace glint::vk {
 
-ComputePipeline createComputePipeline(const Device& device, const std::string& name, std::span<const uint32_t> code) {
+ComputePipeline createComputePipeline(const Device& device, const std::string& name,
+                                      std::span<const uint32_t> code) {
     ComputePipeline pipeline;
     pipeline.name = name;
     pipeline.shader = reflectComputeShader(code, name);
@@ -42,8 +43,8 @@ ComputePipeline createComputePipeline(const Device& device, const std::string& n
         pipelineInfo.stage.module = pipeline.module;
         pipelineInfo.stage.pName = "main";
         pipelineInfo.layout = pipeline.layout;
-        GLINT_VK_CHECK(
-            vkCreateComputePipelines(device.device, VK_NULL_HANDLE, 1, &pipelineInfo, nullptr, &pipeline.pipeline));
+        GLINT_VK_CHECK(vkCreateComputePipelines(device.device, VK_NULL_HANDLE, 1, &pipelineInfo, nullptr,
+                                                &pipeline.pipeline));
     } catch (...) {
         destroyComputePipeline(device, pipeline);
         throw;

@@ -21,7 +21,8 @@ struct ComputePipeline {
 
 // code is the SPIR-V of the module called name (used in messages). Throws on an empty module,
 // reflection problems and Vulkan errors.
-ComputePipeline createComputePipeline(const Device& device, const std::string& name, std::span<const uint32_t> code);
+ComputePipeline createComputePipeline(const Device& device, const std::string& name,
+                                      std::span<const uint32_t> code);
 void destroyComputePipeline(const Device& device, ComputePipeline& pipeline);
 
 } // namespace glint::vk

@@ -8,8 +8,9 @@
 namespace glint::vk {
 namespace {
 
-void addBindings(const spirv_cross::Compiler& compiler, const spirv_cross::SmallVector<spirv_cross::Resource>& resources,
-                 VkDescriptorType type, const std::string& moduleName, ReflectedShader& out) {
+void addBindings(const spirv_cross::Compiler& compiler,
+                 const spirv_cross::SmallVector<spirv_cross::Resource>& resources, VkDescriptorType type,
+                 const std::string& moduleName, ReflectedShader& out) {
     for (const spirv_cross::Resource& resource : resources) {
         const uint32_t set = compiler.get_decoration(resource.id, spv::DecorationDescriptorSet);
         if (set != 0)
@@ -61,13 +62,18 @@ ReflectedShader reflectComputeShader(std::span<const uint32_t> spirv, const std:
             throw std::runtime_error(moduleName + ": push constants are not used by glint entry files");
         if (!resources.subpass_inputs.empty() || !resources.acceleration_structures.empty() ||
             !resources.atomic_counters.empty())
-            throw std::runtime_error(moduleName + ": declares a resource kind the compute backend does not bind");
-        addBindings(compiler, resources.uniform_buffers, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, moduleName, shader);
-        addBindings(compiler, resources.storage_buffers, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, moduleName, shader);
+            throw std::runtime_error(moduleName +
+                                     ": declares a resource kind the compute backend does not bind");
+        addBindings(compiler, resources.uniform_buffers, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, moduleName,
+                    shader);
+        addBindings(compiler, resources.storage_buffers, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, moduleName,
+                    shader);
         addBindings(compiler, resources.storage_images, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, moduleName, shader);
-        addBindings(compiler, resources.separate_images, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, moduleName, shader);
+        addBindings(compiler, resources.separate_images, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, moduleName,
+                    shader);
         addBindings(compiler, resources.separate_samplers, VK_DESCRIPTOR_TYPE_SAMPLER, moduleName, shader);
-        addBindings(compiler, resources.sampled_images, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, moduleName, shader);
+        addBindings(compiler, resources.sampled_images, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, moduleName,
+                    shader);
         std::sort(shader.bindings.begin(), shader.bindings.end(),
                   [](const ReflectedBinding& a, const ReflectedBinding& b) { return a.binding < b.binding; });
         for (std::size_t i = 1; i < shader.bindings.size(); ++i)

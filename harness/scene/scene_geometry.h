@@ -1,0 +1,38 @@
+// World-space geometry of a scene at one frame: every object instanced with its keyframed
+// transform into triangles and spheres, plus each object's map to its previous-frame pose
+// (for exact motion vectors), and the camera matrices of the frame and the frame before.
+#pragma once
+
+#include "scene/scene_types.h"
+#include "scene_constants.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace glint::scene {
+
+// Triangles of a model file in its own space (all nodes' transforms applied), loaded once per
+// object and reused for every frame.
+struct Mesh {
+    std::vector<Vec3> positions; // 3 per triangle
+};
+
+// Loads every mesh object's file through assimp; throws SceneError naming the file.
+std::vector<Mesh> loadMeshes(const Scene& scene);
+
+struct FrameGeometry {
+    std::vector<shaders::ScenePrimitive> primitives;
+    std::vector<shaders::SceneObject> objects; // one per scene object
+};
+
+// The object's world matrix (column vectors) at a possibly fractional frame.
+capture::Mat4 objectMatrix(const ObjectDesc& object, double frame);
+FrameGeometry buildGeometry(const Scene& scene, const std::vector<Mesh>& meshes, std::uint32_t frame);
+
+struct FrameCamera {
+    capture::Camera camera; // view, projection, prevViewProjection, depth convention, near/far
+    Vec3 eye{};
+};
+FrameCamera cameraAt(const Scene& scene, std::uint32_t frame);
+
+} // namespace glint::scene

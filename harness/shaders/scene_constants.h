@@ -1,0 +1,104 @@
+// Constants and GPU data layouts of the scene simulator's ray caster, compiled by both C++
+// (harness/scene) and HLSL (harness/shaders). One definition, so the host packing and the
+// shader's view of the buffers cannot drift apart; static_asserts pin the C++ side.
+#ifndef GLINT_SCENE_CONSTANTS_H
+#define GLINT_SCENE_CONSTANTS_H
+
+#include "glint/common/glint_shared_types.h"
+
+// Primitive kinds in ScenePrimitive::kind.
+#define GLINT_SCENE_PRIM_TRIANGLE 0
+#define GLINT_SCENE_PRIM_SPHERE 1
+// Light kinds in SceneLight::kind.
+#define GLINT_SCENE_LIGHT_DIRECTIONAL 0
+#define GLINT_SCENE_LIGHT_SPHERE 1
+// Traversal stack depth; the CPU builder never makes a deeper tree (kMaxBvhDepth).
+#define GLINT_SCENE_STACK_SIZE 64
+
+#ifdef __cplusplus
+namespace glint::shaders {
+GLINT_SHARED_USING;
+struct float3 { float x, y, z; };
+#endif
+
+// Binary BVH node. count == 0: interior node whose children are nodes `first` and
+// `first + 1`; count > 0: leaf holding primitives first .. first + count - 1.
+struct SceneBvhNode {
+    float3 boundsMin;
+    uint first;
+    float3 boundsMax;
+    uint count;
+};
+
+// A world-space triangle (p0, p1, p2) or sphere (centre p0, radius p1.x).
+struct ScenePrimitive {
+    float3 p0;
+    uint kind;
+    float3 p1;
+    uint material;
+    float3 p2;
+    uint object; // index into the object table (previous-frame transforms)
+};
+
+// GGX material. Perceptual roughness r = lerp(roughness, roughnessEnd, t) with
+// t = saturate(dot(p, rampPlane.xyz) + rampPlane.w); rampPlane = 0 disables the ramp.
+struct SceneMaterial {
+    float3 baseColor;
+    float metallic;
+    float3 emissive;
+    float roughness;
+    float4 rampPlane;
+    float roughnessEnd;
+    float padding0;
+    float padding1;
+    float padding2;
+};
+
+// Rows of the 3x4 matrix that takes a world point on this object now to where the same
+// material point was in the previous frame (previousWorld * inverse(currentWorld)).
+struct SceneObject {
+    float4 toPrevious[3];
+};
+
+// Every light is seen from a point as a cone: directional lights have a fixed direction and
+// angular radius, sphere lights subtend asin(radius / distance). `radiance` is the irradiance
+// (times colour) the light delivers at normal incidence (directional) or at unit distance
+// (sphere: irradiance = radiance / distance^2).
+struct SceneLight {
+    float3 vector; // directional: unit direction toward the light; sphere: centre
+    uint kind;
+    float3 radiance;
+    float size;    // directional: angular radius in radians; sphere: radius
+};
+
+GLINT_CONSTANTS_BEGIN(GLINT_SceneConstants)
+    GLINT_ROW_MAJOR float4x4 viewProjection;     // world -> clip (unjittered)
+    GLINT_ROW_MAJOR float4x4 invViewProjection;  // clip -> world, computed in double
+    GLINT_ROW_MAJOR float4x4 prevViewProjection; // world -> previous clip
+    float4 eye;          // xyz: camera position (world)
+    uint2 size;          // W x H
+    uint frameIndex;     // drives the per-frame random numbers
+    uint seed;           // scene seed
+    uint lightCount;
+    uint samples;        // samples per pixel of this pass (references, noisy shadow = 1)
+    uint shadowSamples;  // cone samples of the converged visibility used when shading
+    uint shadowLight;    // light whose visibility the shadow passes write
+    float backgroundDepth; // device depth of the far plane (1 standard, 0 reversed)
+    uint ndcYDown;       // 1: Vulkan-style NDC (+y down)
+    float environmentIntensity;
+    uint passSalt;       // decorrelates the random numbers of different passes
+GLINT_CONSTANTS_END(GLINT_SceneConstants);
+
+#ifdef __cplusplus
+static_assert(sizeof(SceneBvhNode) == 32);
+static_assert(sizeof(ScenePrimitive) == 48);
+static_assert(sizeof(SceneMaterial) == 64);
+static_assert(sizeof(SceneObject) == 48);
+static_assert(sizeof(SceneLight) == 32);
+static_assert(offsetof(GLINT_SceneConstants, eye) == 192);
+static_assert(offsetof(GLINT_SceneConstants, size) == 208);
+static_assert(sizeof(GLINT_SceneConstants) == 256);
+} // namespace glint::shaders
+#endif
+
+#endif // GLINT_SCENE_CONSTANTS_H
