@@ -12,6 +12,7 @@ packages=(
   libvulkan-dev vulkan-validationlayers mesa-vulkan-drivers vulkan-tools
   glslang-tools spirv-tools libspirv-cross-c-shared-dev
   libopenexr-dev libimath-dev catch2 libcli11-dev nlohmann-json3-dev libtomlplusplus-dev
+  libassimp-dev assimp-testmodels
 )
 
 missing=()

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 
 namespace glint::cli {
@@ -23,7 +24,18 @@ struct BenchOptions {
     bool validate = false;
 };
 
+struct SimulateOptions {
+    std::string scenePath;
+    std::string outDir;
+    uint32_t width = 0, height = 0; // 0: the scene's resolution
+    uint32_t frames = 0;            // 0: the scene's frame count
+    uint32_t spp = 0;               // 0: the scene's reference samples per pixel
+    std::optional<uint32_t> seed;
+    bool validate = false;
+};
+
 int runDevices(bool validate);
+int runSimulate(const SimulateOptions& options);
 int runBench(const BenchOptions& options);
 int runInfo(const std::string& path, bool loadPixels);
 

@@ -36,6 +36,17 @@ int main(int argc, char** argv) {
     benchCommand->add_flag("--reversed", bench.reversed, "reversed depth (closest = max)");
     benchCommand->add_flag("--farthest", bench.farthest, "closest and farthest channels");
 
+    glint::cli::SimulateOptions simulate;
+    std::string simulateSize;
+    uint32_t simulateSeed = 0;
+    CLI::App* simulateCommand = app.add_subcommand("simulate", "Render a scene file (TOML) into a capture sequence");
+    simulateCommand->add_option("scene", simulate.scenePath, "scene file, e.g. harness/scenes/glossy_room.toml")->required();
+    simulateCommand->add_option("--out", simulate.outDir, "output sequence folder")->required();
+    simulateCommand->add_option("--size", simulateSize, "override the resolution, WxH");
+    simulateCommand->add_option("--frames", simulate.frames, "override the frame count");
+    simulateCommand->add_option("--spp", simulate.spp, "override the reference samples per pixel");
+    CLI::Option* seedOption = simulateCommand->add_option("--seed", simulateSeed, "override the scene's seed");
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {
@@ -47,6 +58,14 @@ int main(int argc, char** argv) {
     try {
         if (*devices) return glint::cli::runDevices(validate);
         if (*info) return glint::cli::runInfo(infoPath, !headerOnly);
+        if (*simulateCommand) {
+            if (!simulateSize.empty() &&
+                std::sscanf(simulateSize.c_str(), "%ux%u", &simulate.width, &simulate.height) != 2)
+                throw std::invalid_argument("simulate: --size must read WxH, e.g. 1920x1080");
+            if (*seedOption) simulate.seed = simulateSeed;
+            simulate.validate = validate;
+            return glint::cli::runSimulate(simulate);
+        }
         if (*benchCommand) {
             if (std::sscanf(benchSize.c_str(), "%ux%u", &bench.width, &bench.height) != 2)
                 throw std::invalid_argument("bench: --size must read WxH, e.g. 1920x1080");

@@ -41,11 +41,12 @@ Vec3 lerp(const Vec3& a, const Vec3& b, double t) {
 // Index of the keyframe segment containing `frame` and the blend inside it; clamps outside.
 template <typename Key>
 std::pair<const Key*, std::pair<const Key*, double>> segment(const std::vector<Key>& keys, double frame) {
-    if (frame <= keys.front().frame || keys.size() == 1) return {&keys.front(), {&keys.front(), 0.0}};
-    if (frame >= keys.back().frame) return {&keys.back(), {&keys.back(), 0.0}};
+    const auto at = [&](std::size_t i) { return static_cast<double>(keys[i].frame); };
+    if (frame <= at(0) || keys.size() == 1) return {&keys.front(), {&keys.front(), 0.0}};
+    if (frame >= at(keys.size() - 1)) return {&keys.back(), {&keys.back(), 0.0}};
     std::size_t i = 1;
-    while (keys[i].frame < frame) ++i;
-    const double t = (frame - keys[i - 1].frame) / (static_cast<double>(keys[i].frame) - keys[i - 1].frame);
+    while (at(i) < frame) ++i;
+    const double t = (frame - at(i - 1)) / (at(i) - at(i - 1));
     return {&keys[i - 1], {&keys[i], t}};
 }
 
@@ -170,7 +171,7 @@ FrameGeometry buildGeometry(const Scene& scene, const std::vector<Mesh>& meshes,
             shaders::ScenePrimitive p{};
             p.kind = GLINT_SCENE_PRIM_SPHERE;
             p.p0 = f3(centre.x, centre.y, centre.z);
-            p.p1 = f3(o.radius * s, 0.0, 0.0);
+            p.p1 = f3(static_cast<double>(o.radius) * s, 0.0, 0.0);
             p.material = o.material;
             p.object = objectId;
             g.primitives.push_back(p);

@@ -19,10 +19,18 @@
 namespace glint::shaders {
 GLINT_SHARED_USING;
 struct float3 { float x, y, z; };
+#define GLINT_SCENE_MATRIX(name) float4x4 name
+#else
+// Matrices are four float4 rows rather than a (row_major) float4x4: the row-major qualifier
+// on a member of a ConstantBuffer<T> struct is not honoured by every front end, and rows
+// leave no doubt. SCENE_MUL(m, v) is m.v.
+#define GLINT_SCENE_MATRIX(name) float4 name[4]
+#define SCENE_MUL(m, v) float4(dot((m)[0], (v)), dot((m)[1], (v)), dot((m)[2], (v)), dot((m)[3], (v)))
 #endif
 
-// Binary BVH node. count == 0: interior node whose children are nodes `first` and
-// `first + 1`; count > 0: leaf holding primitives first .. first + count - 1.
+// Binary BVH node. count > 0: leaf holding primitives first .. first + count - 1; count == 0
+// and first > 0: interior node whose children are nodes `first` and `first + 1`; count == 0
+// and first == 0 (only ever the root, as no child has index 0): an empty scene.
 struct SceneBvhNode {
     float3 boundsMin;
     uint first;
@@ -65,16 +73,16 @@ struct SceneObject {
 // (times colour) the light delivers at normal incidence (directional) or at unit distance
 // (sphere: irradiance = radiance / distance^2).
 struct SceneLight {
-    float3 vector; // directional: unit direction toward the light; sphere: centre
+    float3 where;  // directional: unit direction toward the light; sphere: centre
     uint kind;
     float3 radiance;
     float size;    // directional: angular radius in radians; sphere: radius
 };
 
 GLINT_CONSTANTS_BEGIN(GLINT_SceneConstants)
-    GLINT_ROW_MAJOR float4x4 viewProjection;     // world -> clip (unjittered)
-    GLINT_ROW_MAJOR float4x4 invViewProjection;  // clip -> world, computed in double
-    GLINT_ROW_MAJOR float4x4 prevViewProjection; // world -> previous clip
+    GLINT_SCENE_MATRIX(viewProjection);     // world -> clip (unjittered), row-major
+    GLINT_SCENE_MATRIX(invViewProjection);  // clip -> world, computed in double
+    GLINT_SCENE_MATRIX(prevViewProjection); // world -> previous clip
     float4 eye;          // xyz: camera position (world)
     uint2 size;          // W x H
     uint frameIndex;     // drives the per-frame random numbers

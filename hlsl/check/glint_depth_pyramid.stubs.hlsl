@@ -1,9 +1,9 @@
 // Stub callbacks for the header check of glint_depth_pyramid.hlsli.
 RWStructuredBuffer<float2> g_glint_check;
 
-float GLINT_DEPTH_PYRAMID_LoadDepth(int2 pixel)
+float4 GLINT_DEPTH_PYRAMID_GatherDepth(int2 pixel)
 {
-    return g_glint_check[pixel.x].x;
+    return float4(g_glint_check[pixel.x], g_glint_check[pixel.y]);
 }
 
 float2 GLINT_DEPTH_PYRAMID_Reduce(float2 a, float2 b)
@@ -32,5 +32,5 @@ void GLINT_DEPTH_PYRAMID_ResetCounter()
 
 [numthreads(256, 1, 1)] void main(uint3 groupId : SV_GroupID, uint groupIndex : SV_GroupIndex)
 {
-    GLINT_DEPTH_PYRAMID_Build(groupId.xy, groupIndex, uint2(7, 3), uint2(64, 64), 7, 1, 1.0);
+    GLINT_DEPTH_PYRAMID_Build(groupId.xy, groupIndex, uint2(7, 3), uint2(64, 64), 7, 1, 1.0, true);
 }

@@ -15,7 +15,8 @@ void buildEveryVariant(std::uint32_t width, std::uint32_t height) {
     gpu::Context& context = test::testContext();
     std::uint32_t seed = width * 7919u + height;
     for (const auto depth : {DepthConvention::Standard, DepthConvention::Reversed})
-        for (const auto channels : {DepthPyramidChannels::Closest, DepthPyramidChannels::ClosestAndFarthest}) {
+        for (const auto channels :
+             {DepthPyramidChannels::Closest, DepthPyramidChannels::ClosestAndFarthest}) {
             DepthPyramidDesc desc;
             desc.size = {width, height};
             desc.depth = depth;
@@ -29,11 +30,27 @@ void buildEveryVariant(std::uint32_t width, std::uint32_t height) {
 
 } // namespace
 
-TEST_CASE("1x1 depth: bit-exact pyramid", "[exact]") { buildEveryVariant(1, 1); }
-TEST_CASE("1x37 depth: bit-exact pyramid", "[exact]") { buildEveryVariant(1, 37); }
-TEST_CASE("53x1 depth: bit-exact pyramid", "[exact]") { buildEveryVariant(53, 1); }
-TEST_CASE("7x3 depth: bit-exact pyramid", "[exact]") { buildEveryVariant(7, 3); }
-TEST_CASE("7x4 depth (SPD drops a column): bit-exact pyramid", "[exact]") { buildEveryVariant(7, 4); }
-TEST_CASE("128x32 depth (SPD issue 2): bit-exact pyramid", "[exact]") { buildEveryVariant(128, 32); }
-TEST_CASE("1917x1077 depth: bit-exact pyramid", "[exact]") { buildEveryVariant(1917, 1077); }
-TEST_CASE("1920x1080 depth: bit-exact pyramid", "[exact]") { buildEveryVariant(1920, 1080); }
+TEST_CASE("1x1 depth: bit-exact pyramid", "[exact]") {
+    buildEveryVariant(1, 1);
+}
+TEST_CASE("1x37 depth: bit-exact pyramid", "[exact]") {
+    buildEveryVariant(1, 37);
+}
+TEST_CASE("53x1 depth: bit-exact pyramid", "[exact]") {
+    buildEveryVariant(53, 1);
+}
+TEST_CASE("7x3 depth: bit-exact pyramid", "[exact]") {
+    buildEveryVariant(7, 3);
+}
+TEST_CASE("7x4 depth (SPD drops a column): bit-exact pyramid", "[exact]") {
+    buildEveryVariant(7, 4);
+}
+TEST_CASE("128x32 depth (SPD issue 2): bit-exact pyramid", "[exact]") {
+    buildEveryVariant(128, 32);
+}
+TEST_CASE("1917x1077 depth: bit-exact pyramid", "[exact]") {
+    buildEveryVariant(1917, 1077);
+}
+TEST_CASE("1920x1080 depth: bit-exact pyramid", "[exact]") {
+    buildEveryVariant(1920, 1080);
+}

@@ -7,6 +7,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <bit>
+
 using namespace glint;
 
 namespace {
@@ -60,6 +62,30 @@ TEST_CASE("a stale completion count does not corrupt the coarse levels", "[level
         INFO("stale count " << stale);
         test::checkPyramid(input, desc, runner.build(input, stale));
         CHECK(runner.readCounter() == 0u);
+    }
+    GLINT_REQUIRE_NO_VALIDATION_ERRORS();
+}
+
+TEST_CASE("without the level-0 copy, level 0 is left alone and the other levels are exact", "[levels]") {
+    gpu::Context& context = test::testContext();
+    for (const auto depth : {DepthConvention::Standard, DepthConvention::Reversed}) {
+        DepthPyramidDesc desc = descWithLevels(0);
+        desc.depth = depth;
+        desc.copyLevel0 = false;
+        const std::vector<float> input = test::structuredDepth(300, 200, depth, 9);
+        test::PyramidRunner runner(context, desc);
+        reference::Pyramid p = runner.build(input);
+        REQUIRE(p.levels.size() == 9);
+        // The runner fills every level with NaN before the build; level 0 must still hold it.
+        std::size_t written = 0;
+        for (const float value : p.levels[0].texels)
+            written += std::bit_cast<std::uint32_t>(value) != 0x7FC00000u;
+        CHECK(written == 0u);
+        // Levels 1 and up are the same as with the copy: compare them with level 0 filled in.
+        const reference::Pyramid expected =
+            reference::buildDepthPyramid(input, 300, 200, depth, desc.channels, 0);
+        p.levels[0] = expected.levels[0];
+        test::checkPyramid(input, desc, p);
     }
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }

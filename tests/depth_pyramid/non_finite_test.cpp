@@ -20,7 +20,9 @@ namespace {
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 constexpr float kInf = std::numeric_limits<float>::infinity();
 
-std::uint32_t bits(float value) { return std::bit_cast<std::uint32_t>(value); }
+std::uint32_t bits(float value) {
+    return std::bit_cast<std::uint32_t>(value);
+}
 
 DepthPyramidDesc descFor(std::uint32_t width, std::uint32_t height, DepthConvention depth,
                          DepthPyramidChannels channels = DepthPyramidChannels::ClosestAndFarthest) {
@@ -31,11 +33,13 @@ DepthPyramidDesc descFor(std::uint32_t width, std::uint32_t height, DepthConvent
     return desc;
 }
 
-// Every value of every level: finite, in [0, 1], never -0. Returns the first offender.
+// Every value of every level: finite, in [0, 1], never -0 or denormal. Returns the first
+// offender.
 std::string firstNonFinite(const reference::Pyramid& pyramid) {
     for (std::size_t k = 0; k < pyramid.levels.size(); ++k)
         for (const float value : pyramid.levels[k].texels)
-            if (!std::isfinite(value) || value < 0.0f || value > 1.0f || bits(value) == 0x80000000u)
+            if (!std::isfinite(value) || value < 0.0f || value > 1.0f || bits(value) == 0x80000000u ||
+                (value != 0.0f && value < std::numeric_limits<float>::min()))
                 return "level " + std::to_string(k) + " holds " + std::to_string(value) + " (bits " +
                        std::to_string(bits(value)) + ")";
     return "";
@@ -71,7 +75,7 @@ TEST_CASE("each kind of bad depth gets its documented value", "[non-finite]") {
         CHECK(bits(p.closest(0, 4, 0)) == bits(1.0f)); // padding
         CHECK(bits(p.closest(1, 0, 0)) == bits(0.0f)); // -0.5 clamped to the near plane
         CHECK(bits(p.farthest(1, 0, 0)) == bits(1.0f));
-        CHECK(bits(p.closest(1, 1, 0)) == bits(0.0f)); // -0 stored as +0
+        CHECK(bits(p.closest(1, 1, 0)) == bits(0.0f));  // -0 stored as +0
         CHECK(bits(p.farthest(1, 1, 0)) == bits(1.0f)); // -Inf is far, not near
         CHECK(bits(p.closest(6, 0, 0)) == bits(0.0f));
         CHECK(bits(p.farthest(6, 0, 0)) == bits(1.0f));
@@ -100,17 +104,20 @@ TEST_CASE("each kind of bad depth gets its documented value", "[non-finite]") {
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }
 
-TEST_CASE("bad depths scattered over a multi-group image leave every level finite and exact", "[non-finite]") {
+TEST_CASE("bad depths scattered over a multi-group image leave every level finite and exact",
+          "[non-finite]") {
     // 300x200: 5x4 groups and 9 levels, so the last group's coarse levels see them too.
     const float bad[] = {kNaN, -kNaN, kInf, -kInf, -0.0f, -0.5f, 1.5f, 3e38f, -1e-30f};
     gpu::Context& context = test::testContext();
     std::uint32_t seed = 11;
     for (const auto depth : {DepthConvention::Standard, DepthConvention::Reversed})
-        for (const auto channels : {DepthPyramidChannels::Closest, DepthPyramidChannels::ClosestAndFarthest}) {
+        for (const auto channels :
+             {DepthPyramidChannels::Closest, DepthPyramidChannels::ClosestAndFarthest}) {
             const DepthPyramidDesc desc = descFor(300, 200, depth, channels);
             std::vector<float> input = test::structuredDepth(300, 200, depth, ++seed);
             std::mt19937 random(seed);
-            for (std::size_t k = 0; k < input.size() / 20; ++k) input[random() % input.size()] = bad[k % std::size(bad)];
+            for (std::size_t k = 0; k < input.size() / 20; ++k)
+                input[random() % input.size()] = bad[k % std::size(bad)];
             // A whole 64x64 tile of NaN and the corner pixel as -Inf.
             for (std::uint32_t y = 64; y < 128; ++y)
                 for (std::uint32_t x = 128; x < 192; ++x) input[y * 300 + x] = kNaN;
@@ -123,7 +130,7 @@ TEST_CASE("bad depths scattered over a multi-group image leave every level finit
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }
 
-TEST_CASE("an image of only NaN or only -Inf is far at every level", "[non-finite]") {
+TEST_CASE("an image of only NaN or only infinities is far at every level", "[non-finite]") {
     gpu::Context& context = test::testContext();
     for (const float fill : {kNaN, -kInf, kInf})
         for (const auto depth : {DepthConvention::Standard, DepthConvention::Reversed}) {
@@ -139,19 +146,26 @@ TEST_CASE("an image of only NaN or only -Inf is far at every level", "[non-finit
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }
 
-TEST_CASE("denormal depths are kept, negative ones clamped to +0", "[non-finite]") {
-    // A flushed denormal would break the contract: in reversed depth +0 is far (the closest
-    // channel loses it), in standard depth +0 is nearer (the farthest channel loses it).
-    // SPIR-V leaves denormal handling to the device unless DenormPreserve is requested.
+TEST_CASE("denormal depths are stored as +0, the smallest normal depth is kept", "[non-finite]") {
+    // Devices differ on denormals (NVIDIA flushes them in min/max), so the sanitization makes
+    // every value below the smallest normal float +0 and all devices agree bit for bit.
     gpu::Context& context = test::testContext();
+    const float smallestNormal = std::numeric_limits<float>::min();
     for (const auto depth : {DepthConvention::Standard, DepthConvention::Reversed}) {
         const DepthPyramidDesc desc = descFor(300, 200, depth);
         std::vector<float> input = test::structuredDepth(300, 200, depth, 3);
         for (std::size_t k = 0; k < input.size(); k += 97) input[k] = 1e-40f;
         for (std::size_t k = 5; k < input.size(); k += 89) input[k] = -1e-40f;
+        input[1] = smallestNormal;
         input.back() = 1e-45f; // the smallest denormal, in the corner
         test::PyramidRunner runner(context, desc);
-        test::checkPyramid(input, desc, runner.build(input));
+        const reference::Pyramid p = runner.build(input);
+        CHECK(bits(p.closest(0, 0, 0)) == bits(0.0f));
+        CHECK(bits(p.closest(0, 1, 0)) == bits(smallestNormal));
+        CHECK(bits(p.closest(0, 299, 199)) == bits(0.0f));
+        CHECK(bits(p.farthest(0, 299, 199)) == bits(0.0f));
+        CHECK(firstNonFinite(p) == "");
+        test::checkPyramid(input, desc, p);
     }
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }

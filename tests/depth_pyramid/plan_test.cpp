@@ -51,10 +51,18 @@ shaders::GLINT_DepthPyramidConstants constantsOf(const Pass& pass) {
 
 TEST_CASE("the layout pads level 0 to multiples of 64 and counts the full chain from it", "[layout]") {
     const LayoutCase cases[] = {
-        {1, 1, 64, 64, 7},          {1, 37, 64, 64, 7},         {53, 1, 64, 64, 7},
-        {7, 3, 64, 64, 7},          {7, 4, 64, 64, 7},          {64, 64, 64, 64, 7},
-        {65, 1, 128, 64, 8},        {128, 32, 128, 64, 8},      {1917, 1077, 1920, 1088, 11},
-        {1920, 1080, 1920, 1088, 11}, {3840, 2160, 3840, 2176, 12}, {16383, 5, 16384, 64, 15},
+        {1, 1, 64, 64, 7},
+        {1, 37, 64, 64, 7},
+        {53, 1, 64, 64, 7},
+        {7, 3, 64, 64, 7},
+        {7, 4, 64, 64, 7},
+        {64, 64, 64, 64, 7},
+        {65, 1, 128, 64, 8},
+        {128, 32, 128, 64, 8},
+        {1917, 1077, 1920, 1088, 11},
+        {1920, 1080, 1920, 1088, 11},
+        {3840, 2160, 3840, 2176, 12},
+        {16383, 5, 16384, 64, 15},
         {16384, 16384, 16384, 16384, 15},
     };
     for (const LayoutCase& c : cases) {
@@ -79,7 +87,8 @@ TEST_CASE("the plan's image is the padded level 0 with exactly the levels built"
     CHECK(image.height == 1088);
     CHECK(image.mipLevels == 11);
     CHECK(image.format == Format::R32Float);
-    CHECK(planFor(1920, 1080, 0, DepthPyramidChannels::ClosestAndFarthest).images[0].format == Format::RG32Float);
+    CHECK(planFor(1920, 1080, 0, DepthPyramidChannels::ClosestAndFarthest).images[0].format ==
+          Format::RG32Float);
     CHECK(planFor(1920, 1080, 5).images[0].mipLevels == 5);
     CHECK(planFor(1, 1, 0).images[0].mipLevels == 7);
 }
@@ -109,7 +118,8 @@ TEST_CASE("image and constants share one level count and describe the same layou
     // Defects 1 and 5 of the references: the shader built more levels than were allocated.
     for (const std::uint32_t levels : {0u, 1u, 3u, 7u, 8u, 11u}) {
         INFO("levelCount " << levels);
-        const EffectPlan plan = planFor(1917, 1077, levels, DepthPyramidChannels::Closest, DepthConvention::Reversed);
+        const EffectPlan plan =
+            planFor(1917, 1077, levels, DepthPyramidChannels::Closest, DepthConvention::Reversed);
         const auto constants = constantsOf(plan.passes[0]);
         const DirectDispatch grid = std::get<DirectDispatch>(plan.passes[0].dispatch);
         CHECK(constants.levelCount == plan.images[0].mipLevels);
@@ -125,37 +135,47 @@ TEST_CASE("image and constants share one level count and describe the same layou
     CHECK(constantsOf(planFor(8, 8, 0).passes[0]).farDepth == 1.0f);
 }
 
-TEST_CASE("the completion counter exists and is zeroed only when levels above 6 are built", "[plan]") {
-    for (const std::uint32_t levels : {8u, 11u, 0u}) {
+TEST_CASE("the level-0 copy is on by default and can be left out", "[plan]") {
+    CHECK(constantsOf(planFor(300, 200, 0).passes[0]).writeLevel0 == 1u);
+    DepthPyramidDesc desc;
+    desc.size = {300, 200};
+    desc.copyLevel0 = false;
+    EffectPlan plan;
+    REQUIRE(planDepthPyramid(desc, plan, nullptr) == Result::Ok);
+    CHECK(constantsOf(plan.passes[0]).writeLevel0 == 0u);
+    // Level 0 is still allocated at W0 x H0, so level k keeps its size W0 >> k.
+    CHECK(plan.images[0].width == 320);
+    CHECK(plan.images[0].height == 256);
+    CHECK(plan.images[0].mipLevels == 9);
+}
+
+TEST_CASE("the completion counter is always bound and zeroed only when levels above 6 are built", "[plan]") {
+    // The entry binds the counter in every permutation, so the plan always lists it; only the
+    // last-group pattern (levelCount > 7) uses it, and only then does the plan clear it.
+    for (const std::uint32_t levels : {1u, 3u, 7u, 8u, 11u, 0u}) {
         INFO("levelCount " << levels);
         const EffectPlan plan = planFor(1920, 1080, levels);
         const BufferDesc* counter = findBuffer(plan, "depth_pyramid_counter");
         REQUIRE(counter != nullptr);
         CHECK(counter->size >= 4);
-        CHECK_FALSE(counter->indirectArgs);
-        const auto& zeroed = plan.passes[0].zeroBuffers;
-        CHECK(std::find(zeroed.begin(), zeroed.end(), "depth_pyramid_counter") != zeroed.end());
         bool counterIsAtomic = false;
         for (const ResourceUse& use : plan.passes[0].uses)
             if (use.resource == "depth_pyramid_counter") counterIsAtomic = use.access == Access::ReadWrite;
         CHECK(counterIsAtomic);
+        const auto& zeroed = plan.passes[0].zeroBuffers;
+        const bool usesCounter = levels == 0 || levels > 7;
+        CHECK((std::find(zeroed.begin(), zeroed.end(), "depth_pyramid_counter") != zeroed.end()) ==
+              usesCounter);
     }
-    for (const std::uint32_t levels : {1u, 3u, 7u}) {
-        INFO("levelCount " << levels);
-        const EffectPlan plan = planFor(1920, 1080, levels);
-        CHECK(plan.passes[0].zeroBuffers.empty());
-        CHECK(findBuffer(plan, "depth_pyramid_counter") == nullptr);
-    }
-    // A 64x64 level 0 has exactly 7 levels: no coarse levels, no counter.
-    const EffectPlan small = planFor(7, 3, 0);
-    CHECK(small.passes[0].zeroBuffers.empty());
-    CHECK(findBuffer(small, "depth_pyramid_counter") == nullptr);
+    // A 64x64 level 0 has exactly 7 levels: no coarse levels, nothing to clear.
+    CHECK(planFor(7, 3, 0).passes[0].zeroBuffers.empty());
 }
 
 TEST_CASE("each convention and channel choice has its own embedded pipeline", "[plan]") {
     std::set<std::string> pipelines;
     for (const auto depth : {DepthConvention::Standard, DepthConvention::Reversed})
-        for (const auto channels : {DepthPyramidChannels::Closest, DepthPyramidChannels::ClosestAndFarthest}) {
+        for (const auto channels :
+             {DepthPyramidChannels::Closest, DepthPyramidChannels::ClosestAndFarthest}) {
             const std::string name = planFor(100, 100, 0, channels, depth).passes[0].pipeline;
             INFO(name);
             CHECK_FALSE(core::findShader(name).empty());
@@ -168,8 +188,8 @@ TEST_CASE("planDepthPyramid rejects sizes out of range and more levels than the 
     DepthPyramidDesc desc;
     EffectPlan plan;
     std::string error;
-    for (const Extent2D size : {Extent2D{0, 4}, Extent2D{4, 0}, Extent2D{16385, 4}, Extent2D{4, 16385},
-                                Extent2D{16385, 16385}}) {
+    for (const Extent2D size :
+         {Extent2D{0, 4}, Extent2D{4, 0}, Extent2D{16385, 4}, Extent2D{4, 16385}, Extent2D{16385, 16385}}) {
         INFO(size.width << "x" << size.height);
         desc.size = size;
         error.clear();

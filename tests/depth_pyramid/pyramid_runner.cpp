@@ -15,7 +15,8 @@ constexpr const char* kPyramid = "depth_pyramid";
 constexpr const char* kCounter = "depth_pyramid_counter";
 } // namespace
 
-PyramidRunner::PyramidRunner(gpu::Context& context, const DepthPyramidDesc& desc) : context_(context), desc_(desc) {
+PyramidRunner::PyramidRunner(gpu::Context& context, const DepthPyramidDesc& desc)
+    : context_(context), desc_(desc) {
     std::string error;
     INFO(error);
     REQUIRE(planDepthPyramid(desc, plan_, &error) == Result::Ok);
@@ -24,11 +25,13 @@ PyramidRunner::PyramidRunner(gpu::Context& context, const DepthPyramidDesc& desc
     depth_ = vk::createImage2D(device, desc.size.width, desc.size.height, VK_FORMAT_R32_SFLOAT);
     for (const ImageDesc& image : plan_.images) {
         REQUIRE(image.name == kPyramid);
-        pyramid_ = vk::createImage2D(device, image.width, image.height, vk::toVkFormat(image.format), image.mipLevels);
+        pyramid_ = vk::createImage2D(device, image.width, image.height, vk::toVkFormat(image.format),
+                                     image.mipLevels);
     }
     for (const BufferDesc& buffer : plan_.buffers) {
         REQUIRE(buffer.name == kCounter);
-        counter_ = vk::createBuffer(device, buffer.size, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::DeviceLocal);
+        counter_ = vk::createBuffer(device, buffer.size, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                    vk::MemoryUse::DeviceLocal);
     }
     REQUIRE(pyramid_.image != VK_NULL_HANDLE);
 }
@@ -41,7 +44,8 @@ PyramidRunner::~PyramidRunner() {
     vk::destroyImage(device, depth_);
 }
 
-reference::Pyramid PyramidRunner::build(const std::vector<float>& depth, std::optional<std::uint32_t> counterBefore) {
+reference::Pyramid PyramidRunner::build(const std::vector<float>& depth,
+                                        std::optional<std::uint32_t> counterBefore) {
     REQUIRE(depth.size() == static_cast<std::size_t>(desc_.size.width) * desc_.size.height);
     gpu::uploadImage(context_, depth_, depth, 1);
     VkClearColorValue nan{};
@@ -56,7 +60,8 @@ reference::Pyramid PyramidRunner::build(const std::vector<float>& depth, std::op
     vk::ResourceTable resources;
     resources.images = {{"depth", &depth_}, {kPyramid, &pyramid_}};
     if (hasCounter()) resources.buffers = {{kCounter, &counter_}};
-    gpu::submitAndWait(context_, [&](VkCommandBuffer cmd) { vk::recordPlan(executor_, cmd, plan_, resources); });
+    gpu::submitAndWait(context_,
+                       [&](VkCommandBuffer cmd) { vk::recordPlan(executor_, cmd, plan_, resources); });
     vk::resetExecutor(executor_);
 
     reference::Pyramid pyramid;
@@ -78,10 +83,11 @@ std::uint32_t PyramidRunner::readCounter() const {
     return value;
 }
 
-void checkPyramid(const std::vector<float>& depth, const DepthPyramidDesc& desc, const reference::Pyramid& actual) {
+void checkPyramid(const std::vector<float>& depth, const DepthPyramidDesc& desc,
+                  const reference::Pyramid& actual) {
     const auto& size = desc.size;
-    const reference::Pyramid expected =
-        reference::buildDepthPyramid(depth, size.width, size.height, desc.depth, desc.channels, desc.levelCount);
+    const reference::Pyramid expected = reference::buildDepthPyramid(
+        depth, size.width, size.height, desc.depth, desc.channels, desc.levelCount);
     INFO(describe(desc));
     CHECK(reference::compareBits(expected, actual) == "");
     CHECK(reference::checkDepthPyramid(depth, size.width, size.height, desc.depth,
@@ -91,8 +97,8 @@ void checkPyramid(const std::vector<float>& depth, const DepthPyramidDesc& desc,
 std::string describe(const DepthPyramidDesc& desc) {
     return std::to_string(desc.size.width) + "x" + std::to_string(desc.size.height) +
            (desc.depth == DepthConvention::Reversed ? " reversed" : " standard") +
-           (desc.channels == DepthPyramidChannels::Closest ? " closest" : " closest+farthest") + " levelCount " +
-           std::to_string(desc.levelCount);
+           (desc.channels == DepthPyramidChannels::Closest ? " closest" : " closest+farthest") +
+           " levelCount " + std::to_string(desc.levelCount);
 }
 
 } // namespace glint::test

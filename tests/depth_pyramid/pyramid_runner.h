@@ -18,7 +18,7 @@
 namespace glint::test {
 
 class PyramidRunner {
-public:
+  public:
     PyramidRunner(gpu::Context& context, const DepthPyramidDesc& desc);
     ~PyramidRunner();
     PyramidRunner(const PyramidRunner&) = delete;
@@ -28,13 +28,14 @@ public:
     // that a texel the pass forgets cannot pass a check, optionally writes `counterBefore`
     // into the completion counter (a stale count left by an aborted frame), records the plan,
     // waits, and reads back every level.
-    reference::Pyramid build(const std::vector<float>& depth, std::optional<std::uint32_t> counterBefore = {});
+    reference::Pyramid build(const std::vector<float>& depth,
+                             std::optional<std::uint32_t> counterBefore = {});
 
     bool hasCounter() const { return counter_.buffer != VK_NULL_HANDLE; }
     std::uint32_t readCounter() const; // requires hasCounter()
     const EffectPlan& plan() const { return plan_; }
 
-private:
+  private:
     gpu::Context& context_;
     DepthPyramidDesc desc_;
     EffectPlan plan_;
@@ -47,7 +48,8 @@ private:
 // Checks a pyramid read back from the device: bit for bit against the CPU reference for the
 // same desc and input, and against the contract with the independent property checker.
 // Both reports go into the assertion message.
-void checkPyramid(const std::vector<float>& depth, const DepthPyramidDesc& desc, const reference::Pyramid& actual);
+void checkPyramid(const std::vector<float>& depth, const DepthPyramidDesc& desc,
+                  const reference::Pyramid& actual);
 
 // "1920x1080 reversed closest+farthest levels 0", for INFO.
 std::string describe(const DepthPyramidDesc& desc);

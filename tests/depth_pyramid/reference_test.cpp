@@ -18,7 +18,9 @@ namespace {
 constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
 constexpr float kInf = std::numeric_limits<float>::infinity();
 
-std::uint32_t bits(float value) { return std::bit_cast<std::uint32_t>(value); }
+std::uint32_t bits(float value) {
+    return std::bit_cast<std::uint32_t>(value);
+}
 
 void setClosest(Pyramid& pyramid, std::uint32_t level, std::uint32_t x, std::uint32_t y, float value) {
     auto& l = pyramid.levels[level];
@@ -32,9 +34,10 @@ void setFarthest(Pyramid& pyramid, std::uint32_t level, std::uint32_t x, std::ui
 
 // Sprinkles every kind of non-finite and out-of-range value over an input.
 void sprinkleBadValues(std::vector<float>& depth, std::uint32_t seed) {
-    const float bad[] = {kNaN, -kNaN, kInf, -kInf, -0.0f, -0.5f, 1.5f, 1e30f, -1e-30f};
+    const float bad[] = {kNaN, -kNaN, kInf, -kInf, -0.0f, -0.5f, 1.5f, 1e30f, -1e-30f, 1e-40f, -1e-40f};
     std::mt19937 random(seed);
-    for (std::size_t k = 0; k < depth.size() / 50 + 1; ++k) depth[random() % depth.size()] = bad[k % std::size(bad)];
+    for (std::size_t k = 0; k < depth.size() / 50 + 1; ++k)
+        depth[random() % depth.size()] = bad[k % std::size(bad)];
 }
 
 } // namespace
@@ -51,7 +54,13 @@ TEST_CASE("sanitization: non-finite is far, the rest is clamped to [0, 1], -0 is
         CHECK(bits(reference::sanitizeDepth(-0.5f, convention)) == bits(0.0f));
         CHECK(bits(reference::sanitizeDepth(1.5f, convention)) == bits(1.0f));
         CHECK(bits(reference::sanitizeDepth(0.375f, convention)) == bits(0.375f));
-        CHECK(bits(reference::sanitizeDepth(1e-40f, convention)) == bits(1e-40f)); // denormals stay
+        // Denormals become +0 (devices that flush them and devices that keep them agree);
+        // the smallest normal float is kept.
+        CHECK(bits(reference::sanitizeDepth(1e-40f, convention)) == bits(0.0f));
+        CHECK(bits(reference::sanitizeDepth(1e-45f, convention)) == bits(0.0f));
+        CHECK(bits(reference::sanitizeDepth(-1e-40f, convention)) == bits(0.0f));
+        const float smallestNormal = std::numeric_limits<float>::min();
+        CHECK(bits(reference::sanitizeDepth(smallestNormal, convention)) == bits(smallestNormal));
     }
 }
 
@@ -92,8 +101,8 @@ TEST_CASE("reference: from level 7 the last row absorbs the leftover odd row", "
     std::vector<float> depth(64 * 192, 0.5f);
     depth[150 * 64 + 10] = 0.125f;
     depth[170 * 64 + 20] = 0.875f;
-    const Pyramid p =
-        reference::buildDepthPyramid(depth, 64, 192, DepthConvention::Standard, DepthPyramidChannels::ClosestAndFarthest, 0);
+    const Pyramid p = reference::buildDepthPyramid(depth, 64, 192, DepthConvention::Standard,
+                                                   DepthPyramidChannels::ClosestAndFarthest, 0);
     REQUIRE(p.levels.size() == 8);
     REQUIRE(p.levels[6].height == 3);
     REQUIRE(p.levels[7].width == 1);
@@ -106,28 +115,33 @@ TEST_CASE("reference: from level 7 the last row absorbs the leftover odd row", "
     Pyramid dropped = p;
     setClosest(dropped, 7, 0, 0, 0.5f);
     setFarthest(dropped, 7, 0, 0, 0.5f);
-    const std::string report = reference::checkDepthPyramid(depth, 64, 192, DepthConvention::Standard, 8, dropped);
+    const std::string report =
+        reference::checkDepthPyramid(depth, 64, 192, DepthConvention::Standard, 8, dropped);
     CHECK_THAT(report, Catch::Contains("level 7 texel (0, 0) closest"));
     CHECK_THAT(report, Catch::Contains("level 7 texel (0, 0) farthest"));
 }
 
 TEST_CASE("reference and property checker agree on random inputs", "[reference]") {
-    const std::uint32_t sizes[][2] = {{1, 1},   {1, 37},  {53, 1},  {7, 3},     {7, 4},    {64, 64},
+    const std::uint32_t sizes[][2] = {{1, 1},   {1, 37},   {53, 1},    {7, 3},      {7, 4},      {64, 64},
                                       {65, 65}, {128, 32}, {200, 150}, {130, 1000}, {1000, 130}, {333, 777}};
     std::uint32_t seed = 1;
     for (const auto& size : sizes)
         for (const auto convention : {DepthConvention::Standard, DepthConvention::Reversed})
-            for (const auto channels : {DepthPyramidChannels::Closest, DepthPyramidChannels::ClosestAndFarthest})
+            for (const auto channels :
+                 {DepthPyramidChannels::Closest, DepthPyramidChannels::ClosestAndFarthest})
                 for (const bool bad : {false, true}) {
                     const std::uint32_t w = size[0], h = size[1];
-                    INFO(w << "x" << h << (convention == DepthConvention::Reversed ? " reversed" : " standard")
+                    INFO(w << "x" << h
+                           << (convention == DepthConvention::Reversed ? " reversed" : " standard")
                            << (channels == DepthPyramidChannels::Closest ? " closest" : " closest+farthest")
                            << (bad ? " with non-finite values" : ""));
                     std::vector<float> depth = test::structuredDepth(w, h, convention, ++seed);
                     if (bad) sprinkleBadValues(depth, seed);
-                    const std::uint32_t full = reference::fullLevelCount(reference::paddedExtent(w), reference::paddedExtent(h));
+                    const std::uint32_t full =
+                        reference::fullLevelCount(reference::paddedExtent(w), reference::paddedExtent(h));
                     for (const std::uint32_t levels : {full, std::min(full, 3u)}) {
-                        const Pyramid p = reference::buildDepthPyramid(depth, w, h, convention, channels, levels);
+                        const Pyramid p =
+                            reference::buildDepthPyramid(depth, w, h, convention, channels, levels);
                         CHECK(p.channels == (channels == DepthPyramidChannels::Closest ? 1u : 2u));
                         CHECK(reference::checkDepthPyramid(depth, w, h, convention, levels, p) == "");
                     }
@@ -138,10 +152,13 @@ TEST_CASE("the property checker rejects broken pyramids", "[reference]") {
     const std::uint32_t w = 1000, h = 700; // level 6 is 16x11, level 7 is 8x5: row 10 is a leftover
     const auto convention = DepthConvention::Standard;
     const std::vector<float> depth = test::structuredDepth(w, h, convention, 77);
-    const Pyramid good = reference::buildDepthPyramid(depth, w, h, convention, DepthPyramidChannels::ClosestAndFarthest, 0);
+    const Pyramid good =
+        reference::buildDepthPyramid(depth, w, h, convention, DepthPyramidChannels::ClosestAndFarthest, 0);
     REQUIRE(good.levels.size() == 11);
     REQUIRE(reference::checkDepthPyramid(depth, w, h, convention, 11, good).empty());
-    auto check = [&](const Pyramid& p) { return reference::checkDepthPyramid(depth, w, h, convention, 11, p); };
+    auto check = [&](const Pyramid& p) {
+        return reference::checkDepthPyramid(depth, w, h, convention, 11, p);
+    };
 
     SECTION("the leftover row dropped at level 7 (SPD's 'last row omitted')") {
         // The corner pixel (999, 699) holds the closest depth of the image, in level 6 row 10.
@@ -149,25 +166,30 @@ TEST_CASE("the property checker rejects broken pyramids", "[reference]") {
         const std::uint32_t i = 7, j = 4;
         float nearest = 1.0f;
         for (std::uint32_t y = 2 * j; y <= 2 * j + 1; ++y)
-            for (std::uint32_t x = 2 * i; x <= 2 * i + 1; ++x) nearest = std::min(nearest, p.closest(6, x, y));
+            for (std::uint32_t x = 2 * i; x <= 2 * i + 1; ++x)
+                nearest = std::min(nearest, p.closest(6, x, y));
         REQUIRE(nearest != good.closest(7, i, j));
         setClosest(p, 7, i, j, nearest);
-        CHECK_THAT(check(p), Catch::Contains("level 7 texel (7, 4) closest") && Catch::Contains("which is closer"));
+        CHECK_THAT(check(p),
+                   Catch::Contains("level 7 texel (7, 4) closest") && Catch::Contains("which is closer"));
     }
     SECTION("a closest value one step too far") {
         Pyramid p = good;
         setClosest(p, 4, 3, 5, std::nextafter(good.closest(4, 3, 5), 2.0f));
-        CHECK_THAT(check(p), Catch::Contains("level 4 texel (3, 5) closest") && Catch::Contains("which is closer"));
+        CHECK_THAT(check(p),
+                   Catch::Contains("level 4 texel (3, 5) closest") && Catch::Contains("which is closer"));
     }
     SECTION("a closest value one step closer than any pixel") {
         Pyramid p = good;
         setClosest(p, 2, 10, 9, std::nextafter(good.closest(2, 10, 9), -1.0f));
-        CHECK_THAT(check(p), Catch::Contains("level 2 texel (10, 9) closest") && Catch::Contains("equals no sanitized"));
+        CHECK_THAT(check(p), Catch::Contains("level 2 texel (10, 9) closest") &&
+                                 Catch::Contains("equals no sanitized"));
     }
     SECTION("a farthest value one step too close") {
         Pyramid p = good;
         setFarthest(p, 9, 1, 0, std::nextafter(good.farthest(9, 1, 0), -1.0f));
-        CHECK_THAT(check(p), Catch::Contains("level 9 texel (1, 0) farthest") && Catch::Contains("which is farther"));
+        CHECK_THAT(check(p),
+                   Catch::Contains("level 9 texel (1, 0) farthest") && Catch::Contains("which is farther"));
     }
     SECTION("far in a footprint without padding") {
         Pyramid p = good;
@@ -199,8 +221,8 @@ TEST_CASE("the property checker rejects broken pyramids", "[reference]") {
 
 TEST_CASE("compareBits reports every differing level and the first texels", "[reference]") {
     const std::vector<float> depth = test::structuredDepth(100, 100, DepthConvention::Reversed, 5);
-    const Pyramid expected =
-        reference::buildDepthPyramid(depth, 100, 100, DepthConvention::Reversed, DepthPyramidChannels::Closest, 0);
+    const Pyramid expected = reference::buildDepthPyramid(depth, 100, 100, DepthConvention::Reversed,
+                                                          DepthPyramidChannels::Closest, 0);
     Pyramid actual = expected;
     CHECK(reference::compareBits(expected, actual).empty());
     setClosest(actual, 1, 3, 2, std::nextafter(expected.closest(1, 3, 2), 2.0f));

@@ -4,6 +4,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <sstream>
 
 namespace glint::reference {
@@ -12,7 +13,9 @@ namespace {
 
 constexpr std::uint32_t kTileLevels = 7; // levels 0..6 are plain 2x2 reductions of a 64x64 tile
 
-std::uint32_t bitsOf(float value) { return std::bit_cast<std::uint32_t>(value); }
+std::uint32_t bitsOf(float value) {
+    return std::bit_cast<std::uint32_t>(value);
+}
 
 std::string describe(float value) {
     char text[64];
@@ -22,16 +25,22 @@ std::string describe(float value) {
 
 } // namespace
 
-float farDepth(DepthConvention convention) { return convention == DepthConvention::Standard ? 1.0f : 0.0f; }
+float farDepth(DepthConvention convention) {
+    return convention == DepthConvention::Standard ? 1.0f : 0.0f;
+}
 
 float sanitizeDepth(float depth, DepthConvention convention) {
     if (!std::isfinite(depth)) return farDepth(convention);
-    if (depth <= 0.0f) return 0.0f; // also turns -0 into +0
+    // Below the smallest normal float (denormals, -0, negatives) is +0: devices that flush
+    // denormals and devices that keep them then agree bit for bit.
+    if (depth < std::numeric_limits<float>::min()) return 0.0f;
     if (depth > 1.0f) return 1.0f;
     return depth;
 }
 
-std::uint32_t paddedExtent(std::uint32_t extent) { return (extent + 63u) / 64u * 64u; }
+std::uint32_t paddedExtent(std::uint32_t extent) {
+    return (extent + 63u) / 64u * 64u;
+}
 
 std::uint32_t fullLevelCount(std::uint32_t level0Width, std::uint32_t level0Height) {
     std::uint32_t largest = std::max(level0Width, level0Height);
@@ -44,7 +53,8 @@ std::uint32_t fullLevelCount(std::uint32_t level0Width, std::uint32_t level0Heig
 }
 
 Pyramid buildDepthPyramid(const std::vector<float>& depth, std::uint32_t width, std::uint32_t height,
-                          DepthConvention convention, DepthPyramidChannels channels, std::uint32_t requestedLevels) {
+                          DepthConvention convention, DepthPyramidChannels channels,
+                          std::uint32_t requestedLevels) {
     const std::uint32_t w0 = paddedExtent(width);
     const std::uint32_t h0 = paddedExtent(height);
     const std::uint32_t levelCount = requestedLevels == 0 ? fullLevelCount(w0, h0) : requestedLevels;
@@ -65,7 +75,8 @@ Pyramid buildDepthPyramid(const std::vector<float>& depth, std::uint32_t width, 
     for (std::uint32_t y = 0; y < height; ++y)
         for (std::uint32_t x = 0; x < width; ++x) {
             const float d = sanitizeDepth(depth[static_cast<std::size_t>(y) * width + x], convention);
-            for (std::uint32_t ch = 0; ch < c; ++ch) base.texels[(static_cast<std::size_t>(y) * w0 + x) * c + ch] = d;
+            for (std::uint32_t ch = 0; ch < c; ++ch)
+                base.texels[(static_cast<std::size_t>(y) * w0 + x) * c + ch] = d;
         }
 
     for (std::uint32_t k = 1; k < levelCount; ++k) {
@@ -78,10 +89,12 @@ Pyramid buildDepthPyramid(const std::vector<float>& depth, std::uint32_t width, 
         // block; from level 7 on the last column/row also takes the previous level's leftover.
         for (std::uint32_t j = 0; j < out.height; ++j) {
             const std::uint32_t y0 = 2 * j;
-            const std::uint32_t y1 = j == out.height - 1 ? prev.height - 1 : std::min(2 * j + 1, prev.height - 1);
+            const std::uint32_t y1 =
+                j == out.height - 1 ? prev.height - 1 : std::min(2 * j + 1, prev.height - 1);
             for (std::uint32_t i = 0; i < out.width; ++i) {
                 const std::uint32_t x0 = 2 * i;
-                const std::uint32_t x1 = i == out.width - 1 ? prev.width - 1 : std::min(2 * i + 1, prev.width - 1);
+                const std::uint32_t x1 =
+                    i == out.width - 1 ? prev.width - 1 : std::min(2 * i + 1, prev.width - 1);
                 float nearest = far;
                 float farthest = reversed ? 1.0f : 0.0f; // the near plane: anything is at least as far
                 for (std::uint32_t y = y0; y <= y1; ++y)
@@ -100,8 +113,8 @@ Pyramid buildDepthPyramid(const std::vector<float>& depth, std::uint32_t width, 
 }
 
 std::string checkDepthPyramid(const std::vector<float>& depth, std::uint32_t width, std::uint32_t height,
-                              DepthConvention convention, std::uint32_t expectedLevels, const Pyramid& pyramid,
-                              std::size_t maxFailures) {
+                              DepthConvention convention, std::uint32_t expectedLevels,
+                              const Pyramid& pyramid, std::size_t maxFailures) {
     std::ostringstream report;
     std::size_t failures = 0;
     auto fail = [&]() -> std::ostream& {
@@ -123,14 +136,15 @@ std::string checkDepthPyramid(const std::vector<float>& depth, std::uint32_t wid
         const PyramidLevel& level = pyramid.levels[k];
         if (level.width != lw || level.height != lh ||
             level.texels.size() != static_cast<std::size_t>(lw) * lh * pyramid.channels) {
-            fail() << "level " << k << " is " << level.width << "x" << level.height << " with " << level.texels.size()
-                   << " floats, expected " << lw << "x" << lh << "\n";
+            fail() << "level " << k << " is " << level.width << "x" << level.height << " with "
+                   << level.texels.size() << " floats, expected " << lw << "x" << lh << "\n";
             return report.str();
         }
     }
 
     // The sanitization rule, stated independently of sanitizeDepth: anything that is not a
-    // finite number is far; the rest is clamped to [0, 1] with both zeros stored as +0.
+    // finite number is far; the rest is clamped to [0, 1], and every value without a normal
+    // exponent (both zeros, denormals) is stored as +0.
     const bool reversed = convention == DepthConvention::Reversed;
     const float far = reversed ? 0.0f : 1.0f;
     std::vector<float> pixels(static_cast<std::size_t>(width) * height);
@@ -139,7 +153,7 @@ std::string checkDepthPyramid(const std::vector<float>& depth, std::uint32_t wid
         const bool nonFinite = (bits & 0x7F800000u) == 0x7F800000u;
         float v = nonFinite ? far : depth[p];
         v = v < 0.0f ? 0.0f : (v > 1.0f ? 1.0f : v);
-        if (v == 0.0f) v = 0.0f;
+        if ((bitsOf(v) & 0x7F800000u) == 0) v = 0.0f;
         pixels[p] = v;
     }
     // true when a is at least as close as b
@@ -149,7 +163,8 @@ std::string checkDepthPyramid(const std::vector<float>& depth, std::uint32_t wid
     std::vector<std::uint32_t> colStart, colEnd, rowStart, rowEnd;
     for (std::uint32_t k = 0; k < expectedLevels && failures < maxFailures; ++k) {
         const PyramidLevel& level = pyramid.levels[k];
-        auto nextRanges = [k](std::uint32_t count, std::vector<std::uint32_t>& start, std::vector<std::uint32_t>& end) {
+        auto nextRanges = [k](std::uint32_t count, std::vector<std::uint32_t>& start,
+                              std::vector<std::uint32_t>& end) {
             std::vector<std::uint32_t> s(count), e(count);
             for (std::uint32_t i = 0; i < count; ++i) {
                 if (k < kTileLevels) {
@@ -195,17 +210,19 @@ std::string checkDepthPyramid(const std::vector<float>& depth, std::uint32_t wid
                     const char* name = ch == 0 ? "closest" : "farthest";
                     auto where = [&]() -> std::ostream& {
                         return fail() << "level " << k << " texel (" << i << ", " << j << ") " << name << " "
-                                      << describe(value) << ", footprint [" << x0 << ", " << x1 << ") x [" << y0
-                                      << ", " << y1 << ")" << (padding ? " with padding" : "") << ": ";
+                                      << describe(value) << ", footprint [" << x0 << ", " << x1 << ") x ["
+                                      << y0 << ", " << y1 << ")" << (padding ? " with padding" : "") << ": ";
                     };
-                    if (!std::isfinite(value) || value < 0.0f || value > 1.0f || bitsOf(value) == 0x80000000u) {
+                    if (!std::isfinite(value) || value < 0.0f || value > 1.0f ||
+                        bitsOf(value) == 0x80000000u) {
                         where() << "not a finite depth in [0, 1] (or -0)\n";
                         continue;
                     }
                     // Bound: at least as close (closest) / as far (farthest) as every pixel,
                     // i.e. as the footprint's extreme pixel in that direction.
                     const float extreme = ch == 0 ? closestPixel : farthestPixel;
-                    const bool bounds = !any || (ch == 0 ? atLeastAsClose(value, extreme) : atLeastAsClose(extreme, value));
+                    const bool bounds =
+                        !any || (ch == 0 ? atLeastAsClose(value, extreme) : atLeastAsClose(extreme, value));
                     if (!bounds) {
                         where() << "a pixel holds " << describe(extreme) << ", which is "
                                 << (ch == 0 ? "closer" : "farther") << "\n";
@@ -229,8 +246,8 @@ std::string checkDepthPyramid(const std::vector<float>& depth, std::uint32_t wid
 std::string compareBits(const Pyramid& expected, const Pyramid& actual, std::size_t maxFailures) {
     std::ostringstream report;
     if (expected.channels != actual.channels || expected.levels.size() != actual.levels.size()) {
-        report << "shape differs: " << actual.levels.size() << " levels x " << actual.channels << " channels, expected "
-               << expected.levels.size() << " x " << expected.channels << "\n";
+        report << "shape differs: " << actual.levels.size() << " levels x " << actual.channels
+               << " channels, expected " << expected.levels.size() << " x " << expected.channels << "\n";
         return report.str();
     }
     std::size_t failures = 0;
@@ -250,8 +267,8 @@ std::string compareBits(const Pyramid& expected, const Pyramid& actual, std::siz
             if (failures++ < maxFailures) {
                 const std::size_t texel = t / expected.channels;
                 report << "level " << k << " texel (" << texel % e.width << ", " << texel / e.width << ") "
-                       << (t % expected.channels == 0 ? "closest" : "farthest") << ": got " << describe(a.texels[t])
-                       << ", expected " << describe(e.texels[t]) << "\n";
+                       << (t % expected.channels == 0 ? "closest" : "farthest") << ": got "
+                       << describe(a.texels[t]) << ", expected " << describe(e.texels[t]) << "\n";
             }
         }
         if (levelMismatches) report << "level " << k << ": " << levelMismatches << " mismatching values\n";

@@ -40,7 +40,7 @@ struct Pyramid {
 // The far plane's device depth: 1 for standard depth, 0 for reversed.
 float farDepth(DepthConvention convention);
 
-// Non-finite (NaN, +-Inf) -> far; clamp to [0, 1]; -0 -> +0.
+// Non-finite (NaN, +-Inf) -> far; clamp to [0, 1]; -0 and denormals -> +0.
 float sanitizeDepth(float depth, DepthConvention convention);
 
 // (W, H) rounded up to multiples of 64.
@@ -51,7 +51,8 @@ std::uint32_t fullLevelCount(std::uint32_t level0Width, std::uint32_t level0Heig
 
 // requestedLevels == 0 means the full chain.
 Pyramid buildDepthPyramid(const std::vector<float>& depth, std::uint32_t width, std::uint32_t height,
-                          DepthConvention convention, DepthPyramidChannels channels, std::uint32_t requestedLevels);
+                          DepthConvention convention, DepthPyramidChannels channels,
+                          std::uint32_t requestedLevels);
 
 // Checks `pyramid` against the contract by brute force, without using buildDepthPyramid:
 //   - level count and level sizes (W0 x H0, then max(1, W0 >> k) x max(1, H0 >> k));
@@ -67,8 +68,8 @@ Pyramid buildDepthPyramid(const std::vector<float>& depth, std::uint32_t width, 
 // Returns "" when the pyramid obeys the contract, else a description of the first
 // `maxFailures` violations.
 std::string checkDepthPyramid(const std::vector<float>& depth, std::uint32_t width, std::uint32_t height,
-                              DepthConvention convention, std::uint32_t expectedLevels, const Pyramid& pyramid,
-                              std::size_t maxFailures = 8);
+                              DepthConvention convention, std::uint32_t expectedLevels,
+                              const Pyramid& pyramid, std::size_t maxFailures = 8);
 
 // The first `maxFailures` texels (level, position, channel, both values as bits) where
 // `actual` differs from `expected` bit for bit, or where the shapes differ; "" when identical.

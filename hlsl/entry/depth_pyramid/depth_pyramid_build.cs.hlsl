@@ -15,10 +15,17 @@
 [[vk::binding(2, 0)]] GLINT_IMAGE_FORMAT(r32f) globallycoherent RWTexture2D<float> g_glint_pyramid[GLINT_DEPTH_PYRAMID_MAX_LEVELS];
 #endif
 [[vk::binding(3, 0)]] globallycoherent RWStructuredBuffer<uint> g_glint_counter;
+// Gather ignores filtering; a nearest sampler keeps formats without linear filtering legal.
+[[vk::binding(4, 0)]] SamplerState g_glint_point_clamp;
 
-float GLINT_DEPTH_PYRAMID_LoadDepth(int2 pixel)
+float4 GLINT_DEPTH_PYRAMID_GatherDepth(int2 pixel)
 {
-    return g_glint_depth.Load(int3(pixel, 0));
+    // The sample point is the corner shared by the four pixels, so Gather returns exactly
+    // them; its component order is (0,1), (1,1), (1,0), (0,0) from the top-left.
+    float width, height;
+    g_glint_depth.GetDimensions(width, height);
+    float2 uv = (float2(pixel) + 1.0) / float2(width, height);
+    return g_glint_depth.GatherRed(g_glint_point_clamp, uv).wzxy;
 }
 
 float2 GLINT_DEPTH_PYRAMID_Reduce(float2 a, float2 b)
@@ -65,5 +72,6 @@ void GLINT_DEPTH_PYRAMID_ResetCounter()
 [numthreads(256, 1, 1)] void main(uint3 groupId : SV_GroupID, uint groupIndex : SV_GroupIndex)
 {
     GLINT_DEPTH_PYRAMID_Build(groupId.xy, groupIndex, g_glint_constants.inputSize, g_glint_constants.level0Size,
-                              g_glint_constants.levelCount, g_glint_constants.groupCount, g_glint_constants.farDepth);
+                              g_glint_constants.levelCount, g_glint_constants.groupCount, g_glint_constants.farDepth,
+                              g_glint_constants.writeLevel0 != 0);
 }

@@ -3,9 +3,12 @@
 //
 // Integration: define these callbacks before or after including this header.
 //
-//   float  GLINT_DEPTH_PYRAMID_LoadDepth(int2 pixel);
-//       Device depth of the input at pixel, 0 <= pixel < inputSize. Any value; non-finite
-//       and out-of-range values are sanitized here.
+//   float4 GLINT_DEPTH_PYRAMID_GatherDepth(int2 pixel);
+//       Device depths of the 2x2 input block whose top-left pixel is `pixel`, in the order
+//       (pixel, pixel + (1, 0), pixel + (0, 1), pixel + (1, 1)). Pixels outside the input may
+//       return anything (they are replaced by far here); any value is allowed, non-finite and
+//       out-of-range ones are sanitized here. A Gather with a clamp-to-edge sampler at
+//       (pixel + 1) / inputSize, swizzled .wzxy, implements it in one fetch.
 //   float2 GLINT_DEPTH_PYRAMID_Reduce(float2 a, float2 b);
 //       Combines two (closest, farthest) pairs: (min, max) for standard depth, (max, min)
 //       for reversed depth. Must be exact (min/max), so results are bit-reproducible.
@@ -33,7 +36,7 @@
 #include "glint/common/glint_math.hlsli"
 #include "glint/depth_pyramid/glint_depth_pyramid_constants.h"
 
-float GLINT_DEPTH_PYRAMID_LoadDepth(int2 pixel);
+float4 GLINT_DEPTH_PYRAMID_GatherDepth(int2 pixel);
 float2 GLINT_DEPTH_PYRAMID_Reduce(float2 a, float2 b);
 void GLINT_DEPTH_PYRAMID_StoreLevel(int2 texel, uint level, float2 value);
 float2 GLINT_DEPTH_PYRAMID_LoadLevelCoherent(int2 texel, uint level);
@@ -42,20 +45,23 @@ void GLINT_DEPTH_PYRAMID_ResetCounter();
 
 #define GLINT_DEPTH_PYRAMID_GROUP_SIZE 256
 
-// Level 2 of the tile (16x16), then levels 4 and 6 reuse it; levels 3 and 5 go to the
+// Level 1 of the tile (32x32), then levels 3 and 5 reuse it; levels 2, 4 and 6 go to the
 // second array. Alternating keeps every step's reads and writes in different arrays, so one
 // barrier per level is enough.
+groupshared float2 g_glint_depth_pyramid_odd[1024];
 groupshared float2 g_glint_depth_pyramid_even[256];
-groupshared float2 g_glint_depth_pyramid_odd[64];
 groupshared uint g_glint_depth_pyramid_arrivals;
 
 float GLINT_DEPTH_PYRAMID_Sanitize(float depth, float farDepth)
 {
     if (!GLINT_IsFinite(depth))
         return farDepth;
-    // Clearing the sign bit after the clamp turns -0 into +0; a bit operation cannot be
-    // folded away the way "x + 0.0" can when signed zeros are not preserved.
-    return asfloat(asuint(clamp(depth, 0.0, 1.0)) & 0x7FFFFFFFu);
+    // After the clamp, clearing the sign bit turns -0 into +0, and anything below the smallest
+    // normal float becomes +0: GPUs that flush denormals (NVIDIA does in min/max) and GPUs
+    // that keep them then store the same bits. Bit operations, unlike "x + 0.0", cannot be
+    // folded away when signed zeros are not preserved.
+    uint bits = asuint(clamp(depth, 0.0, 1.0)) & 0x7FFFFFFFu;
+    return bits < 0x00800000u ? 0.0 : asfloat(bits);
 }
 
 float2 GLINT_DEPTH_PYRAMID_Reduce4(float2 a, float2 b, float2 c, float2 d)
@@ -63,14 +69,18 @@ float2 GLINT_DEPTH_PYRAMID_Reduce4(float2 a, float2 b, float2 c, float2 d)
     return GLINT_DEPTH_PYRAMID_Reduce(GLINT_DEPTH_PYRAMID_Reduce(a, b), GLINT_DEPTH_PYRAMID_Reduce(c, d));
 }
 
-// Pixels in the padding beyond the input are far: empty for the closest channel, and the
-// most pessimistic value for the farthest one.
-float2 GLINT_DEPTH_PYRAMID_LoadSanitized(int2 pixel, uint2 inputSize, float farDepth)
+// One gathered 2x2 block, sanitized. Pixels in the padding beyond the input are far: empty
+// for the closest channel, and the most pessimistic value for the farthest one.
+float4 GLINT_DEPTH_PYRAMID_LoadBlock(int2 pixel, uint2 inputSize, float farDepth)
 {
-    float depth = farDepth;
-    if (all(uint2(pixel) < inputSize))
-        depth = GLINT_DEPTH_PYRAMID_Sanitize(GLINT_DEPTH_PYRAMID_LoadDepth(pixel), farDepth);
-    return float2(depth, depth);
+    float4 depth = GLINT_DEPTH_PYRAMID_GatherDepth(pixel);
+    bool2 inside0 = uint2(pixel) < inputSize;
+    bool2 inside1 = uint2(pixel + 1) < inputSize;
+    depth.x = (inside0.x && inside0.y) ? GLINT_DEPTH_PYRAMID_Sanitize(depth.x, farDepth) : farDepth;
+    depth.y = (inside1.x && inside0.y) ? GLINT_DEPTH_PYRAMID_Sanitize(depth.y, farDepth) : farDepth;
+    depth.z = (inside0.x && inside1.y) ? GLINT_DEPTH_PYRAMID_Sanitize(depth.z, farDepth) : farDepth;
+    depth.w = (inside1.x && inside1.y) ? GLINT_DEPTH_PYRAMID_Sanitize(depth.w, farDepth) : farDepth;
+    return depth;
 }
 
 void GLINT_DEPTH_PYRAMID_Store(int2 texel, uint level, float2 value, uint levelCount)
@@ -122,32 +132,38 @@ void GLINT_DEPTH_PYRAMID_BuildCoarseLevels(uint localIndex, uint2 level0Size, ui
 }
 
 void GLINT_DEPTH_PYRAMID_Build(uint2 groupId, uint localIndex, uint2 inputSize, uint2 level0Size, uint levelCount,
-                               uint groupCount, float farDepth)
+                               uint groupCount, float farDepth, bool writeLevel0)
 {
-    // Levels 0-2 in registers: each thread owns a 4x4 block of the group's 64x64 tile.
-    uint2 block = uint2(localIndex % 16, localIndex / 16);
-    int2 origin = int2(groupId * 64 + block * 4);
-    float2 level1[4];
-    [unroll] for (uint quad = 0; quad < 4; ++quad)
+    // Levels 0 and 1: each thread gathers four 2x2 blocks. Warp-sized runs of threads take
+    // consecutive blocks of one block row, so every fetch and store of a warp covers whole
+    // rows of the tile. The 32x32 level-1 texels go to groupshared memory.
+    [unroll] for (uint pass = 0; pass < 4; ++pass)
     {
-        int2 p = origin + int2(quad & 1, quad >> 1) * 2;
-        float2 a = GLINT_DEPTH_PYRAMID_LoadSanitized(p, inputSize, farDepth);
-        float2 b = GLINT_DEPTH_PYRAMID_LoadSanitized(p + int2(1, 0), inputSize, farDepth);
-        float2 c = GLINT_DEPTH_PYRAMID_LoadSanitized(p + int2(0, 1), inputSize, farDepth);
-        float2 d = GLINT_DEPTH_PYRAMID_LoadSanitized(p + int2(1, 1), inputSize, farDepth);
-        GLINT_DEPTH_PYRAMID_StoreLevel(p, 0, a);
-        GLINT_DEPTH_PYRAMID_StoreLevel(p + int2(1, 0), 0, b);
-        GLINT_DEPTH_PYRAMID_StoreLevel(p + int2(0, 1), 0, c);
-        GLINT_DEPTH_PYRAMID_StoreLevel(p + int2(1, 1), 0, d);
-        level1[quad] = GLINT_DEPTH_PYRAMID_Reduce4(a, b, c, d);
-        GLINT_DEPTH_PYRAMID_Store(p / 2, 1, level1[quad], levelCount);
+        uint blockIndex = pass * GLINT_DEPTH_PYRAMID_GROUP_SIZE + localIndex;
+        uint2 block = uint2(blockIndex % 32, blockIndex / 32);
+        int2 pixel = int2(groupId * 64 + block * 2);
+        float4 depth = GLINT_DEPTH_PYRAMID_LoadBlock(pixel, inputSize, farDepth);
+        if (writeLevel0)
+        {
+            GLINT_DEPTH_PYRAMID_StoreLevel(pixel, 0, depth.xx);
+            GLINT_DEPTH_PYRAMID_StoreLevel(pixel + int2(1, 0), 0, depth.yy);
+            GLINT_DEPTH_PYRAMID_StoreLevel(pixel + int2(0, 1), 0, depth.zz);
+            GLINT_DEPTH_PYRAMID_StoreLevel(pixel + int2(1, 1), 0, depth.ww);
+        }
+        float2 level1 = GLINT_DEPTH_PYRAMID_Reduce4(depth.xx, depth.yy, depth.zz, depth.ww);
+        GLINT_DEPTH_PYRAMID_Store(pixel / 2, 1, level1, levelCount);
+        g_glint_depth_pyramid_odd[blockIndex] = level1;
     }
-    float2 level2 = GLINT_DEPTH_PYRAMID_Reduce4(level1[0], level1[1], level1[2], level1[3]);
-    GLINT_DEPTH_PYRAMID_Store(origin / 4, 2, level2, levelCount);
-    g_glint_depth_pyramid_even[localIndex] = level2;
     GroupMemoryBarrierWithGroupSync();
 
-    // Levels 3-6 through groupshared memory; correct for any subgroup size.
+    // Levels 2-6 through groupshared memory; correct for any subgroup size.
+    {
+        uint2 p = uint2(localIndex % 16, localIndex / 16);
+        float2 value = GLINT_DEPTH_PYRAMID_ReduceShared(false, p, 32);
+        GLINT_DEPTH_PYRAMID_Store(int2(groupId * 16 + p), 2, value, levelCount);
+        g_glint_depth_pyramid_even[localIndex] = value;
+    }
+    GroupMemoryBarrierWithGroupSync();
     if (localIndex < 64)
     {
         uint2 p = uint2(localIndex % 8, localIndex / 8);

@@ -21,7 +21,7 @@ GLINT_CONSTANTS_BEGIN(GLINT_DepthPyramidConstants)
     uint levelCount;   // levels written, 1..1 + floor(log2(max(W0, H0)))
     uint groupCount;   // groups in the dispatch, for the last-group count
     float farDepth;    // device depth of the far plane: 1 standard, 0 reversed
-    uint padding0;
+    uint writeLevel0;  // 1: level 0 holds the sanitized, padded input; 0: left unwritten
 GLINT_CONSTANTS_END(GLINT_DepthPyramidConstants);
 
 #ifdef __cplusplus

@@ -31,6 +31,9 @@ struct DepthPyramidDesc {
     DepthConvention depth = DepthConvention::Standard;
     DepthPyramidChannels channels = DepthPyramidChannels::Closest;
     std::uint32_t levelCount = 0; // 0: the full chain down to 1x1; otherwise 1..full
+    // false: level 0 is allocated but not written, saving about 45% of the pass's memory
+    // traffic; consumers then read level 0 from the input depth (bounds-checked, far outside).
+    bool copyLevel0 = true;
 };
 
 // Sizes only: no plan, no validation beyond clamping to the supported range.

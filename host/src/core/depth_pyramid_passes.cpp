@@ -69,6 +69,7 @@ Result planDepthPyramid(const DepthPyramidDesc& desc, EffectPlan& plan, std::str
     constants.levelCount = layout.levelCount;
     constants.groupCount = grid.groupsX * grid.groupsY;
     constants.farDepth = desc.depth == DepthConvention::Reversed ? 0.0f : 1.0f;
+    constants.writeLevel0 = desc.copyLevel0 ? 1u : 0u;
     pass.constantsBinding = "g_glint_constants";
     pass.constants = core::packConstants(constants);
 

@@ -276,6 +276,9 @@ Executor createExecutor(const Device& device) {
         samplerInfo.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
         samplerInfo.maxLod = VK_LOD_CLAMP_NONE;
         GLINT_VK_CHECK(vkCreateSampler(device.device, &samplerInfo, nullptr, &executor.linearClampSampler));
+        samplerInfo.magFilter = VK_FILTER_NEAREST;
+        samplerInfo.minFilter = VK_FILTER_NEAREST;
+        GLINT_VK_CHECK(vkCreateSampler(device.device, &samplerInfo, nullptr, &executor.pointClampSampler));
 
         executor.constantRing =
             createBuffer(device, kConstantRingSize, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, MemoryUse::Upload);
@@ -293,6 +296,7 @@ void destroyExecutor(Executor& executor) {
     for (auto& [format, image] : executor.spareImages) destroyImage(device, image);
     destroyBuffer(device, executor.constantRing);
     if (executor.linearClampSampler) vkDestroySampler(device.device, executor.linearClampSampler, nullptr);
+    if (executor.pointClampSampler) vkDestroySampler(device.device, executor.pointClampSampler, nullptr);
     if (executor.descriptorPool) vkDestroyDescriptorPool(device.device, executor.descriptorPool, nullptr);
     executor = Executor{};
 }

@@ -38,7 +38,9 @@ struct Executor {
     ShaderLookup findShader; // glint's embedded modules unless the caller adds its own
     std::map<std::string, ComputePipeline> pipelines; // created on first use
     VkDescriptorPool descriptorPool = VK_NULL_HANDLE;
-    VkSampler linearClampSampler = VK_NULL_HANDLE; // bound to every sampler binding
+    // Sampler bindings get linear clamp-to-edge, or nearest when their name contains "point".
+    VkSampler linearClampSampler = VK_NULL_HANDLE;
+    VkSampler pointClampSampler = VK_NULL_HANDLE;
     Buffer constantRing;                           // per-pass constants, host-visible
     VkDeviceSize constantRingUsed = 0;
     // 1x1 images bound to storage-image array slots past an image's last level, one per

@@ -1,0 +1,66 @@
+// glint simulate: a scene file -> a capture sequence (docs/scenes.md). Prints the layers and
+// passes it computed and their GPU time.
+#include "cli_commands.h"
+
+#include "capture/sequence_io.h"
+#include "scene/scene_file.h"
+#include "scene/scene_simulate.h"
+
+#include <gpu/gpu_context.h>
+
+#include <cstdio>
+
+namespace glint::cli {
+
+int runSimulate(const SimulateOptions& options) {
+    scene::Scene scene = scene::loadScene(options.scenePath);
+    if (options.width > 0 && options.height > 0) {
+        scene.width = options.width;
+        scene.height = options.height;
+    }
+    if (options.frames > 0) scene.frameCount = options.frames;
+    if (options.spp > 0) scene.reference.samplesPerPixel = options.spp;
+    if (options.seed) scene.seed = *options.seed;
+
+    gpu::ContextOptions contextOptions;
+    contextOptions.validation = options.validate;
+    contextOptions.synchronizationValidation = options.validate;
+    gpu::Context context = gpu::createContext(contextOptions);
+    int exitCode = kExitOk;
+    try {
+        const scene::Simulation sim = scene::simulate(context, scene);
+        const capture::Environment* environment = sim.environment ? &*sim.environment : nullptr;
+        capture::writeSequence(options.outDir, sim.frames, scene.frameRate, environment);
+
+        std::printf("device: %s, driver %s %s\n", context.info.name.c_str(), context.info.driverName.c_str(),
+                    context.info.driverInfo.c_str());
+        std::printf("scene %s: %ux%u, %u frame(s), %zu primitives, effects:", options.scenePath.c_str(), scene.width,
+                    scene.height, scene.frameCount, sim.primitives);
+        for (const std::string& effect : scene::captureEffects(scene)) std::printf(" %s", effect.c_str());
+        std::printf("\nlayers:");
+        for (const std::string& layer : sim.layers) std::printf(" %s", layer.c_str());
+        std::printf("%s\npasses (GPU time, all frames):\n", environment ? " (+ environment.exr)" : "");
+        double total = 0.0;
+        for (const scene::PassTime& pass : sim.passes) {
+            if (pass.milliseconds < 0.0) {
+                std::printf("  %-22s no timestamps on this queue\n", pass.pass.c_str());
+                continue;
+            }
+            total += pass.milliseconds;
+            std::printf("  %-22s %10.3f ms\n", pass.pass.c_str(), pass.milliseconds);
+        }
+        std::printf("  %-22s %10.3f ms\nwrote %s\n", "total", total, options.outDir.c_str());
+    } catch (...) {
+        gpu::destroyContext(context);
+        throw;
+    }
+    gpu::destroyContext(context);
+    const uint32_t errors = context.validation ? context.validation->errors.load() : 0u;
+    if (errors > 0) {
+        std::fprintf(stderr, "glint: %u validation errors\n", errors);
+        exitCode = kExitCheckFailed;
+    }
+    return exitCode;
+}
+
+} // namespace glint::cli

@@ -1,0 +1,291 @@
+#include "scene/scene_simulate.h"
+
+#include "scene/scene_bvh.h"
+#include "scene/scene_environment.h"
+#include "scene/scene_geometry.h"
+#include "scene/scene_shaders.h"
+
+#include "capture/motion_convention.h"
+
+#include <gpu/gpu_plan_runner.h>
+#include <gpu/gpu_transfer.h>
+
+#include <cmath>
+#include <cstring>
+#include <numbers>
+
+namespace glint::scene {
+namespace {
+
+using shaders::GLINT_SceneConstants;
+
+struct OutputImage {
+    const char* resource; // plan resource name
+    const char* layer;    // capture layer
+    Format format;
+    std::vector<std::string> channels;
+};
+
+shaders::float4x4 toFloat(const capture::Mat4& m) {
+    shaders::float4x4 out{};
+    for (std::size_t i = 0; i < 16; ++i) out.m[i] = static_cast<float>(m.m[i]);
+    return out;
+}
+
+std::vector<std::byte> pack(const GLINT_SceneConstants& constants) {
+    std::vector<std::byte> bytes(sizeof constants);
+    std::memcpy(bytes.data(), &constants, sizeof constants);
+    return bytes;
+}
+
+Pass makePass(const char* name, const char* pipeline, std::vector<ResourceUse> uses, const GLINT_SceneConstants& constants,
+              std::uint32_t width, std::uint32_t height) {
+    Pass pass;
+    pass.name = name;
+    pass.pipeline = pipeline;
+    pass.uses = std::move(uses);
+    pass.constantsBinding = "g_scene";
+    pass.constants = pack(constants);
+    pass.dispatch = DirectDispatch{(width + 7) / 8, (height + 7) / 8, 1};
+    return pass;
+}
+
+ResourceUse read(const char* binding) {
+    return {binding, binding, Access::Read};
+}
+ResourceUse write(const char* binding, const char* resource) {
+    return {binding, resource, Access::Write};
+}
+
+// The passes of one frame and the images they write. Which passes exist depends only on
+// the declared effects and reference settings, never on the frame.
+EffectPlan planFrame(const Scene& scene, const GLINT_SceneConstants& base, std::vector<OutputImage>& outputs) {
+    const bool reflections = needsReflections(scene);
+    const bool shadows = needsShadows(scene);
+    const std::uint32_t w = scene.width, h = scene.height;
+    EffectPlan plan;
+    plan.effect = "scene";
+    outputs = {{"depth", "depth", Format::R32Float, {"Z"}},
+               {"normal", "normal", Format::RGBA32Float, {"X", "Y", "Z"}},
+               {"motion", "motion", Format::RG32Float, {"X", "Y"}}};
+    std::vector<ResourceUse> gbuffer = {read("g_scene_nodes"), read("g_scene_primitives"), read("g_scene_objects"),
+                                        write("g_depth", "depth"), write("g_normal", "normal"), write("g_motion", "motion")};
+    if (reflections) {
+        gbuffer.push_back(read("g_scene_materials"));
+        gbuffer.push_back(write("g_roughness", "roughness"));
+        gbuffer.push_back(write("g_material", "material"));
+        outputs.push_back({"roughness", "roughness", Format::R32Float, {"Y"}});
+        outputs.push_back({"material", "material", Format::RGBA32Float, {"R", "G", "B", "A"}});
+    }
+    plan.passes.push_back(makePass("gbuffer", reflections ? "scene_gbuffer.material" : "scene_gbuffer", gbuffer, base, w, h));
+    const std::vector<ResourceUse> shading = {read("g_scene_nodes"), read("g_scene_primitives"), read("g_scene_materials"),
+                                              read("g_scene_lights"), read("g_scene_environment")};
+    if (reflections) {
+        std::vector<ResourceUse> uses = shading;
+        uses.push_back(write("g_color", "color"));
+        plan.passes.push_back(makePass("shade", "scene_shade", uses, base, w, h));
+        outputs.push_back({"color", "color", Format::RGBA32Float, {"R", "G", "B"}});
+        if (scene.reference.reflections) {
+            GLINT_SceneConstants c = base;
+            c.samples = scene.reference.samplesPerPixel;
+            c.passSalt = 0x52454631u;
+            uses = shading;
+            uses.push_back(write("g_reflection", "reference.reflection"));
+            plan.passes.push_back(makePass("reference.reflection", "scene_reflection", uses, c, w, h));
+            outputs.push_back({"reference.reflection", "reference.reflection", Format::RGBA32Float, {"R", "G", "B"}});
+        }
+    }
+    if (shadows) {
+        const std::vector<ResourceUse> common = {read("g_scene_nodes"), read("g_scene_primitives"), read("g_scene_lights")};
+        GLINT_SceneConstants c = base;
+        c.samples = 1;
+        c.passSalt = 0x53484431u;
+        std::vector<ResourceUse> uses = common;
+        uses.push_back(write("g_visibility", "shadow"));
+        plan.passes.push_back(makePass("shadow", "scene_shadow", uses, c, w, h));
+        outputs.push_back({"shadow", "shadow", Format::R32Float, {"Y"}});
+        if (scene.reference.shadows) {
+            c.samples = scene.reference.samplesPerPixel;
+            c.passSalt = 0x53484432u;
+            uses = common;
+            uses.push_back(write("g_visibility", "reference.shadow"));
+            plan.passes.push_back(makePass("reference.shadow", "scene_shadow", uses, c, w, h));
+            outputs.push_back({"reference.shadow", "reference.shadow", Format::R32Float, {"Y"}});
+        }
+    }
+    for (const OutputImage& out : outputs) plan.images.push_back({out.resource, w, h, 1, out.format});
+    return plan;
+}
+
+std::vector<shaders::SceneMaterial> gpuMaterials(const Scene& scene) {
+    std::vector<shaders::SceneMaterial> out;
+    for (const MaterialDesc& m : scene.materials) {
+        shaders::SceneMaterial g{};
+        g.baseColor = {m.baseColor[0], m.baseColor[1], m.baseColor[2]};
+        g.metallic = m.metallic;
+        g.emissive = {m.emissive[0], m.emissive[1], m.emissive[2]};
+        g.roughness = m.roughness;
+        g.roughnessEnd = m.ramp ? m.rampRoughnessEnd : m.roughness;
+        if (m.ramp) {
+            // t = dot(p - start, axis) / |axis|^2 = dot(p, axis / |axis|^2) - dot(start, axis) / |axis|^2
+            const float a[3] = {m.rampEnd[0] - m.rampStart[0], m.rampEnd[1] - m.rampStart[1], m.rampEnd[2] - m.rampStart[2]};
+            const float len2 = a[0] * a[0] + a[1] * a[1] + a[2] * a[2];
+            g.rampPlane = {a[0] / len2, a[1] / len2, a[2] / len2,
+                           -(m.rampStart[0] * a[0] + m.rampStart[1] * a[1] + m.rampStart[2] * a[2]) / len2};
+        }
+        out.push_back(g);
+    }
+    if (out.empty()) out.push_back({}); // a zero-sized storage buffer cannot be bound
+    return out;
+}
+
+std::vector<shaders::SceneLight> gpuLights(const Scene& scene) {
+    std::vector<shaders::SceneLight> out;
+    for (const LightDesc& l : scene.lights) {
+        shaders::SceneLight g{};
+        const bool directional = l.kind == LightKind::Directional;
+        g.kind = directional ? GLINT_SCENE_LIGHT_DIRECTIONAL : GLINT_SCENE_LIGHT_SPHERE;
+        const Vec3& v = directional ? l.direction : l.position;
+        g.where = {v[0], v[1], v[2]};
+        g.radiance = {l.color[0] * l.intensity, l.color[1] * l.intensity, l.color[2] * l.intensity};
+        g.size = directional ? static_cast<float>(static_cast<double>(l.angularRadiusDegrees) * std::numbers::pi / 180.0) : l.radius;
+        out.push_back(g);
+    }
+    if (out.empty()) out.push_back({});
+    return out;
+}
+
+template <typename T>
+vk::Buffer uploadStorage(const gpu::Context& context, const std::vector<T>& values) {
+    vk::Buffer buffer = vk::createBuffer(context.device, sizeof(T) * values.size(), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                         vk::MemoryUse::DeviceLocal);
+    gpu::uploadBuffer(context, buffer, std::span<const T>(values));
+    return buffer;
+}
+
+capture::Layer toLayer(const OutputImage& out, const std::vector<float>& texels, std::uint32_t texelChannels) {
+    capture::Layer layer;
+    layer.name = out.layer;
+    layer.channels = out.channels;
+    layer.storage = capture::SampleType::Float;
+    const std::size_t n = out.channels.size();
+    const std::size_t count = texels.size() / texelChannels;
+    layer.pixels.resize(count * n);
+    for (std::size_t i = 0; i < count; ++i)
+        for (std::size_t c = 0; c < n; ++c) layer.pixels[i * n + c] = texels[i * texelChannels + c];
+    return layer;
+}
+
+struct Resources {
+    const gpu::Context& context;
+    std::vector<vk::Buffer> buffers;
+    vk::Image environment;
+    gpu::PlanResources owned;
+    vk::Executor executor;
+    ~Resources() {
+        vk::destroyExecutor(executor);
+        gpu::destroyPlanResources(context, owned);
+        for (vk::Buffer& b : buffers) vk::destroyBuffer(context.device, b);
+        vk::destroyImage(context.device, environment);
+    }
+};
+
+} // namespace
+
+std::vector<std::string> captureEffects(const Scene& scene) {
+    std::vector<std::string> effects;
+    if (needsReflections(scene)) effects.push_back("reflections");
+    if (needsShadows(scene)) effects.push_back("shadows");
+    return effects;
+}
+
+Simulation simulate(const gpu::Context& context, const Scene& scene) {
+    Simulation sim;
+    const std::vector<Mesh> meshes = loadMeshes(scene);
+    const capture::Environment environment = bakeEnvironment(scene);
+    const bool reflections = needsReflections(scene);
+    if (reflections) sim.environment = environment;
+
+    Resources res{context, {}, {}, {}, vk::createExecutor(context.device)};
+    res.executor.findShader = findShader;
+    res.environment = vk::createImage2D(context.device, environment.width, environment.height, VK_FORMAT_R32G32B32A32_SFLOAT);
+    gpu::uploadImage(context, res.environment, environment.rgb, 3);
+    const vk::Buffer materials = uploadStorage(context, gpuMaterials(scene));
+    const vk::Buffer lights = uploadStorage(context, gpuLights(scene));
+    res.buffers = {materials, lights};
+
+    std::vector<OutputImage> outputs;
+    for (std::uint32_t frame = 0; frame < scene.frameCount; ++frame) {
+        const FrameCamera cam = cameraAt(scene, frame);
+        FrameGeometry geometry = buildGeometry(scene, meshes, frame);
+        if (frame == 0) sim.primitives = geometry.primitives.size();
+        Bvh bvh = buildBvh(std::move(geometry.primitives));
+        if (bvh.primitives.empty()) bvh.primitives.push_back({});   // never read: the root is an empty leaf
+        if (geometry.objects.empty()) geometry.objects.push_back({});
+
+        GLINT_SceneConstants c{};
+        const capture::Mat4 vp = capture::viewProjection(cam.camera);
+        c.viewProjection = toFloat(vp);
+        c.invViewProjection = toFloat(*capture::inverse(vp));
+        c.prevViewProjection = toFloat(cam.camera.prevViewProjection);
+        c.eye = {cam.eye[0], cam.eye[1], cam.eye[2], 1.0f};
+        c.size = {scene.width, scene.height};
+        c.frameIndex = frame;
+        c.seed = scene.seed;
+        c.lightCount = static_cast<std::uint32_t>(scene.lights.size());
+        c.samples = 1;
+        c.shadowSamples = scene.shadowSamples;
+        c.shadowLight = scene.shadowLight;
+        c.backgroundDepth = scene.camera.depth == capture::DepthConvention::Standard ? 1.0f : 0.0f;
+        c.ndcYDown = scene.camera.ndcYDown ? 1u : 0u;
+        c.environmentIntensity = 1.0f;
+        const EffectPlan plan = planFrame(scene, c, outputs);
+        if (frame == 0) {
+            res.owned = gpu::createPlanResources(context, plan);
+            for (const Pass& pass : plan.passes) sim.passes.push_back({pass.name, 0.0});
+            for (const OutputImage& out : outputs) sim.layers.push_back(out.layer);
+        }
+
+        vk::Buffer nodes = uploadStorage(context, bvh.nodes);
+        res.buffers.push_back(nodes);
+        vk::Buffer primitives = uploadStorage(context, bvh.primitives);
+        res.buffers.push_back(primitives);
+        vk::Buffer objects = uploadStorage(context, geometry.objects);
+        res.buffers.push_back(objects);
+        vk::ResourceTable table = gpu::resourceTable(res.owned, {{"g_scene_environment", &res.environment}});
+        table.buffers["g_scene_nodes"] = &nodes;
+        table.buffers["g_scene_primitives"] = &primitives;
+        table.buffers["g_scene_objects"] = &objects;
+        table.buffers["g_scene_materials"] = &materials;
+        table.buffers["g_scene_lights"] = &lights;
+
+        const gpu::PlanTimings timings = gpu::executePlan(context, res.executor, plan, table, 1);
+        for (std::size_t p = 0; p < sim.passes.size(); ++p) {
+            const double ms = timings.times.empty() ? -1.0 : timings.times[0].at(p);
+            sim.passes[p].milliseconds = ms < 0.0 || sim.passes[p].milliseconds < 0.0 ? -1.0 : sim.passes[p].milliseconds + ms;
+        }
+
+        capture::Frame f;
+        f.width = scene.width;
+        f.height = scene.height;
+        f.frameIndex = frame;
+        f.camera = cam.camera;
+        f.normalEncoding = capture::NormalEncoding::WorldUnit;
+        f.motion = capture::kConventionA;
+        if (reflections) f.roughness = {"roughness", "Y", true};
+        f.effects = captureEffects(scene);
+        for (const OutputImage& out : outputs) {
+            const vk::Image& image = res.owned.images.at(out.resource);
+            f.layers.push_back(toLayer(out, gpu::readbackImage(context, image), vk::formatChannelCount(image.format)));
+        }
+        sim.frames.push_back(std::move(f));
+        // This frame's geometry is done with; the executor waited in executePlan.
+        for (int i = 0; i < 3; ++i) {
+            vk::destroyBuffer(context.device, res.buffers.back());
+            res.buffers.pop_back();
+        }
+    }
+    return sim;
+}
+
+} // namespace glint::scene

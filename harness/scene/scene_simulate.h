@@ -1,0 +1,37 @@
+// Renders a scene's frames on the GPU into capture frames (format v1), computing only the
+// layers and passes its declared effects call for (docs/scenes.md, "What gets computed").
+#pragma once
+
+#include "capture/capture_frame.h"
+#include "capture/environment_io.h"
+#include "scene/scene_types.h"
+
+#include <gpu/gpu_context.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace glint::scene {
+
+struct PassTime {
+    std::string pass;         // e.g. "gbuffer", "shade", "shadow", "reference.reflection"
+    double milliseconds = 0;  // GPU time summed over all frames; < 0 when not measured
+};
+
+struct Simulation {
+    std::vector<capture::Frame> frames;
+    std::optional<capture::Environment> environment; // only for reflections
+    std::vector<std::string> layers;                 // layers written into every frame
+    std::vector<PassTime> passes;                    // passes run for every frame, in order
+    std::size_t primitives = 0;                      // of the first frame
+};
+
+// Throws SceneError for scene problems (missing model...), std::runtime_error for GPU ones.
+Simulation simulate(const gpu::Context& context, const Scene& scene);
+
+// The effect names the capture declares: hybrid reflections read the reflection layers, so
+// "hybrid" is written as "reflections".
+std::vector<std::string> captureEffects(const Scene& scene);
+
+} // namespace glint::scene

@@ -1,0 +1,72 @@
+// Lights as cones seen from a point, cone sampling and visibility. The including entry
+// declares StructuredBuffer<SceneLight> g_scene_lights.
+#ifndef GLINT_SCENE_LIGHT_HLSLI
+#define GLINT_SCENE_LIGHT_HLSLI
+
+struct SceneLightCone {
+    float3 axis;       // unit direction to the light's centre
+    float cosHalf;     // cosine of the cone's half-angle
+    float sinHalf;
+    float3 irradiance; // at normal incidence, unshadowed
+    float maxT;        // shadow rays stop before the light
+};
+
+SceneLightCone SceneLightConeAt(uint lightIndex, float3 position)
+{
+    SceneLight l = g_scene_lights[lightIndex];
+    SceneLightCone c;
+    if (l.kind == GLINT_SCENE_LIGHT_DIRECTIONAL) {
+        c.axis = l.where;
+        c.sinHalf = sin(l.size);
+        c.cosHalf = cos(l.size);
+        c.irradiance = l.radiance;
+        c.maxT = 3.0e38;
+    } else {
+        float3 toLight = l.where - position;
+        float d2 = max(dot(toLight, toLight), 1e-12);
+        float d = sqrt(d2);
+        c.axis = toLight / d;
+        c.sinHalf = min(l.size / d, 1.0);
+        c.cosHalf = sqrt(max(1.0 - c.sinHalf * c.sinHalf, 0.0));
+        c.irradiance = l.radiance / d2;
+        c.maxT = max(d - l.size, 0.0) * 0.999;
+    }
+    return c;
+}
+
+// Uniform direction inside the cone (solid-angle uniform).
+float3 SceneSampleCone(SceneLightCone c, float u1, float u2)
+{
+    float cosTheta = lerp(1.0, c.cosHalf, u1);
+    float sinTheta = sqrt(max(1.0 - cosTheta * cosTheta, 0.0));
+    float phi = 2.0 * SCENE_PI * u2;
+    float3 up = abs(c.axis.z) < 0.999 ? float3(0.0, 0.0, 1.0) : float3(1.0, 0.0, 0.0);
+    float3 t = normalize(cross(up, c.axis));
+    float3 b = cross(c.axis, t);
+    return normalize(t * (sinTheta * cos(phi)) + b * (sinTheta * sin(phi)) + c.axis * cosTheta);
+}
+
+// 1 when the cone direction reaches the light. Directions below the surface are blocked by
+// the surface itself.
+float SceneVisibilityAlong(float3 position, float3 normal, float3 dir, float maxT)
+{
+    if (dot(normal, dir) <= 0.0) return 0.0;
+    SceneHit h = SceneTrace(SceneOffsetOrigin(position, normal), dir, maxT, true);
+    return h.t > 0.0 ? 0.0 : 1.0;
+}
+
+// Mean visibility of `count` cone samples; stratified in cos(theta), golden-ratio in phi.
+float SceneVisibility(float3 position, float3 normal, SceneLightCone c, uint count, inout uint rng)
+{
+    float visible = 0.0;
+    float offset = SceneRandom(rng);
+    float jitter = SceneRandom(rng);
+    for (uint i = 0; i < count; ++i) {
+        float u1 = (float(i) + jitter) / float(count);
+        float u2 = frac(offset + 0.618034 * float(i));
+        visible += SceneVisibilityAlong(position, normal, SceneSampleCone(c, u1, u2), c.maxT);
+    }
+    return visible / float(max(count, 1u));
+}
+
+#endif // GLINT_SCENE_LIGHT_HLSLI

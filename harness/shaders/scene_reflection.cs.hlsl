@@ -1,0 +1,76 @@
+// reference.reflection: the GGX-VNDF-weighted mean of the radiance arriving along reflected
+// rays (docs/scenes.md). For each of g_scene.samples samples: a microfacet normal from the
+// visible-normal distribution (Heitz 2018) for alpha = r^2, the view direction reflected about
+// it; directions below the surface are discarded; a hit is shaded as the colour buffer shades
+// it, a miss returns the environment. When every sample is discarded, the mirror direction is
+// used. Background pixels are 0.
+#include "entry/common/glint_entry_common.hlsli"
+#include "../harness/shaders/scene_constants.h"
+
+[[vk::binding(0, 0)]] ConstantBuffer<GLINT_SceneConstants> g_scene;
+[[vk::binding(1, 0)]] StructuredBuffer<SceneBvhNode> g_scene_nodes;
+[[vk::binding(2, 0)]] StructuredBuffer<ScenePrimitive> g_scene_primitives;
+[[vk::binding(3, 0)]] StructuredBuffer<SceneMaterial> g_scene_materials;
+[[vk::binding(4, 0)]] StructuredBuffer<SceneLight> g_scene_lights;
+[[vk::binding(5, 0)]] Texture2D<float4> g_scene_environment;
+[[vk::binding(6, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_reflection;
+
+#include "../harness/shaders/scene_trace.hlsli"
+#include "../harness/shaders/scene_surface.hlsli"
+#include "../harness/shaders/scene_light.hlsli"
+#include "../harness/shaders/scene_shading.hlsli"
+
+// Visible normal in tangent space (z = surface normal) for view ve (ve.z > 0).
+float3 SceneSampleVndf(float3 ve, float alpha, float u1, float u2)
+{
+    float3 vh = normalize(float3(alpha * ve.x, alpha * ve.y, ve.z));
+    float lensq = vh.x * vh.x + vh.y * vh.y;
+    float3 t1 = lensq > 0.0 ? float3(-vh.y, vh.x, 0.0) * rsqrt(lensq) : float3(1.0, 0.0, 0.0);
+    float3 t2 = cross(vh, t1);
+    float r = sqrt(u1);
+    float phi = 2.0 * SCENE_PI * u2;
+    float p1 = r * cos(phi);
+    float p2 = r * sin(phi);
+    float s = 0.5 * (1.0 + vh.z);
+    p2 = (1.0 - s) * sqrt(max(1.0 - p1 * p1, 0.0)) + s * p2;
+    float3 nh = p1 * t1 + p2 * t2 + sqrt(max(1.0 - p1 * p1 - p2 * p2, 0.0)) * vh;
+    return normalize(float3(alpha * nh.x, alpha * nh.y, max(nh.z, 1e-6)));
+}
+
+[numthreads(8, 8, 1)] void main(uint3 id : SV_DispatchThreadID)
+{
+    if (any(id.xy >= g_scene.size)) return;
+    float3 origin, dir;
+    ScenePrimaryRay(id.xy, origin, dir);
+    SceneHit hit = SceneTrace(origin, dir, 3.0e38, false);
+    bool inside = false;
+    if (hit.t > 0.0) SceneDeviceDepth(origin + dir * hit.t, inside);
+    float3 result = 0.0;
+    if (inside) {
+        SceneSurface s = SceneSurfaceAt(hit, origin, dir);
+        float3 n = s.normal;
+        float3 up = abs(n.z) < 0.999 ? float3(0.0, 0.0, 1.0) : float3(1.0, 0.0, 0.0);
+        float3 tx = normalize(cross(up, n));
+        float3 ty = cross(n, tx);
+        float3 v = -dir;
+        // conventions.md §5: never a lower-hemisphere view; clamp its z.
+        float3 ve = normalize(float3(dot(v, tx), dot(v, ty), max(dot(v, n), 1e-4)));
+        float alpha = max(s.perceptualRoughness * s.perceptualRoughness, 1e-4);
+        float3 start = SceneOffsetOrigin(s.position, n);
+        uint rng = SceneSeed(id.xy, g_scene.frameIndex, g_scene.passSalt);
+        float3 sum = 0.0;
+        uint used = 0;
+        for (uint i = 0; i < g_scene.samples; ++i) {
+            float u1 = SceneRandom(rng);
+            float u2 = SceneRandom(rng);
+            float3 m = SceneSampleVndf(ve, alpha, u1, u2);
+            float3 h = normalize(tx * m.x + ty * m.y + n * m.z);
+            float3 l = reflect(-v, h);
+            if (dot(n, l) <= 0.0) continue;
+            sum += SceneFinite(SceneRadianceAlong(start, l));
+            ++used;
+        }
+        result = used > 0 ? sum / float(used) : SceneFinite(SceneRadianceAlong(start, reflect(-v, n)));
+    }
+    g_reflection[id.xy] = float4(SceneFinite(result), 1.0);
+}

@@ -1,0 +1,29 @@
+// The lit colour buffer: direct light with converged visibility on hits, the environment on
+// the background (and beyond the far plane).
+#include "entry/common/glint_entry_common.hlsli"
+#include "../harness/shaders/scene_constants.h"
+
+[[vk::binding(0, 0)]] ConstantBuffer<GLINT_SceneConstants> g_scene;
+[[vk::binding(1, 0)]] StructuredBuffer<SceneBvhNode> g_scene_nodes;
+[[vk::binding(2, 0)]] StructuredBuffer<ScenePrimitive> g_scene_primitives;
+[[vk::binding(3, 0)]] StructuredBuffer<SceneMaterial> g_scene_materials;
+[[vk::binding(4, 0)]] StructuredBuffer<SceneLight> g_scene_lights;
+[[vk::binding(5, 0)]] Texture2D<float4> g_scene_environment;
+[[vk::binding(6, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_color;
+
+#include "../harness/shaders/scene_trace.hlsli"
+#include "../harness/shaders/scene_surface.hlsli"
+#include "../harness/shaders/scene_light.hlsli"
+#include "../harness/shaders/scene_shading.hlsli"
+
+[numthreads(8, 8, 1)] void main(uint3 id : SV_DispatchThreadID)
+{
+    if (any(id.xy >= g_scene.size)) return;
+    float3 origin, dir;
+    ScenePrimaryRay(id.xy, origin, dir);
+    SceneHit hit = SceneTrace(origin, dir, 3.0e38, false);
+    bool inside = false;
+    if (hit.t > 0.0) SceneDeviceDepth(origin + dir * hit.t, inside);
+    float3 color = inside ? SceneShade(SceneSurfaceAt(hit, origin, dir), -dir) : SceneEnvironment(dir);
+    g_color[id.xy] = float4(SceneFinite(color), 1.0);
+}

@@ -1,0 +1,33 @@
+// Visibility of light g_scene.shadowLight from the primary hit, averaged over g_scene.samples
+// cone samples toward the light's disc: 1 sample = the noisy `shadow` layer, many = the
+// `reference.shadow` layer. New random numbers every frame (frameIndex seeds them).
+// Background pixels are lit (1).
+#include "entry/common/glint_entry_common.hlsli"
+#include "../harness/shaders/scene_constants.h"
+
+[[vk::binding(0, 0)]] ConstantBuffer<GLINT_SceneConstants> g_scene;
+[[vk::binding(1, 0)]] StructuredBuffer<SceneBvhNode> g_scene_nodes;
+[[vk::binding(2, 0)]] StructuredBuffer<ScenePrimitive> g_scene_primitives;
+[[vk::binding(3, 0)]] StructuredBuffer<SceneLight> g_scene_lights;
+[[vk::binding(4, 0)]] GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float> g_visibility;
+
+#include "../harness/shaders/scene_trace.hlsli"
+#include "../harness/shaders/scene_light.hlsli"
+
+[numthreads(8, 8, 1)] void main(uint3 id : SV_DispatchThreadID)
+{
+    if (any(id.xy >= g_scene.size)) return;
+    float3 origin, dir;
+    ScenePrimaryRay(id.xy, origin, dir);
+    SceneHit hit = SceneTrace(origin, dir, 3.0e38, false);
+    bool inside = false;
+    if (hit.t > 0.0) SceneDeviceDepth(origin + dir * hit.t, inside);
+    float visibility = 1.0;
+    if (inside) {
+        float3 position = origin + dir * hit.t;
+        float3 normal = SceneHitNormal(hit, origin, dir);
+        uint rng = SceneSeed(id.xy, g_scene.frameIndex, g_scene.passSalt);
+        visibility = SceneVisibility(position, normal, SceneLightConeAt(g_scene.shadowLight, position), g_scene.samples, rng);
+    }
+    g_visibility[id.xy] = visibility;
+}

@@ -1,0 +1,63 @@
+// References converge: their error against an independent high-sample estimate falls like
+// 1/sqrt(spp) (quadrupling the samples halves the RMSE).
+#include "scene/scene_test_scenes.h"
+#include "support/gpu_test_context.h"
+
+#include "scene/scene_simulate.h"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+namespace glint::scene {
+namespace {
+
+std::vector<float> render(Scene scene, const char* layer, std::uint32_t spp, std::uint32_t seed) {
+    scene.reference.samplesPerPixel = spp;
+    scene.seed = seed;
+    const Simulation sim = simulate(test::testContext(), scene);
+    return capture::findLayer(sim.frames.at(0), layer)->pixels;
+}
+
+double rmse(const std::vector<float>& a, const std::vector<float>& b) {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        const double d = static_cast<double>(a[i]) - static_cast<double>(b[i]);
+        sum += d * d;
+    }
+    return std::sqrt(sum / static_cast<double>(a.size()));
+}
+
+void checkConvergence(const Scene& scene, const char* layer) {
+    const std::vector<float> truth = render(scene, layer, 1024, 1000);
+    const double e4 = rmse(render(scene, layer, 4, 1), truth);
+    const double e16 = rmse(render(scene, layer, 16, 2), truth);
+    const double e64 = rmse(render(scene, layer, 64, 3), truth);
+    INFO(layer << ": RMSE at 4/16/64 spp = " << e4 << " / " << e16 << " / " << e64);
+    CHECK(e4 > 0.0);
+    // Ideal ratio 2; the high-sample estimate's own noise (1024 spp) pulls the second ratio down a little.
+    CHECK(e4 / e16 > 1.6);
+    CHECK(e4 / e16 < 2.5);
+    CHECK(e16 / e64 > 1.5);
+    CHECK(e16 / e64 < 2.5);
+}
+
+TEST_CASE("reference.reflection converges like 1/sqrt(spp)", "[scene][gpu]") {
+    Scene scene = test::analyticScene(24, 14, 1);
+    scene.effects = {Effect::Reflections};
+    scene.reference.reflections = true;
+    scene.shadowSamples = 2;
+    checkConvergence(scene, "reference.reflection");
+    GLINT_REQUIRE_NO_VALIDATION_ERRORS();
+}
+
+TEST_CASE("reference.shadow converges like 1/sqrt(spp)", "[scene][gpu]") {
+    Scene scene = test::analyticScene(48, 27, 1);
+    scene.effects = {Effect::Shadows};
+    scene.reference.shadows = true;
+    checkConvergence(scene, "reference.shadow");
+    GLINT_REQUIRE_NO_VALIDATION_ERRORS();
+}
+
+} // namespace
+} // namespace glint::scene

@@ -1,0 +1,119 @@
+// What a scene declares decides what is traced and written: layer sets and passes per effect,
+// valid captures, per-frame noise in the shadow layer, and bit-identical reruns.
+#include "scene/scene_test_scenes.h"
+#include "support/gpu_test_context.h"
+
+#include "capture/sequence_io.h"
+#include "scene/scene_simulate.h"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+
+namespace glint::scene {
+namespace {
+
+std::vector<std::string> passNames(const Simulation& sim) {
+    std::vector<std::string> names;
+    for (const PassTime& p : sim.passes) names.push_back(p.pass);
+    return names;
+}
+
+std::vector<std::string> frameLayers(const capture::Frame& frame) {
+    std::vector<std::string> names;
+    for (const capture::Layer& l : frame.layers) names.push_back(l.name);
+    return names;
+}
+
+using Names = std::vector<std::string>;
+
+TEST_CASE("A shadows-only scene traces no reflection rays and writes no reflection layers", "[scene][gpu]") {
+    Scene scene = test::analyticScene(32, 18, 1);
+    scene.effects = {Effect::Shadows};
+    scene.reference.shadows = true;
+    scene.reference.samplesPerPixel = 4;
+    const Simulation sim = simulate(test::testContext(), scene);
+    CHECK(passNames(sim) == Names{"gbuffer", "shadow", "reference.shadow"});
+    CHECK(frameLayers(sim.frames[0]) == Names{"depth", "normal", "motion", "shadow", "reference.shadow"});
+    CHECK_FALSE(sim.environment.has_value());
+    CHECK(sim.frames[0].effects == Names{"shadows"});
+    CHECK(sim.frames[0].roughness.layer.empty());
+    GLINT_REQUIRE_NO_VALIDATION_ERRORS();
+}
+
+TEST_CASE("A reflections-only scene traces no shadow layers", "[scene][gpu]") {
+    Scene scene = test::analyticScene(32, 18, 1);
+    scene.effects = {Effect::Hybrid};
+    const Simulation plain = simulate(test::testContext(), scene);
+    CHECK(passNames(plain) == Names{"gbuffer", "shade"});
+    CHECK(frameLayers(plain.frames[0]) == Names{"depth", "normal", "motion", "roughness", "material", "color"});
+    CHECK(plain.environment.has_value());
+    CHECK(plain.frames[0].effects == Names{"reflections"});
+
+    scene.reference.reflections = true;
+    scene.reference.samplesPerPixel = 2;
+    const Simulation referenced = simulate(test::testContext(), scene);
+    CHECK(passNames(referenced) == Names{"gbuffer", "shade", "reference.reflection"});
+    CHECK(frameLayers(referenced.frames.at(0)).back() == "reference.reflection");
+    GLINT_REQUIRE_NO_VALIDATION_ERRORS();
+}
+
+TEST_CASE("Simulated captures are valid sequences and reruns are bit-identical", "[scene][gpu]") {
+    Scene scene = test::analyticScene(40, 24, 2);
+    scene.effects = {Effect::Reflections, Effect::Shadows};
+    scene.reference = {true, true, 2};
+    const Simulation a = simulate(test::testContext(), scene);
+    const Simulation b = simulate(test::testContext(), scene);
+    REQUIRE(a.frames.size() == b.frames.size());
+    for (std::size_t f = 0; f < a.frames.size(); ++f) {
+        REQUIRE(a.frames[f].layers.size() == b.frames[f].layers.size());
+        for (std::size_t l = 0; l < a.frames[f].layers.size(); ++l) {
+            const auto& x = a.frames[f].layers[l].pixels;
+            const auto& y = b.frames[f].layers[l].pixels;
+            INFO("frame " << f << " layer " << a.frames[f].layers[l].name);
+            REQUIRE(x.size() == y.size());
+            CHECK(std::memcmp(x.data(), y.data(), x.size() * sizeof(float)) == 0);
+            CHECK(capture::countNonFinite(x) == 0);
+        }
+    }
+    const std::filesystem::path dir = std::filesystem::path(GLINT_TEST_OUTPUT_DIR) / "scene_effects_sequence";
+    std::filesystem::remove_all(dir);
+    capture::writeSequence(dir, a.frames, scene.frameRate, &*a.environment);
+    const capture::Sequence seq = capture::readSequence(dir); // validates every header
+    CHECK(seq.headers.size() == 2);
+    CHECK(seq.environment == "environment.exr");
+    GLINT_REQUIRE_NO_VALIDATION_ERRORS();
+}
+
+TEST_CASE("The noisy shadow layer draws new random numbers every frame and averages to the reference", "[scene][gpu]") {
+    Scene scene = test::analyticScene(48, 27, 3);
+    scene.camera.keys.resize(1); // static camera and objects: only the noise may change
+    scene.objects[2].keys.resize(1);
+    scene.effects = {Effect::Shadows};
+    scene.reference = {false, true, 256};
+    const Simulation sim = simulate(test::testContext(), scene);
+    const auto& s0 = capture::findLayer(sim.frames[0], "shadow")->pixels;
+    const auto& s1 = capture::findLayer(sim.frames[1], "shadow")->pixels;
+    const auto& ref = capture::findLayer(sim.frames[0], "reference.shadow")->pixels;
+    std::size_t changed = 0, penumbra = 0;
+    double noisySum = 0.0, refSum = 0.0;
+    for (std::size_t i = 0; i < s0.size(); ++i) {
+        CHECK((s0[i] == 0.0f || s0[i] == 1.0f)); // one sample: visible or not
+        changed += s0[i] != s1[i];
+        if (ref[i] > 0.05f && ref[i] < 0.95f) ++penumbra;
+        for (const auto& frame : sim.frames) noisySum += static_cast<double>(capture::findLayer(frame, "shadow")->pixels[i]);
+        refSum += static_cast<double>(ref[i]);
+    }
+    INFO("penumbra pixels " << penumbra << ", changed " << changed);
+    CHECK(penumbra > 20);
+    CHECK(changed > penumbra / 4);
+    // Mean over pixels and frames of the 1-sample estimate vs the converged mean.
+    const double n = static_cast<double>(s0.size());
+    CHECK(std::fabs(noisySum / (3.0 * n) - refSum / n) < 0.02);
+    GLINT_REQUIRE_NO_VALIDATION_ERRORS();
+}
+
+} // namespace
+} // namespace glint::scene
