@@ -46,6 +46,7 @@ Setup setupEffect(const BenchOptions& options) {
         desc.channels =
             options.farthest ? DepthPyramidChannels::ClosestAndFarthest : DepthPyramidChannels::Closest;
         desc.levelCount = options.levels;
+        desc.copyLevel0 = !options.skipLevel0;
         if (planDepthPyramid(desc, setup.plan, &error) != Result::Ok) throw std::invalid_argument(error);
         setup.inputName = "depth";
         setup.inputFormat = VK_FORMAT_R32_SFLOAT;
@@ -94,6 +95,9 @@ int runBench(const BenchOptions& options) {
     std::printf("effect %s at %ux%u, %u runs%s%s\n", options.effect.c_str(), options.width, options.height,
                 options.runs, options.reversed ? ", reversed depth" : "",
                 options.farthest ? ", closest+farthest" : "");
+    if (options.effect == "depth_pyramid")
+        std::printf("levels %s%s\n", options.levels ? std::to_string(options.levels).c_str() : "full chain",
+                    options.skipLevel0 ? ", level 0 not copied" : "");
     for (std::size_t pass = 0; pass < timings.passes.size(); ++pass) {
         std::vector<double> values;
         for (const auto& run : timings.times) values.push_back(run.at(pass));

@@ -21,6 +21,7 @@ struct BenchOptions {
     uint32_t levels = 0; // depth pyramid: 0 = full chain
     bool reversed = false;
     bool farthest = false;
+    bool skipLevel0 = false; // depth pyramid: leave level 0 unwritten
     bool validate = false;
 };
 

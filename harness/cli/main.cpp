@@ -35,6 +35,7 @@ int main(int argc, char** argv) {
     benchCommand->add_option("--levels", bench.levels, "depth pyramid levels (0 = full chain)");
     benchCommand->add_flag("--reversed", bench.reversed, "reversed depth (closest = max)");
     benchCommand->add_flag("--farthest", bench.farthest, "closest and farthest channels");
+    benchCommand->add_flag("--skip-level0", bench.skipLevel0, "depth pyramid: do not copy the input into level 0");
 
     glint::cli::SimulateOptions simulate;
     std::string simulateSize;

@@ -42,7 +42,8 @@ void sprinkleBadValues(std::vector<float>& depth, std::uint32_t seed) {
 
 } // namespace
 
-TEST_CASE("sanitization: non-finite is far, the rest is clamped to [0, 1], -0 is +0", "[reference]") {
+TEST_CASE("sanitization: non-finite is far, the rest is clamped to [0, 1], -0 and denormals are +0",
+          "[reference]") {
     for (const auto convention : {DepthConvention::Standard, DepthConvention::Reversed}) {
         const float far = convention == DepthConvention::Standard ? 1.0f : 0.0f;
         INFO("far " << far);

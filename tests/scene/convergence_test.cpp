@@ -28,7 +28,9 @@ double rmse(const std::vector<float>& a, const std::vector<float>& b) {
     return std::sqrt(sum / static_cast<double>(a.size()));
 }
 
-void checkConvergence(const Scene& scene, const char* layer) {
+// `stratified`: the estimator stratifies its samples, so the error may fall faster than
+// 1/sqrt(spp) (shadow cones are stratified in cos theta); only the lower bound applies.
+void checkConvergence(const Scene& scene, const char* layer, bool stratified) {
     const std::vector<float> truth = render(scene, layer, 1024, 1000);
     const double e4 = rmse(render(scene, layer, 4, 1), truth);
     const double e16 = rmse(render(scene, layer, 16, 2), truth);
@@ -37,9 +39,11 @@ void checkConvergence(const Scene& scene, const char* layer) {
     CHECK(e4 > 0.0);
     // Ideal ratio 2; the high-sample estimate's own noise (1024 spp) pulls the second ratio down a little.
     CHECK(e4 / e16 > 1.6);
-    CHECK(e4 / e16 < 2.5);
     CHECK(e16 / e64 > 1.5);
-    CHECK(e16 / e64 < 2.5);
+    if (!stratified) {
+        CHECK(e4 / e16 < 2.5);
+        CHECK(e16 / e64 < 2.5);
+    }
 }
 
 TEST_CASE("reference.reflection converges like 1/sqrt(spp)", "[scene][gpu]") {
@@ -47,7 +51,13 @@ TEST_CASE("reference.reflection converges like 1/sqrt(spp)", "[scene][gpu]") {
     scene.effects = {Effect::Reflections};
     scene.reference.reflections = true;
     scene.shadowSamples = 2;
-    checkConvergence(scene, "reference.reflection");
+    // No sun disc in the sky: a tiny, very bright disc makes the per-pixel error heavy-tailed,
+    // and RMSE over a few hundred pixels then measures luck rather than convergence.
+    scene.environment.sunDisc = false;
+    // Likewise no sharp highlights on reflected surfaces: the metal sphere becomes rough.
+    scene.materials[2].metallic = 0.0f;
+    scene.materials[2].roughness = 0.8f;
+    checkConvergence(scene, "reference.reflection", false);
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }
 
@@ -55,7 +65,8 @@ TEST_CASE("reference.shadow converges like 1/sqrt(spp)", "[scene][gpu]") {
     Scene scene = test::analyticScene(48, 27, 1);
     scene.effects = {Effect::Shadows};
     scene.reference.shadows = true;
-    checkConvergence(scene, "reference.shadow");
+    scene.lights[0].angularRadiusDegrees = 12.0f;
+    checkConvergence(scene, "reference.shadow", true);
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }
 

@@ -28,8 +28,9 @@
 // input size rounded up to multiples of 64; call GLINT_DEPTH_PYRAMID_Build from main with
 // SV_GroupID.xy, SV_GroupIndex and the constants of glint_depth_pyramid_constants.h.
 //
-// Non-finite depth becomes the far plane, values outside [0, 1] are clamped and -0 becomes
-// +0, so no NaN or Inf reaches any level and min/max never see an undefined operand.
+// Non-finite depth becomes the far plane, values outside [0, 1] are clamped, and -0 and
+// denormals become +0, so no NaN or Inf reaches any level, min/max never see an undefined
+// operand, and GPUs that flush denormals agree bit for bit with GPUs that keep them.
 #ifndef GLINT_DEPTH_PYRAMID_HLSLI
 #define GLINT_DEPTH_PYRAMID_HLSLI
 
@@ -48,8 +49,10 @@ void GLINT_DEPTH_PYRAMID_ResetCounter();
 // Level 1 of the tile (32x32), then levels 3 and 5 reuse it; levels 2, 4 and 6 go to the
 // second array. Alternating keeps every step's reads and writes in different arrays, so one
 // barrier per level is enough.
+// The last group reuses both arrays for the coarse levels (see BuildCoarseLevels), which is
+// why "even" holds 512 texels: a level of at most 1024 texels halves to at most 512.
 groupshared float2 g_glint_depth_pyramid_odd[1024];
-groupshared float2 g_glint_depth_pyramid_even[256];
+groupshared float2 g_glint_depth_pyramid_even[512];
 groupshared uint g_glint_depth_pyramid_arrivals;
 
 float GLINT_DEPTH_PYRAMID_Sanitize(float depth, float farDepth)
@@ -101,15 +104,31 @@ float2 GLINT_DEPTH_PYRAMID_ReduceShared(bool fromEven, uint2 p, uint side)
                                        g_glint_depth_pyramid_odd[i + side], g_glint_depth_pyramid_odd[i + side + 1]);
 }
 
+float2 GLINT_DEPTH_PYRAMID_LoadCoarse(uint2 texel, uint width, uint level, uint source)
+{
+    // source 0: the level is only in the (coherent) image; 1 / 2: it is also in the odd /
+    // even groupshared array, row-major with `width` texels per row.
+    if (source == 1)
+        return g_glint_depth_pyramid_odd[texel.y * width + texel.x];
+    if (source == 2)
+        return g_glint_depth_pyramid_even[texel.y * width + texel.x];
+    return GLINT_DEPTH_PYRAMID_LoadLevelCoherent(int2(texel), level);
+}
+
 // Levels 7 and up, built by the last group from level 6 with every group's texel in place.
 // The last row and column of each level also take the previous level's leftover odd row
-// and column, so the chain stays conservative without padding beyond 64.
+// and column, so the chain stays conservative without padding beyond 64. Level 6 comes from
+// the image; every level small enough (at most 1024 texels) is also kept in groupshared
+// memory, so the levels after it need only group barriers instead of device-scope round
+// trips through coherent memory.
 void GLINT_DEPTH_PYRAMID_BuildCoarseLevels(uint localIndex, uint2 level0Size, uint levelCount)
 {
+    uint source = 0;
     for (uint level = GLINT_DEPTH_PYRAMID_TILE_LEVELS; level < levelCount; ++level)
     {
         uint2 previousSize = max(level0Size >> (level - 1), uint2(1, 1));
         uint2 size = max(level0Size >> level, uint2(1, 1));
+        uint target = size.x * size.y <= 1024 ? (source == 1 ? 2 : 1) : 0;
         for (uint index = localIndex; index < size.x * size.y; index += GLINT_DEPTH_PYRAMID_GROUP_SIZE)
         {
             uint2 texel = uint2(index % size.x, index / size.x);
@@ -119,15 +138,24 @@ void GLINT_DEPTH_PYRAMID_BuildCoarseLevels(uint localIndex, uint2 level0Size, ui
                 last.x = previousSize.x - 1;
             if (texel.y == size.y - 1)
                 last.y = previousSize.y - 1;
-            float2 value = GLINT_DEPTH_PYRAMID_LoadLevelCoherent(int2(first), level - 1);
+            float2 value = GLINT_DEPTH_PYRAMID_LoadCoarse(first, previousSize.x, level - 1, source);
             for (uint y = first.y; y <= last.y; ++y)
                 for (uint x = first.x; x <= last.x; ++x)
-                    value = GLINT_DEPTH_PYRAMID_Reduce(value, GLINT_DEPTH_PYRAMID_LoadLevelCoherent(int2(x, y), level - 1));
+                    value = GLINT_DEPTH_PYRAMID_Reduce(value,
+                                                       GLINT_DEPTH_PYRAMID_LoadCoarse(uint2(x, y), previousSize.x, level - 1, source));
             GLINT_DEPTH_PYRAMID_StoreLevel(int2(texel), level, value);
+            if (target == 1)
+                g_glint_depth_pyramid_odd[index] = value;
+            else if (target == 2)
+                g_glint_depth_pyramid_even[index] = value;
         }
-        // Makes this level's stores, from every thread of the group, visible to the next
-        // level's coherent loads.
-        DeviceMemoryBarrierWithGroupSync();
+        // With the level in groupshared memory a group barrier suffices; otherwise this
+        // level's image stores from every thread must reach the next level's coherent loads.
+        if (target != 0)
+            GroupMemoryBarrierWithGroupSync();
+        else
+            DeviceMemoryBarrierWithGroupSync();
+        source = target;
     }
 }
 
