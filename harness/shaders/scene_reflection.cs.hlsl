@@ -41,10 +41,8 @@ float3 SceneSampleVndf(float3 ve, float alpha, float u1, float u2)
 {
     if (any(id.xy >= g_scene.size)) return;
     float3 origin, dir;
-    ScenePrimaryRay(id.xy, origin, dir);
-    SceneHit hit = SceneTrace(origin, dir, 3.0e38, false);
-    bool inside = false;
-    if (hit.t > 0.0) SceneDeviceDepth(origin + dir * hit.t, inside);
+    SceneHit hit;
+    bool inside = ScenePrimaryHit(id.xy, origin, dir, hit);
     float3 result = 0.0;
     if (inside) {
         SceneSurface s = SceneSurfaceAt(hit, origin, dir);

@@ -20,10 +20,8 @@
 {
     if (any(id.xy >= g_scene.size)) return;
     float3 origin, dir;
-    ScenePrimaryRay(id.xy, origin, dir);
-    SceneHit hit = SceneTrace(origin, dir, 3.0e38, false);
-    bool inside = false;
-    if (hit.t > 0.0) SceneDeviceDepth(origin + dir * hit.t, inside);
+    SceneHit hit;
+    bool inside = ScenePrimaryHit(id.xy, origin, dir, hit);
     float3 color = inside ? SceneShade(SceneSurfaceAt(hit, origin, dir), -dir) : SceneEnvironment(dir);
     g_color[id.xy] = float4(SceneFinite(color), 1.0);
 }

@@ -168,4 +168,15 @@ float SceneDeviceDepth(float3 position, out bool inside)
     return inside ? d : g_scene.backgroundDepth;
 }
 
+// The primary ray through a pixel centre and what it hits. Returns true when the hit lies
+// between the near and far planes; otherwise the pixel shows the background.
+bool ScenePrimaryHit(uint2 pixel, out float3 origin, out float3 dir, out SceneHit hit)
+{
+    ScenePrimaryRay(pixel, origin, dir);
+    hit = SceneTrace(origin, dir, 3.0e38, false);
+    bool inside = false;
+    if (hit.t > 0.0) SceneDeviceDepth(origin + dir * hit.t, inside);
+    return inside;
+}
+
 #endif // GLINT_SCENE_TRACE_HLSLI
