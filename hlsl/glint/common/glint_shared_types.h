@@ -15,9 +15,10 @@ struct uint2 { uint x, y; };
 struct uint4 { uint x, y, z, w; };
 struct float2 { float x, y; };
 struct float4 { float x, y, z, w; };
-// Row-major 4x4 (m[row * 4 + column]); HLSL declares it GLINT_ROW_MAJOR float4x4 so that the
-// memory layout is the same in both languages and mul(M, v) means M.v.
-struct float4x4 { float m[16]; };
+// Matrices are not a type here: glslang ignores row_major on a float4x4 member of a struct
+// used as ConstantBuffer<T>, so the two compilers would disagree on the layout. Constants
+// carry a matrix M (column-vector convention, M.p) as four float4 rows, and the shader
+// computes M.p as float4(dot(row0, p), dot(row1, p), dot(row2, p), dot(row3, p)).
 } // namespace glint::shared
 
 #define GLINT_CONSTANTS_BEGIN(name) struct alignas(16) name {
@@ -25,12 +26,10 @@ struct float4x4 { float m[16]; };
     }                                                                                                      \
     ;                                                                                                      \
     static_assert(sizeof(name) % 16 == 0, #name " must be whole 16-byte registers")
-#define GLINT_ROW_MAJOR
 #define GLINT_SHARED_USING using namespace glint::shared
 #else
 #define GLINT_CONSTANTS_BEGIN(name) struct name {
 #define GLINT_CONSTANTS_END(name) }
-#define GLINT_ROW_MAJOR row_major
 #define GLINT_SHARED_USING
 #endif
 
