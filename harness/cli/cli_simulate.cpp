@@ -34,8 +34,8 @@ int runSimulate(const SimulateOptions& options) {
 
         std::printf("device: %s, driver %s %s\n", context.info.name.c_str(), context.info.driverName.c_str(),
                     context.info.driverInfo.c_str());
-        std::printf("scene %s: %ux%u, %u frame(s), %zu primitives, effects:", options.scenePath.c_str(), scene.width,
-                    scene.height, scene.frameCount, sim.primitives);
+        std::printf("scene %s: %ux%u, %u frame(s), %zu primitives, effects:", options.scenePath.c_str(),
+                    scene.width, scene.height, scene.frameCount, sim.primitives);
         for (const std::string& effect : scene::captureEffects(scene)) std::printf(" %s", effect.c_str());
         std::printf("\nlayers:");
         for (const std::string& layer : sim.layers) std::printf(" %s", layer.c_str());

@@ -35,18 +35,23 @@ int main(int argc, char** argv) {
     benchCommand->add_option("--levels", bench.levels, "depth pyramid levels (0 = full chain)");
     benchCommand->add_flag("--reversed", bench.reversed, "reversed depth (closest = max)");
     benchCommand->add_flag("--farthest", bench.farthest, "closest and farthest channels");
-    benchCommand->add_flag("--skip-level0", bench.skipLevel0, "depth pyramid: do not copy the input into level 0");
+    benchCommand->add_flag("--skip-level0", bench.skipLevel0,
+                           "depth pyramid: do not copy the input into level 0");
 
     glint::cli::SimulateOptions simulate;
     std::string simulateSize;
     uint32_t simulateSeed = 0;
-    CLI::App* simulateCommand = app.add_subcommand("simulate", "Render a scene file (TOML) into a capture sequence");
-    simulateCommand->add_option("scene", simulate.scenePath, "scene file, e.g. harness/scenes/glossy_room.toml")->required();
+    CLI::App* simulateCommand =
+        app.add_subcommand("simulate", "Render a scene file (TOML) into a capture sequence");
+    simulateCommand
+        ->add_option("scene", simulate.scenePath, "scene file, e.g. harness/scenes/glossy_room.toml")
+        ->required();
     simulateCommand->add_option("--out", simulate.outDir, "output sequence folder")->required();
     simulateCommand->add_option("--size", simulateSize, "override the resolution, WxH");
     simulateCommand->add_option("--frames", simulate.frames, "override the frame count");
     simulateCommand->add_option("--spp", simulate.spp, "override the reference samples per pixel");
-    CLI::Option* seedOption = simulateCommand->add_option("--seed", simulateSeed, "override the scene's seed");
+    CLI::Option* seedOption =
+        simulateCommand->add_option("--seed", simulateSeed, "override the scene's seed");
 
     try {
         app.parse(argc, argv);

@@ -12,8 +12,10 @@ using shaders::float3;
 using shaders::ScenePrimitive;
 
 struct Box {
-    float lo[3] = {std::numeric_limits<float>::max(), std::numeric_limits<float>::max(), std::numeric_limits<float>::max()};
-    float hi[3] = {-std::numeric_limits<float>::max(), -std::numeric_limits<float>::max(), -std::numeric_limits<float>::max()};
+    float lo[3] = {std::numeric_limits<float>::max(), std::numeric_limits<float>::max(),
+                   std::numeric_limits<float>::max()};
+    float hi[3] = {-std::numeric_limits<float>::max(), -std::numeric_limits<float>::max(),
+                   -std::numeric_limits<float>::max()};
     void grow(const float p[3]) {
         for (int k = 0; k < 3; ++k) {
             lo[k] = std::min(lo[k], p[k]);
@@ -89,7 +91,8 @@ struct Builder {
             std::array<Box, kBins> binBox{};
             std::array<std::size_t, kBins> binCount{};
             for (std::size_t i = begin; i < end; ++i) {
-                const int b = std::min(kBins - 1, static_cast<int>(kBins * (items[i].centre[axis] - lo) / extent));
+                const int b =
+                    std::min(kBins - 1, static_cast<int>(kBins * (items[i].centre[axis] - lo) / extent));
                 binBox[static_cast<std::size_t>(b)].grow(items[i].box);
                 ++binCount[static_cast<std::size_t>(b)];
             }
@@ -107,7 +110,8 @@ struct Builder {
                 left.grow(binBox[static_cast<std::size_t>(b)]);
                 leftCount += binCount[static_cast<std::size_t>(b)];
                 if (leftCount == 0 || leftCount == n) continue;
-                const float cost = left.area() * static_cast<float>(leftCount) + rightCost[static_cast<std::size_t>(b + 1)];
+                const float cost =
+                    left.area() * static_cast<float>(leftCount) + rightCost[static_cast<std::size_t>(b + 1)];
                 if (cost < bestCost) {
                     bestCost = cost;
                     bestAxis = axis;
@@ -119,10 +123,12 @@ struct Builder {
         std::size_t mid = begin;
         if (bestAxis >= 0 && (bestCost < leafCost || n > kMaxLeafSize)) {
             const float lo = centroids.lo[bestAxis], extent = centroids.hi[bestAxis] - lo;
-            const auto it = std::partition(items.begin() + static_cast<std::ptrdiff_t>(begin), items.begin() + static_cast<std::ptrdiff_t>(end),
-                                           [&](const Item& item) {
-                                               return std::min(kBins - 1, static_cast<int>(kBins * (item.centre[bestAxis] - lo) / extent)) <= bestSplit;
-                                           });
+            const auto it = std::partition(
+                items.begin() + static_cast<std::ptrdiff_t>(begin),
+                items.begin() + static_cast<std::ptrdiff_t>(end), [&](const Item& item) {
+                    return std::min(kBins - 1, static_cast<int>(kBins * (item.centre[bestAxis] - lo) /
+                                                                extent)) <= bestSplit;
+                });
             mid = static_cast<std::size_t>(it - items.begin());
         } else if (n > kMaxLeafSize) {
             // All centroids coincide: split by count so that leaves stay small.

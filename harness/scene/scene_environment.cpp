@@ -12,7 +12,8 @@ namespace glint::scene {
 Vec3 latLongDirection(std::uint32_t x, std::uint32_t y, std::uint32_t width, std::uint32_t height) {
     const double longitude = 2.0 * std::numbers::pi * (0.5 - (x + 0.5) / width);
     const double latitude = std::numbers::pi * (0.5 - (y + 0.5) / height);
-    return {static_cast<float>(std::cos(latitude) * std::sin(longitude)), static_cast<float>(std::sin(latitude)),
+    return {static_cast<float>(std::cos(latitude) * std::sin(longitude)),
+            static_cast<float>(std::sin(latitude)),
             static_cast<float>(std::cos(latitude) * std::cos(longitude))};
 }
 
@@ -26,7 +27,8 @@ capture::Environment bakeEnvironment(const Scene& scene) {
             throw SceneError(std::string(error.what()));
         }
         if (env.layout != capture::EnvironmentLayout::LatLong)
-            throw SceneError(desc.file.string() + ": environment.file must be a lat-long map (cube maps are not supported)");
+            throw SceneError(desc.file.string() +
+                             ": environment.file must be a lat-long map (cube maps are not supported)");
         for (float& v : env.rgb) v = std::isfinite(v) ? std::max(v, 0.0f) * desc.intensity : 0.0f;
         env.nonFinite = 0;
         return env;
@@ -46,13 +48,16 @@ capture::Environment bakeEnvironment(const Scene& scene) {
             if (desc.sunDisc) {
                 for (const LightDesc& light : scene.lights) {
                     if (light.kind != LightKind::Directional || light.angularRadiusDegrees <= 0.0f) continue;
-                    const double radius = static_cast<double>(light.angularRadiusDegrees) * std::numbers::pi / 180.0;
-                    const double cosAngle = static_cast<double>(d[0] * light.direction[0] + d[1] * light.direction[1] + d[2] * light.direction[2]);
+                    const double radius =
+                        static_cast<double>(light.angularRadiusDegrees) * std::numbers::pi / 180.0;
+                    const double cosAngle = static_cast<double>(
+                        d[0] * light.direction[0] + d[1] * light.direction[1] + d[2] * light.direction[2]);
                     if (cosAngle < std::cos(radius)) continue;
                     // The disc's radiance delivers the light's irradiance over its solid angle.
                     const double solidAngle = 2.0 * std::numbers::pi * (1.0 - std::cos(radius));
                     for (std::size_t k = 0; k < 3; ++k)
-                        c[k] += static_cast<float>(static_cast<double>(light.color[k] * light.intensity) / solidAngle);
+                        c[k] += static_cast<float>(static_cast<double>(light.color[k] * light.intensity) /
+                                                   solidAngle);
                 }
             }
             const std::size_t i = (std::size_t{y} * env.width + x) * 3;

@@ -30,7 +30,8 @@ struct Reader {
     }
 
     // Unknown keys are errors: a misspelt key silently ignored is a scene that lies.
-    void onlyKeys(const toml::table& table, const std::string& prefix, std::initializer_list<std::string_view> allowed) const {
+    void onlyKeys(const toml::table& table, const std::string& prefix,
+                  std::initializer_list<std::string_view> allowed) const {
         for (const auto& [key, node] : table) {
             bool known = false;
             for (std::string_view name : allowed) known = known || key.str() == name;
@@ -60,20 +61,21 @@ struct Reader {
         return *value;
     }
 
-    float real(const toml::table& t, const std::string& prefix, const char* key, float fallback, double lo = -1e30,
-               double hi = 1e30) const {
+    float real(const toml::table& t, const std::string& prefix, const char* key, float fallback,
+               double lo = -1e30, double hi = 1e30) const {
         return static_cast<float>(number(t, prefix, key, fallback, lo, hi));
     }
 
-    std::uint32_t count(const toml::table& t, const std::string& prefix, const char* key, std::uint32_t fallback,
-                        std::int64_t lo, std::int64_t hi) const {
+    std::uint32_t count(const toml::table& t, const std::string& prefix, const char* key,
+                        std::uint32_t fallback, std::int64_t lo, std::int64_t hi) const {
         const toml::node* node = t.get(key);
         if (!node) return fallback;
         std::optional<std::int64_t> value = node->value_exact<std::int64_t>();
         if (!value) fail(node, join(prefix, key), "expected an integer");
         if (*value < lo || *value > hi)
             fail(node, join(prefix, key),
-                 "value " + std::to_string(*value) + " is outside [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+                 "value " + std::to_string(*value) + " is outside [" + std::to_string(lo) + ", " +
+                     std::to_string(hi) + "]");
         return static_cast<std::uint32_t>(*value);
     }
 
@@ -85,7 +87,8 @@ struct Reader {
         return *value;
     }
 
-    std::string text(const toml::table& t, const std::string& prefix, const char* key, const std::string& fallback) const {
+    std::string text(const toml::table& t, const std::string& prefix, const char* key,
+                     const std::string& fallback) const {
         const toml::node* node = t.get(key);
         if (!node) return fallback;
         std::optional<std::string> value = node->value_exact<std::string>();
@@ -95,7 +98,8 @@ struct Reader {
 
     std::vector<double> numbers(const toml::node* node, const std::string& key, std::size_t n) const {
         const toml::array* array = node->as_array();
-        if (!array || array->size() != n) fail(node, key, "expected an array of " + std::to_string(n) + " numbers");
+        if (!array || array->size() != n)
+            fail(node, key, "expected an array of " + std::to_string(n) + " numbers");
         std::vector<double> out;
         for (const toml::node& element : *array) {
             std::optional<double> value = element.value<double>();
@@ -112,7 +116,8 @@ struct Reader {
         return {static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])};
     }
 
-    std::optional<capture::Mat4> matrix(const toml::table& t, const std::string& prefix, const char* key) const {
+    std::optional<capture::Mat4> matrix(const toml::table& t, const std::string& prefix,
+                                        const char* key) const {
         const toml::node* node = t.get(key);
         if (!node) return std::nullopt;
         const std::vector<double> v = numbers(node, join(prefix, key), 16);
@@ -130,12 +135,14 @@ struct Reader {
     }
 
     // An array of tables ([[key]]); empty when absent.
-    std::vector<const toml::table*> tables(const toml::table& t, const std::string& prefix, const char* key) const {
+    std::vector<const toml::table*> tables(const toml::table& t, const std::string& prefix,
+                                           const char* key) const {
         std::vector<const toml::table*> out;
         const toml::node* node = t.get(key);
         if (!node) return out;
         const toml::array* array = node->as_array();
-        if (!array) fail(node, join(prefix, key), "expected an array of tables ([[" + join(prefix, key) + "]])");
+        if (!array)
+            fail(node, join(prefix, key), "expected an array of tables ([[" + join(prefix, key) + "]])");
         for (const toml::node& element : *array) {
             if (!element.is_table()) fail(&element, join(prefix, key), "expected an array of tables");
             out.push_back(element.as_table());
@@ -147,7 +154,8 @@ struct Reader {
         std::filesystem::path p = text(t, prefix, key, "");
         if (p.empty()) fail(t.get(key) ? t.get(key) : &t, join(prefix, key), "a file path is required");
         if (p.is_relative()) p = file.parent_path() / p;
-        if (!std::filesystem::is_regular_file(p)) fail(t.get(key), join(prefix, key), "file '" + p.string() + "' does not exist");
+        if (!std::filesystem::is_regular_file(p))
+            fail(t.get(key), join(prefix, key), "file '" + p.string() + "' does not exist");
         return p;
     }
 };
@@ -162,7 +170,9 @@ std::string indexed(const char* key, std::size_t i) {
 
 void readCamera(const Reader& r, const toml::table& t, Scene& scene) {
     const std::string p = "camera";
-    r.onlyKeys(t, p, {"position", "target", "up", "fov_y", "near", "far", "depth", "ndc_y_down", "view", "projection", "keyframes"});
+    r.onlyKeys(t, p,
+               {"position", "target", "up", "fov_y", "near", "far", "depth", "ndc_y_down", "view",
+                "projection", "keyframes"});
     CameraDesc& c = scene.camera;
     CameraKey key;
     key.position = r.vec3(t, p, "position", key.position);
@@ -172,10 +182,15 @@ void readCamera(const Reader& r, const toml::table& t, Scene& scene) {
     c.nearZ = r.number(t, p, "near", c.nearZ, 1e-6, 1e9);
     c.farZ = r.number(t, p, "far", c.farZ, 1e-6, 1e12);
     const std::string depth = r.text(t, p, "depth", "standard");
-    if (depth == "standard") c.depth = capture::DepthConvention::Standard;
-    else if (depth == "reversed") c.depth = capture::DepthConvention::Reversed;
-    else if (depth == "reversed_infinite") c.depth = capture::DepthConvention::ReversedInfinite;
-    else r.fail(t.get("depth"), "camera.depth", "expected \"standard\", \"reversed\" or \"reversed_infinite\"");
+    if (depth == "standard")
+        c.depth = capture::DepthConvention::Standard;
+    else if (depth == "reversed")
+        c.depth = capture::DepthConvention::Reversed;
+    else if (depth == "reversed_infinite")
+        c.depth = capture::DepthConvention::ReversedInfinite;
+    else
+        r.fail(t.get("depth"), "camera.depth",
+               "expected \"standard\", \"reversed\" or \"reversed_infinite\"");
     if (c.depth != capture::DepthConvention::ReversedInfinite && c.farZ <= c.nearZ)
         r.fail(t.get("far"), "camera.far", "must be greater than camera.near");
     c.ndcYDown = r.flag(t, p, "ndc_y_down", false);
@@ -183,14 +198,16 @@ void readCamera(const Reader& r, const toml::table& t, Scene& scene) {
     c.projection = r.matrix(t, p, "projection");
     c.keys = {key};
     const auto keys = r.tables(t, p, "keyframes");
-    if (!keys.empty() && c.view) r.fail(t.get("keyframes"), "camera.keyframes", "cannot animate a camera given by a view matrix");
+    if (!keys.empty() && c.view)
+        r.fail(t.get("keyframes"), "camera.keyframes", "cannot animate a camera given by a view matrix");
     if (!keys.empty()) c.keys.clear();
     for (std::size_t i = 0; i < keys.size(); ++i) {
         const std::string kp = "camera." + indexed("keyframes", i);
         r.onlyKeys(*keys[i], kp, {"frame", "position", "target"});
         CameraKey k = key;
         k.frame = r.real(*keys[i], kp, "frame", 0.0f, -1e6, 1e6);
-        if (!c.keys.empty() && k.frame <= c.keys.back().frame) r.fail(keys[i], kp + ".frame", "keyframes must be in increasing frame order");
+        if (!c.keys.empty() && k.frame <= c.keys.back().frame)
+            r.fail(keys[i], kp + ".frame", "keyframes must be in increasing frame order");
         k.position = r.vec3(*keys[i], kp, "position", c.keys.empty() ? key.position : c.keys.back().position);
         k.target = r.vec3(*keys[i], kp, "target", c.keys.empty() ? key.target : c.keys.back().target);
         c.keys.push_back(k);
@@ -202,9 +219,12 @@ void readEnvironment(const Reader& r, const toml::table& t, Scene& scene) {
     r.onlyKeys(t, p, {"type", "file", "intensity", "zenith", "horizon", "ground", "sun_disc", "resolution"});
     EnvironmentDesc& e = scene.environment;
     const std::string type = r.text(t, p, "type", "sky");
-    if (type == "sky") e.kind = EnvironmentKind::Sky;
-    else if (type == "map") e.kind = EnvironmentKind::Map;
-    else r.fail(t.get("type"), "environment.type", "expected \"sky\" or \"map\"");
+    if (type == "sky")
+        e.kind = EnvironmentKind::Sky;
+    else if (type == "map")
+        e.kind = EnvironmentKind::Map;
+    else
+        r.fail(t.get("type"), "environment.type", "expected \"sky\" or \"map\"");
     if (e.kind == EnvironmentKind::Map) e.file = r.path(t, p, "file");
     e.intensity = r.real(t, p, "intensity", e.intensity, 0.0, 1e6);
     e.zenith = r.vec3(t, p, "zenith", e.zenith);
@@ -213,8 +233,10 @@ void readEnvironment(const Reader& r, const toml::table& t, Scene& scene) {
     e.sunDisc = r.flag(t, p, "sun_disc", e.sunDisc);
     if (const toml::node* node = t.get("resolution")) {
         const std::vector<double> v = r.numbers(node, "environment.resolution", 2);
-        if (v[0] < 4 || v[1] < 2 || v[0] > 8192 || v[1] > 4096 || v[0] != std::floor(v[0]) || v[1] != std::floor(v[1]))
-            r.fail(node, "environment.resolution", "expected [width, height] integers in [4, 8192] x [2, 4096]");
+        if (v[0] < 4 || v[1] < 2 || v[0] > 8192 || v[1] > 4096 || v[0] != std::floor(v[0]) ||
+            v[1] != std::floor(v[1]))
+            r.fail(node, "environment.resolution",
+                   "expected [width, height] integers in [4, 8192] x [2, 4096]");
         e.width = static_cast<std::uint32_t>(v[0]);
         e.height = static_cast<std::uint32_t>(v[1]);
     }
@@ -228,11 +250,15 @@ void readLights(const Reader& r, const toml::table& root, Scene& scene) {
         r.onlyKeys(t, p, {"type", "direction", "position", "color", "intensity", "angular_radius", "radius"});
         LightDesc l;
         const std::string type = r.text(t, p, "type", "directional");
-        if (type == "directional") l.kind = LightKind::Directional;
-        else if (type == "sphere") l.kind = LightKind::Sphere;
-        else r.fail(t.get("type"), p + ".type", "expected \"directional\" or \"sphere\"");
+        if (type == "directional")
+            l.kind = LightKind::Directional;
+        else if (type == "sphere")
+            l.kind = LightKind::Sphere;
+        else
+            r.fail(t.get("type"), p + ".type", "expected \"directional\" or \"sphere\"");
         l.direction = r.vec3(t, p, "direction", l.direction);
-        const float len = std::sqrt(l.direction[0] * l.direction[0] + l.direction[1] * l.direction[1] + l.direction[2] * l.direction[2]);
+        const float len = std::sqrt(l.direction[0] * l.direction[0] + l.direction[1] * l.direction[1] +
+                                    l.direction[2] * l.direction[2]);
         if (!(len > 1e-6f)) r.fail(t.get("direction"), p + ".direction", "must not be zero");
         for (float& c : l.direction) c /= len;
         l.position = r.vec3(t, p, "position", l.position);
@@ -250,7 +276,8 @@ std::map<std::string, std::uint32_t> readMaterials(const Reader& r, const toml::
     if (!materials) return byName;
     for (const auto& [name, node] : *materials) {
         const std::string p = "materials." + std::string(name.str());
-        if (!node.is_table()) r.fail(&node, p, "expected a table ([materials." + std::string(name.str()) + "])");
+        if (!node.is_table())
+            r.fail(&node, p, "expected a table ([materials." + std::string(name.str()) + "])");
         const toml::table& t = *node.as_table();
         r.onlyKeys(t, p, {"base_color", "metallic", "roughness", "emissive", "roughness_ramp"});
         MaterialDesc m;
@@ -277,7 +304,8 @@ std::map<std::string, std::uint32_t> readMaterials(const Reader& r, const toml::
     return byName;
 }
 
-ObjectKey readObjectKey(const Reader& r, const toml::table& t, const std::string& p, const ObjectKey& fallback) {
+ObjectKey readObjectKey(const Reader& r, const toml::table& t, const std::string& p,
+                        const ObjectKey& fallback) {
     ObjectKey k = fallback;
     k.position = r.vec3(t, p, "position", k.position);
     k.rotationDegrees = r.vec3(t, p, "rotation", k.rotationDegrees);
@@ -285,24 +313,34 @@ ObjectKey readObjectKey(const Reader& r, const toml::table& t, const std::string
     return k;
 }
 
-void readObjects(const Reader& r, const toml::table& root, Scene& scene, const std::map<std::string, std::uint32_t>& materials) {
+void readObjects(const Reader& r, const toml::table& root, Scene& scene,
+                 const std::map<std::string, std::uint32_t>& materials) {
     const auto objects = r.tables(root, "", "objects");
     for (std::size_t i = 0; i < objects.size(); ++i) {
         const toml::table& t = *objects[i];
         const std::string p = indexed("objects", i);
-        r.onlyKeys(t, p, {"name", "type", "material", "size", "radius", "file", "fit_size", "position", "rotation", "scale", "keyframes"});
+        r.onlyKeys(t, p,
+                   {"name", "type", "material", "size", "radius", "file", "fit_size", "position", "rotation",
+                    "scale", "keyframes"});
         ObjectDesc o;
         o.name = r.text(t, p, "name", p);
         const std::string type = r.text(t, p, "type", "");
-        if (type == "plane") o.shape = ShapeKind::Plane;
-        else if (type == "box") o.shape = ShapeKind::Box;
-        else if (type == "sphere") o.shape = ShapeKind::Sphere;
-        else if (type == "mesh") o.shape = ShapeKind::Mesh;
-        else r.fail(t.get("type") ? t.get("type") : &t, p + ".type", "expected \"plane\", \"box\", \"sphere\" or \"mesh\"");
+        if (type == "plane")
+            o.shape = ShapeKind::Plane;
+        else if (type == "box")
+            o.shape = ShapeKind::Box;
+        else if (type == "sphere")
+            o.shape = ShapeKind::Sphere;
+        else if (type == "mesh")
+            o.shape = ShapeKind::Mesh;
+        else
+            r.fail(t.get("type") ? t.get("type") : &t, p + ".type",
+                   "expected \"plane\", \"box\", \"sphere\" or \"mesh\"");
         const std::string material = r.text(t, p, "material", "");
         const auto found = materials.find(material);
         if (found == materials.end())
-            r.fail(t.get("material") ? t.get("material") : &t, p + ".material", "unknown material '" + material + "'");
+            r.fail(t.get("material") ? t.get("material") : &t, p + ".material",
+                   "unknown material '" + material + "'");
         o.material = found->second;
         if (const toml::node* node = t.get("size")) {
             const std::vector<double> v = r.numbers(node, p + ".size", o.shape == ShapeKind::Plane ? 2 : 3);
@@ -321,7 +359,8 @@ void readObjects(const Reader& r, const toml::table& root, Scene& scene, const s
             r.onlyKeys(*keys[k], kp, {"frame", "position", "rotation", "scale"});
             ObjectKey key = readObjectKey(r, *keys[k], kp, o.keys.empty() ? base : o.keys.back());
             key.frame = r.real(*keys[k], kp, "frame", 0.0f, -1e6, 1e6);
-            if (!o.keys.empty() && key.frame <= o.keys.back().frame) r.fail(keys[k], kp + ".frame", "keyframes must be in increasing frame order");
+            if (!o.keys.empty() && key.frame <= o.keys.back().frame)
+                r.fail(keys[k], kp + ".frame", "keyframes must be in increasing frame order");
             o.keys.push_back(key);
         }
         scene.objects.push_back(o);
@@ -330,16 +369,23 @@ void readObjects(const Reader& r, const toml::table& root, Scene& scene, const s
 
 void readEffects(const Reader& r, const toml::table& root, Scene& scene) {
     const toml::node* node = root.get("effects");
-    if (!node) r.fail(&root, "effects", "missing: declare what the capture is for, e.g. effects = [\"reflections\"]");
+    if (!node)
+        r.fail(&root, "effects",
+               "missing: declare what the capture is for, e.g. effects = [\"reflections\"]");
     const toml::array* array = node->as_array();
     if (!array || array->empty()) r.fail(node, "effects", "expected a non-empty array of strings");
     for (const toml::node& element : *array) {
         std::optional<std::string> name = element.value_exact<std::string>();
         Effect e{};
-        if (name == "reflections") e = Effect::Reflections;
-        else if (name == "shadows") e = Effect::Shadows;
-        else if (name == "hybrid") e = Effect::Hybrid;
-        else r.fail(&element, "effects", "unknown effect '" + name.value_or("?") + "' (known: reflections, shadows, hybrid)");
+        if (name == "reflections")
+            e = Effect::Reflections;
+        else if (name == "shadows")
+            e = Effect::Shadows;
+        else if (name == "hybrid")
+            e = Effect::Hybrid;
+        else
+            r.fail(&element, "effects",
+                   "unknown effect '" + name.value_or("?") + "' (known: reflections, shadows, hybrid)");
         if (hasEffect(scene, e)) r.fail(&element, "effects", "effect '" + *name + "' is listed twice");
         scene.effects.push_back(e);
     }
@@ -372,13 +418,15 @@ Scene parseScene(const std::string& text, const std::filesystem::path& file) {
         throw SceneError(message);
     }
     const Reader r{file};
-    r.onlyKeys(root, "", {"resolution", "frames", "frame_rate", "seed", "shadow_samples", "shadow_light", "effects",
-                          "camera", "environment", "lights", "materials", "objects", "reference"});
+    r.onlyKeys(root, "",
+               {"resolution", "frames", "frame_rate", "seed", "shadow_samples", "shadow_light", "effects",
+                "camera", "environment", "lights", "materials", "objects", "reference"});
     Scene scene;
     scene.file = file;
     if (const toml::node* node = root.get("resolution")) {
         const std::vector<double> v = r.numbers(node, "resolution", 2);
-        if (v[0] < 1 || v[1] < 1 || v[0] > 16384 || v[1] > 16384 || v[0] != std::floor(v[0]) || v[1] != std::floor(v[1]))
+        if (v[0] < 1 || v[1] < 1 || v[0] > 16384 || v[1] > 16384 || v[0] != std::floor(v[0]) ||
+            v[1] != std::floor(v[1]))
             r.fail(node, "resolution", "expected [width, height] integers in 1 .. 16384");
         scene.width = static_cast<std::uint32_t>(v[0]);
         scene.height = static_cast<std::uint32_t>(v[1]);
@@ -396,7 +444,8 @@ Scene parseScene(const std::string& text, const std::filesystem::path& file) {
     scene.shadowLight = r.count(root, "", "shadow_light", 0, 0, 1000000);
     if (needsShadows(scene) && scene.shadowLight >= scene.lights.size())
         r.fail(root.get("shadow_light") ? root.get("shadow_light") : &root, "shadow_light",
-               "effect 'shadows' needs a light: " + std::to_string(scene.lights.size()) + " light(s) declared");
+               "effect 'shadows' needs a light: " + std::to_string(scene.lights.size()) +
+                   " light(s) declared");
     if (const toml::table* t = r.table(root, "", "reference")) {
         r.onlyKeys(*t, "reference", {"reflections", "shadows", "spp"});
         scene.reference.reflections = r.flag(*t, "reference", "reflections", false);

@@ -84,8 +84,8 @@ shaders::float3 apply(const Mat4& m, const Vec3& p) {
     return f3(q.x, q.y, q.z);
 }
 
-void addTriangle(FrameGeometry& g, const Mat4& m, const Vec3& a, const Vec3& b, const Vec3& c, std::uint32_t material,
-                 std::uint32_t object) {
+void addTriangle(FrameGeometry& g, const Mat4& m, const Vec3& a, const Vec3& b, const Vec3& c,
+                 std::uint32_t material, std::uint32_t object) {
     shaders::ScenePrimitive p{};
     p.kind = GLINT_SCENE_PRIM_TRIANGLE;
     p.p0 = apply(m, a);
@@ -96,8 +96,8 @@ void addTriangle(FrameGeometry& g, const Mat4& m, const Vec3& a, const Vec3& b, 
     g.primitives.push_back(p);
 }
 
-void addQuad(FrameGeometry& g, const Mat4& m, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, std::uint32_t material,
-             std::uint32_t object) {
+void addQuad(FrameGeometry& g, const Mat4& m, const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d,
+             std::uint32_t material, std::uint32_t object) {
     addTriangle(g, m, a, b, c, material, object);
     addTriangle(g, m, a, c, d, material, object);
 }
@@ -106,7 +106,8 @@ void addQuad(FrameGeometry& g, const Mat4& m, const Vec3& a, const Vec3& b, cons
 // fitSize. Real models come in any unit; fitting makes them usable without knowing it.
 Mat4 fitMatrix(const ObjectDesc& object, const Mesh& mesh) {
     if (object.fitSize <= 0.0f || mesh.positions.empty()) return capture::identity();
-    Vec3 lo{std::numeric_limits<float>::max(), std::numeric_limits<float>::max(), std::numeric_limits<float>::max()};
+    Vec3 lo{std::numeric_limits<float>::max(), std::numeric_limits<float>::max(),
+            std::numeric_limits<float>::max()};
     Vec3 hi{-lo[0], -lo[1], -lo[2]};
     for (const Vec3& p : mesh.positions)
         for (std::size_t k = 0; k < 3; ++k) {
@@ -115,7 +116,8 @@ Mat4 fitMatrix(const ObjectDesc& object, const Mesh& mesh) {
         }
     const float extent = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2], 1e-20f});
     const float s = object.fitSize / extent;
-    return capture::multiply(scaling({s, s, s}), translation({-0.5f * (lo[0] + hi[0]), -lo[1], -0.5f * (lo[2] + hi[2])}));
+    return capture::multiply(scaling({s, s, s}),
+                             translation({-0.5f * (lo[0] + hi[0]), -lo[1], -0.5f * (lo[2] + hi[2])}));
 }
 
 } // namespace
@@ -126,7 +128,8 @@ Mat4 objectMatrix(const ObjectDesc& object, double frame) {
     const Vec3 position = lerp(a->position, b->position, t);
     const Vec3 rot = lerp(a->rotationDegrees, b->rotationDegrees, t);
     const Vec3 scale = lerp(a->scale, b->scale, t);
-    Mat4 r = capture::multiply(rotation(2, rot[2]), capture::multiply(rotation(1, rot[1]), rotation(0, rot[0])));
+    Mat4 r =
+        capture::multiply(rotation(2, rot[2]), capture::multiply(rotation(1, rot[1]), rotation(0, rot[0])));
     return capture::multiply(translation(position), capture::multiply(r, scaling(scale)));
 }
 
@@ -140,11 +143,13 @@ FrameGeometry buildGeometry(const Scene& scene, const std::vector<Mesh>& meshes,
         const Mat4 previous = objectMatrix(o, static_cast<double>(frame) - 1.0);
         // A scale of zero makes the world matrix singular; the object then has no area and
         // its motion is irrelevant, so identity is as good as any.
-        const Mat4 toPrevious = capture::multiply(previous, capture::inverse(world).value_or(capture::identity()));
+        const Mat4 toPrevious =
+            capture::multiply(previous, capture::inverse(world).value_or(capture::identity()));
         shaders::SceneObject so{};
         for (std::size_t row = 0; row < 3; ++row)
-            so.toPrevious[row] = {static_cast<float>(toPrevious.m[row * 4 + 0]), static_cast<float>(toPrevious.m[row * 4 + 1]),
-                                  static_cast<float>(toPrevious.m[row * 4 + 2]), static_cast<float>(toPrevious.m[row * 4 + 3])};
+            so.toPrevious[row] = {
+                static_cast<float>(toPrevious.m[row * 4 + 0]), static_cast<float>(toPrevious.m[row * 4 + 1]),
+                static_cast<float>(toPrevious.m[row * 4 + 2]), static_cast<float>(toPrevious.m[row * 4 + 3])};
         g.objects.push_back(so);
 
         const float hx = 0.5f * o.size[0], hy = 0.5f * o.size[1], hz = 0.5f * o.size[2];
@@ -155,7 +160,8 @@ FrameGeometry buildGeometry(const Scene& scene, const std::vector<Mesh>& meshes,
         case ShapeKind::Box: {
             const Vec3 c[8] = {{-hx, -hy, -hz}, {hx, -hy, -hz}, {hx, hy, -hz}, {-hx, hy, -hz},
                                {-hx, -hy, hz},  {hx, -hy, hz},  {hx, hy, hz},  {-hx, hy, hz}};
-            const int faces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 4, 7, 3}, {1, 2, 6, 5}, {0, 1, 5, 4}, {3, 7, 6, 2}};
+            const int faces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 4, 7, 3},
+                                     {1, 2, 6, 5}, {0, 1, 5, 4}, {3, 7, 6, 2}};
             for (const auto& f : faces)
                 addQuad(g, world, c[f[0]], c[f[1]], c[f[2]], c[f[3]], o.material, objectId);
             break;
@@ -165,7 +171,8 @@ FrameGeometry buildGeometry(const Scene& scene, const std::vector<Mesh>& meshes,
             const capture::Vec4 centre = capture::transform(world, {0, 0, 0, 1});
             double s = 0.0;
             for (int axis = 0; axis < 3; ++axis) {
-                const capture::Vec4 v = capture::transform(world, {axis == 0 ? 1.0 : 0.0, axis == 1 ? 1.0 : 0.0, axis == 2 ? 1.0 : 0.0, 0.0});
+                const capture::Vec4 v = capture::transform(
+                    world, {axis == 0 ? 1.0 : 0.0, axis == 1 ? 1.0 : 0.0, axis == 2 ? 1.0 : 0.0, 0.0});
                 s = std::max(s, std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z));
             }
             shaders::ScenePrimitive p{};
@@ -181,7 +188,8 @@ FrameGeometry buildGeometry(const Scene& scene, const std::vector<Mesh>& meshes,
             const Mesh& mesh = meshes.at(meshIndex++);
             const Mat4 m = capture::multiply(world, fitMatrix(o, mesh));
             for (std::size_t v = 0; v + 2 < mesh.positions.size(); v += 3)
-                addTriangle(g, m, mesh.positions[v], mesh.positions[v + 1], mesh.positions[v + 2], o.material, objectId);
+                addTriangle(g, m, mesh.positions[v], mesh.positions[v + 1], mesh.positions[v + 2], o.material,
+                            objectId);
             break;
         }
         }
@@ -195,7 +203,8 @@ Mat4 lookAt(D3 eye, D3 target, D3 up) {
     const D3 f = normalized(target - eye);
     const D3 r = normalized(cross(f, up));
     const D3 u = cross(r, f);
-    return {{r.x, r.y, r.z, -dot(r, eye), u.x, u.y, u.z, -dot(u, eye), -f.x, -f.y, -f.z, dot(f, eye), 0, 0, 0, 1}};
+    return {{r.x, r.y, r.z, -dot(r, eye), u.x, u.y, u.z, -dot(u, eye), -f.x, -f.y, -f.z, dot(f, eye), 0, 0, 0,
+             1}};
 }
 
 Mat4 perspective(const CameraDesc& c, double aspect) {
@@ -244,11 +253,13 @@ FrameCamera cameraAt(const Scene& scene, std::uint32_t frame) {
     cam.projection = scene.camera.projection ? *scene.camera.projection : perspective(scene.camera, aspect);
     cam.view = viewAt(scene, frame, fc.eye);
     Vec3 prevEye{};
-    cam.prevViewProjection = capture::multiply(cam.projection, viewAt(scene, static_cast<double>(frame) - 1.0, prevEye));
+    cam.prevViewProjection =
+        capture::multiply(cam.projection, viewAt(scene, static_cast<double>(frame) - 1.0, prevEye));
     cam.depth = scene.camera.depth;
     cam.nearZ = scene.camera.nearZ;
-    cam.farZ = scene.camera.depth == capture::DepthConvention::ReversedInfinite ? std::numeric_limits<double>::infinity()
-                                                                                  : scene.camera.farZ;
+    cam.farZ = scene.camera.depth == capture::DepthConvention::ReversedInfinite
+                   ? std::numeric_limits<double>::infinity()
+                   : scene.camera.farZ;
     cam.ndcYDown = scene.camera.ndcYDown;
     return fc;
 }

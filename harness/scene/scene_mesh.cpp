@@ -17,19 +17,22 @@ std::vector<Mesh> loadMeshes(const Scene& scene) {
         Assimp::Importer importer;
         // PreTransformVertices bakes every node's transform into world-of-the-model space, so
         // the node hierarchy of the file is honoured without us walking it.
-        const aiScene* model = importer.ReadFile(object.file.string(), aiProcess_Triangulate | aiProcess_PreTransformVertices |
-                                                                          aiProcess_SortByPType);
+        const aiScene* model =
+            importer.ReadFile(object.file.string(),
+                              aiProcess_Triangulate | aiProcess_PreTransformVertices | aiProcess_SortByPType);
         if (!model || (model->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || model->mNumMeshes == 0) {
             std::string problem = importer.GetErrorString();
             if (problem.empty()) problem = "no meshes in the file";
             for (char& c : problem)
                 if (c == '\n' || c == '\r') c = ' ';
-            throw SceneError(object.file.string() + ": object '" + object.name + "': cannot load model: " + problem);
+            throw SceneError(object.file.string() + ": object '" + object.name +
+                             "': cannot load model: " + problem);
         }
         Mesh mesh;
         for (unsigned m = 0; m < model->mNumMeshes; ++m) {
             const aiMesh* part = model->mMeshes[m];
-            if (!(part->mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) continue; // points and lines have no area
+            if (!(part->mPrimitiveTypes & aiPrimitiveType_TRIANGLE))
+                continue; // points and lines have no area
             for (unsigned f = 0; f < part->mNumFaces; ++f) {
                 const aiFace& face = part->mFaces[f];
                 if (face.mNumIndices != 3) continue;
@@ -40,7 +43,8 @@ std::vector<Mesh> loadMeshes(const Scene& scene) {
             }
         }
         if (mesh.positions.empty())
-            throw SceneError(object.file.string() + ": object '" + object.name + "': the model has no triangles");
+            throw SceneError(object.file.string() + ": object '" + object.name +
+                             "': the model has no triangles");
         meshes.push_back(std::move(mesh));
     }
     return meshes;

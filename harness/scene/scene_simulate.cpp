@@ -26,10 +26,11 @@ struct OutputImage {
     std::vector<std::string> channels;
 };
 
-shaders::float4x4 toFloat(const capture::Mat4& m) {
-    shaders::float4x4 out{};
-    for (std::size_t i = 0; i < 16; ++i) out.m[i] = static_cast<float>(m.m[i]);
-    return out;
+// A matrix as the four float4 rows the shader constants hold (scene_constants.h).
+void storeRows(shaders::float4 (&rows)[4], const capture::Mat4& m) {
+    for (std::size_t r = 0; r < 4; ++r)
+        rows[r] = {static_cast<float>(m.m[r * 4 + 0]), static_cast<float>(m.m[r * 4 + 1]),
+                   static_cast<float>(m.m[r * 4 + 2]), static_cast<float>(m.m[r * 4 + 3])};
 }
 
 std::vector<std::byte> pack(const GLINT_SceneConstants& constants) {
@@ -38,8 +39,8 @@ std::vector<std::byte> pack(const GLINT_SceneConstants& constants) {
     return bytes;
 }
 
-Pass makePass(const char* name, const char* pipeline, std::vector<ResourceUse> uses, const GLINT_SceneConstants& constants,
-              std::uint32_t width, std::uint32_t height) {
+Pass makePass(const char* name, const char* pipeline, std::vector<ResourceUse> uses,
+              const GLINT_SceneConstants& constants, std::uint32_t width, std::uint32_t height) {
     Pass pass;
     pass.name = name;
     pass.pipeline = pipeline;
@@ -59,7 +60,8 @@ ResourceUse write(const char* binding, const char* resource) {
 
 // The passes of one frame and the images they write. Which passes exist depends only on
 // the declared effects and reference settings, never on the frame.
-EffectPlan planFrame(const Scene& scene, const GLINT_SceneConstants& base, std::vector<OutputImage>& outputs) {
+EffectPlan planFrame(const Scene& scene, const GLINT_SceneConstants& base,
+                     std::vector<OutputImage>& outputs) {
     const bool reflections = needsReflections(scene);
     const bool shadows = needsShadows(scene);
     const std::uint32_t w = scene.width, h = scene.height;
@@ -68,8 +70,9 @@ EffectPlan planFrame(const Scene& scene, const GLINT_SceneConstants& base, std::
     outputs = {{"depth", "depth", Format::R32Float, {"Z"}},
                {"normal", "normal", Format::RGBA32Float, {"X", "Y", "Z"}},
                {"motion", "motion", Format::RG32Float, {"X", "Y"}}};
-    std::vector<ResourceUse> gbuffer = {read("g_scene_nodes"), read("g_scene_primitives"), read("g_scene_objects"),
-                                        write("g_depth", "depth"), write("g_normal", "normal"), write("g_motion", "motion")};
+    std::vector<ResourceUse> gbuffer = {read("g_scene_nodes"),       read("g_scene_primitives"),
+                                        read("g_scene_objects"),     write("g_depth", "depth"),
+                                        write("g_normal", "normal"), write("g_motion", "motion")};
     if (reflections) {
         gbuffer.push_back(read("g_scene_materials"));
         gbuffer.push_back(write("g_roughness", "roughness"));
@@ -77,9 +80,11 @@ EffectPlan planFrame(const Scene& scene, const GLINT_SceneConstants& base, std::
         outputs.push_back({"roughness", "roughness", Format::R32Float, {"Y"}});
         outputs.push_back({"material", "material", Format::RGBA32Float, {"R", "G", "B", "A"}});
     }
-    plan.passes.push_back(makePass("gbuffer", reflections ? "scene_gbuffer.material" : "scene_gbuffer", gbuffer, base, w, h));
-    const std::vector<ResourceUse> shading = {read("g_scene_nodes"), read("g_scene_primitives"), read("g_scene_materials"),
-                                              read("g_scene_lights"), read("g_scene_environment")};
+    plan.passes.push_back(
+        makePass("gbuffer", reflections ? "scene_gbuffer.material" : "scene_gbuffer", gbuffer, base, w, h));
+    const std::vector<ResourceUse> shading = {read("g_scene_nodes"), read("g_scene_primitives"),
+                                              read("g_scene_materials"), read("g_scene_lights"),
+                                              read("g_scene_environment")};
     if (reflections) {
         std::vector<ResourceUse> uses = shading;
         uses.push_back(write("g_color", "color"));
@@ -92,11 +97,13 @@ EffectPlan planFrame(const Scene& scene, const GLINT_SceneConstants& base, std::
             uses = shading;
             uses.push_back(write("g_reflection", "reference.reflection"));
             plan.passes.push_back(makePass("reference.reflection", "scene_reflection", uses, c, w, h));
-            outputs.push_back({"reference.reflection", "reference.reflection", Format::RGBA32Float, {"R", "G", "B"}});
+            outputs.push_back(
+                {"reference.reflection", "reference.reflection", Format::RGBA32Float, {"R", "G", "B"}});
         }
     }
     if (shadows) {
-        const std::vector<ResourceUse> common = {read("g_scene_nodes"), read("g_scene_primitives"), read("g_scene_lights")};
+        const std::vector<ResourceUse> common = {read("g_scene_nodes"), read("g_scene_primitives"),
+                                                 read("g_scene_lights")};
         GLINT_SceneConstants c = base;
         c.samples = 1;
         c.passSalt = 0x53484431u;
@@ -128,7 +135,8 @@ std::vector<shaders::SceneMaterial> gpuMaterials(const Scene& scene) {
         g.roughnessEnd = m.ramp ? m.rampRoughnessEnd : m.roughness;
         if (m.ramp) {
             // t = dot(p - start, axis) / |axis|^2 = dot(p, axis / |axis|^2) - dot(start, axis) / |axis|^2
-            const float a[3] = {m.rampEnd[0] - m.rampStart[0], m.rampEnd[1] - m.rampStart[1], m.rampEnd[2] - m.rampStart[2]};
+            const float a[3] = {m.rampEnd[0] - m.rampStart[0], m.rampEnd[1] - m.rampStart[1],
+                                m.rampEnd[2] - m.rampStart[2]};
             const float len2 = a[0] * a[0] + a[1] * a[1] + a[2] * a[2];
             g.rampPlane = {a[0] / len2, a[1] / len2, a[2] / len2,
                            -(m.rampStart[0] * a[0] + m.rampStart[1] * a[1] + m.rampStart[2] * a[2]) / len2};
@@ -148,22 +156,25 @@ std::vector<shaders::SceneLight> gpuLights(const Scene& scene) {
         const Vec3& v = directional ? l.direction : l.position;
         g.where = {v[0], v[1], v[2]};
         g.radiance = {l.color[0] * l.intensity, l.color[1] * l.intensity, l.color[2] * l.intensity};
-        g.size = directional ? static_cast<float>(static_cast<double>(l.angularRadiusDegrees) * std::numbers::pi / 180.0) : l.radius;
+        g.size =
+            directional
+                ? static_cast<float>(static_cast<double>(l.angularRadiusDegrees) * std::numbers::pi / 180.0)
+                : l.radius;
         out.push_back(g);
     }
     if (out.empty()) out.push_back({});
     return out;
 }
 
-template <typename T>
-vk::Buffer uploadStorage(const gpu::Context& context, const std::vector<T>& values) {
-    vk::Buffer buffer = vk::createBuffer(context.device, sizeof(T) * values.size(), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                                         vk::MemoryUse::DeviceLocal);
+template <typename T> vk::Buffer uploadStorage(const gpu::Context& context, const std::vector<T>& values) {
+    vk::Buffer buffer = vk::createBuffer(context.device, sizeof(T) * values.size(),
+                                         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::DeviceLocal);
     gpu::uploadBuffer(context, buffer, std::span<const T>(values));
     return buffer;
 }
 
-capture::Layer toLayer(const OutputImage& out, const std::vector<float>& texels, std::uint32_t texelChannels) {
+capture::Layer toLayer(const OutputImage& out, const std::vector<float>& texels,
+                       std::uint32_t texelChannels) {
     capture::Layer layer;
     layer.name = out.layer;
     layer.channels = out.channels;
@@ -208,7 +219,8 @@ Simulation simulate(const gpu::Context& context, const Scene& scene) {
 
     Resources res{context, {}, {}, {}, vk::createExecutor(context.device)};
     res.executor.findShader = findShader;
-    res.environment = vk::createImage2D(context.device, environment.width, environment.height, VK_FORMAT_R32G32B32A32_SFLOAT);
+    res.environment = vk::createImage2D(context.device, environment.width, environment.height,
+                                        VK_FORMAT_R32G32B32A32_SFLOAT);
     gpu::uploadImage(context, res.environment, environment.rgb, 3);
     const vk::Buffer materials = uploadStorage(context, gpuMaterials(scene));
     const vk::Buffer lights = uploadStorage(context, gpuLights(scene));
@@ -220,14 +232,14 @@ Simulation simulate(const gpu::Context& context, const Scene& scene) {
         FrameGeometry geometry = buildGeometry(scene, meshes, frame);
         if (frame == 0) sim.primitives = geometry.primitives.size();
         Bvh bvh = buildBvh(std::move(geometry.primitives));
-        if (bvh.primitives.empty()) bvh.primitives.push_back({});   // never read: the root is an empty leaf
+        if (bvh.primitives.empty()) bvh.primitives.push_back({}); // never read: the root is an empty leaf
         if (geometry.objects.empty()) geometry.objects.push_back({});
 
         GLINT_SceneConstants c{};
         const capture::Mat4 vp = capture::viewProjection(cam.camera);
-        c.viewProjection = toFloat(vp);
-        c.invViewProjection = toFloat(*capture::inverse(vp));
-        c.prevViewProjection = toFloat(cam.camera.prevViewProjection);
+        storeRows(c.viewProjection, vp);
+        storeRows(c.invViewProjection, *capture::inverse(vp));
+        storeRows(c.prevViewProjection, cam.camera.prevViewProjection);
         c.eye = {cam.eye[0], cam.eye[1], cam.eye[2], 1.0f};
         c.size = {scene.width, scene.height};
         c.frameIndex = frame;
@@ -262,7 +274,8 @@ Simulation simulate(const gpu::Context& context, const Scene& scene) {
         const gpu::PlanTimings timings = gpu::executePlan(context, res.executor, plan, table, 1);
         for (std::size_t p = 0; p < sim.passes.size(); ++p) {
             const double ms = timings.times.empty() ? -1.0 : timings.times[0].at(p);
-            sim.passes[p].milliseconds = ms < 0.0 || sim.passes[p].milliseconds < 0.0 ? -1.0 : sim.passes[p].milliseconds + ms;
+            sim.passes[p].milliseconds =
+                ms < 0.0 || sim.passes[p].milliseconds < 0.0 ? -1.0 : sim.passes[p].milliseconds + ms;
         }
 
         capture::Frame f;
@@ -276,7 +289,8 @@ Simulation simulate(const gpu::Context& context, const Scene& scene) {
         f.effects = captureEffects(scene);
         for (const OutputImage& out : outputs) {
             const vk::Image& image = res.owned.images.at(out.resource);
-            f.layers.push_back(toLayer(out, gpu::readbackImage(context, image), vk::formatChannelCount(image.format)));
+            f.layers.push_back(
+                toLayer(out, gpu::readbackImage(context, image), vk::formatChannelCount(image.format)));
         }
         sim.frames.push_back(std::move(f));
         // This frame's geometry is done with; the executor waited in executePlan.

@@ -15,8 +15,8 @@
 namespace glint::scene {
 
 struct PassTime {
-    std::string pass;         // e.g. "gbuffer", "shade", "shadow", "reference.reflection"
-    double milliseconds = 0;  // GPU time summed over all frames; < 0 when not measured
+    std::string pass;        // e.g. "gbuffer", "shade", "shadow", "reference.reflection"
+    double milliseconds = 0; // GPU time summed over all frames; < 0 when not measured
 };
 
 struct Simulation {

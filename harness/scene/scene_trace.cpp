@@ -30,8 +30,7 @@ float intersectBox(const shaders::SceneBvhNode& node, const Ray& ray, const floa
     return tNear <= tFar ? tNear : -1.0f;
 }
 
-template <bool kAny>
-Hit traverse(const Bvh& bvh, const Ray& ray) {
+template <bool kAny> Hit traverse(const Bvh& bvh, const Ray& ray) {
     Hit best;
     float tMax = ray.tMax;
     const float inv[3] = {1.0f / ray.direction[0], 1.0f / ray.direction[1], 1.0f / ray.direction[2]};

@@ -16,8 +16,8 @@ struct Ray {
 };
 
 struct Hit {
-    float t = -1.0f;                // < 0: miss
-    std::uint32_t primitive = 0;    // index into the (reordered) primitive array
+    float t = -1.0f;             // < 0: miss
+    std::uint32_t primitive = 0; // index into the (reordered) primitive array
 };
 
 // Nearest hit with t in (0, ray.tMax).

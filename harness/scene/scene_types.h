@@ -57,7 +57,7 @@ struct LightDesc {
     Vec3 direction{0.3f, 1.0f, 0.2f}; // directional: toward the light (normalized on load)
     Vec3 position{0.0f, 3.0f, 0.0f};  // sphere
     Vec3 color{1.0f, 1.0f, 1.0f};
-    float intensity = 3.0f;            // directional: irradiance; sphere: irradiance at 1 unit
+    float intensity = 3.0f;             // directional: irradiance; sphere: irradiance at 1 unit
     float angularRadiusDegrees = 0.27f; // directional
     float radius = 0.1f;                // sphere
 };
@@ -88,9 +88,9 @@ struct ObjectDesc {
     ShapeKind shape = ShapeKind::Box;
     std::uint32_t material = 0;
     Vec3 size{1.0f, 1.0f, 1.0f}; // plane: x and z extent (normal +y); box: edge lengths
-    float radius = 0.5f;          // sphere
-    std::filesystem::path file;   // mesh (glTF 2.0 or anything assimp reads)
-    float fitSize = 0.0f;         // mesh: > 0 scales the model so its largest extent is this
+    float radius = 0.5f;         // sphere
+    std::filesystem::path file;  // mesh (glTF 2.0 or anything assimp reads)
+    float fitSize = 0.0f;        // mesh: > 0 scales the model so its largest extent is this
     std::vector<ObjectKey> keys{ObjectKey{}};
 };
 

@@ -19,7 +19,7 @@
 namespace glint::shaders {
 GLINT_SHARED_USING;
 struct float3 { float x, y, z; };
-#define GLINT_SCENE_MATRIX(name) float4x4 name
+#define GLINT_SCENE_MATRIX(name) float4 name[4]
 #else
 // Matrices are four float4 rows rather than a (row_major) float4x4: the row-major qualifier
 // on a member of a ConstantBuffer<T> struct is not honoured by every front end, and rows

@@ -48,7 +48,8 @@ TEST_CASE("A reflections-only scene traces no shadow layers", "[scene][gpu]") {
     scene.effects = {Effect::Hybrid};
     const Simulation plain = simulate(test::testContext(), scene);
     CHECK(passNames(plain) == Names{"gbuffer", "shade"});
-    CHECK(frameLayers(plain.frames[0]) == Names{"depth", "normal", "motion", "roughness", "material", "color"});
+    CHECK(frameLayers(plain.frames[0]) ==
+          Names{"depth", "normal", "motion", "roughness", "material", "color"});
     CHECK(plain.environment.has_value());
     CHECK(plain.frames[0].effects == Names{"reflections"});
 
@@ -87,7 +88,8 @@ TEST_CASE("Simulated captures are valid sequences and reruns are bit-identical",
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }
 
-TEST_CASE("The noisy shadow layer draws new random numbers every frame and averages to the reference", "[scene][gpu]") {
+TEST_CASE("The noisy shadow layer draws new random numbers every frame and averages to the reference",
+          "[scene][gpu]") {
     Scene scene = test::analyticScene(96, 54, 3);
     scene.camera.keys.resize(1); // static camera and objects: only the noise may change
     scene.objects[2].keys.resize(1);
@@ -104,7 +106,8 @@ TEST_CASE("The noisy shadow layer draws new random numbers every frame and avera
         CHECK((s0[i] == 0.0f || s0[i] == 1.0f)); // one sample: visible or not
         changed += s0[i] != s1[i];
         if (ref[i] > 0.05f && ref[i] < 0.95f) ++penumbra;
-        for (const auto& frame : sim.frames) noisySum += static_cast<double>(capture::findLayer(frame, "shadow")->pixels[i]);
+        for (const auto& frame : sim.frames)
+            noisySum += static_cast<double>(capture::findLayer(frame, "shadow")->pixels[i]);
         refSum += static_cast<double>(ref[i]);
     }
     INFO("penumbra pixels " << penumbra << ", changed " << changed);

@@ -28,7 +28,8 @@ struct Expected {
 };
 
 // An independent primary ray: the pixel centre unprojected in double.
-Expected castPixel(const Bvh& bvh, const FrameCamera& cam, std::uint32_t x, std::uint32_t y, std::uint32_t w, std::uint32_t h) {
+Expected castPixel(const Bvh& bvh, const FrameCamera& cam, std::uint32_t x, std::uint32_t y, std::uint32_t w,
+                   std::uint32_t h) {
     const Mat4 vp = capture::viewProjection(cam.camera);
     const Mat4 inv = *capture::inverse(vp);
     const double ndcX = 2.0 * (x + 0.5) / w - 1.0, ndcY = 1.0 - 2.0 * (y + 0.5) / h;
@@ -42,21 +43,25 @@ Expected castPixel(const Bvh& bvh, const FrameCamera& cam, std::uint32_t x, std:
     Expected e;
     if (hit.t < 0.0f) return e;
     const auto& p = bvh.primitives[hit.primitive];
-    for (int k = 0; k < 3; ++k) e.world[k] = static_cast<double>(ray.origin[k]) + static_cast<double>(ray.direction[k] * hit.t);
+    for (int k = 0; k < 3; ++k)
+        e.world[k] = static_cast<double>(ray.origin[k]) + static_cast<double>(ray.direction[k] * hit.t);
     double n[3];
     if (p.kind == GLINT_SCENE_PRIM_SPHERE) {
         n[0] = e.world[0] - static_cast<double>(p.p0.x);
         n[1] = e.world[1] - static_cast<double>(p.p0.y);
         n[2] = e.world[2] - static_cast<double>(p.p0.z);
     } else {
-        const double a[3] = {static_cast<double>(p.p1.x - p.p0.x), static_cast<double>(p.p1.y - p.p0.y), static_cast<double>(p.p1.z - p.p0.z)};
-        const double b[3] = {static_cast<double>(p.p2.x - p.p0.x), static_cast<double>(p.p2.y - p.p0.y), static_cast<double>(p.p2.z - p.p0.z)};
+        const double a[3] = {static_cast<double>(p.p1.x - p.p0.x), static_cast<double>(p.p1.y - p.p0.y),
+                             static_cast<double>(p.p1.z - p.p0.z)};
+        const double b[3] = {static_cast<double>(p.p2.x - p.p0.x), static_cast<double>(p.p2.y - p.p0.y),
+                             static_cast<double>(p.p2.z - p.p0.z)};
         n[0] = a[1] * b[2] - a[2] * b[1];
         n[1] = a[2] * b[0] - a[0] * b[2];
         n[2] = a[0] * b[1] - a[1] * b[0];
     }
     const double nl = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    const double facing = n[0] * static_cast<double>(ray.direction[0]) + n[1] * static_cast<double>(ray.direction[1]) +
+    const double facing = n[0] * static_cast<double>(ray.direction[0]) +
+                          n[1] * static_cast<double>(ray.direction[1]) +
                           n[2] * static_cast<double>(ray.direction[2]);
     for (int k = 0; k < 3; ++k) e.normal[k] = (facing > 0.0 ? -n[k] : n[k]) / nl;
     const Vec4 clip = capture::transform(vp, {e.world[0], e.world[1], e.world[2], 1.0});
@@ -93,7 +98,8 @@ TEST_CASE("G-buffer and motion of an analytic scene match CPU ray casting and re
             const Expected e = castPixel(bvh, cam, x, y, w, h);
             const double d = static_cast<double>(depth->pixels[i]);
             const bool gpuHit = d < 1.0;
-            const double gn[3] = {static_cast<double>(normal->pixels[3 * i]), static_cast<double>(normal->pixels[3 * i + 1]),
+            const double gn[3] = {static_cast<double>(normal->pixels[3 * i]),
+                                  static_cast<double>(normal->pixels[3 * i + 1]),
                                   static_cast<double>(normal->pixels[3 * i + 2])};
             const double agreement = gn[0] * e.normal[0] + gn[1] * e.normal[1] + gn[2] * e.normal[2];
             // Silhouette pixels may see different surfaces in float and double; count them.
@@ -102,13 +108,15 @@ TEST_CASE("G-buffer and motion of an analytic scene match CPU ray casting and re
                 continue;
             }
             const double u = (x + 0.5) / w, v = (y + 0.5) / h;
-            const double mvx = static_cast<double>(motion->pixels[2 * i]), mvy = static_cast<double>(motion->pixels[2 * i + 1]);
+            const double mvx = static_cast<double>(motion->pixels[2 * i]),
+                         mvy = static_cast<double>(motion->pixels[2 * i + 1]);
             double prevU = 0.0, prevV = 0.0;
             if (!e.hit) {
                 CHECK(d == 1.0);
                 const Vec4 far = capture::transform(invVp, {2.0 * u - 1.0, 1.0 - 2.0 * v, 0.5, 1.0});
                 const Vec4 c = capture::transform(cam.camera.prevViewProjection,
-                                                  {far.x / far.w - static_cast<double>(cam.eye[0]), far.y / far.w - static_cast<double>(cam.eye[1]),
+                                                  {far.x / far.w - static_cast<double>(cam.eye[0]),
+                                                   far.y / far.w - static_cast<double>(cam.eye[1]),
                                                    far.z / far.w - static_cast<double>(cam.eye[2]), 0.0});
                 prevU = 0.5 * c.x / c.w + 0.5;
                 prevV = 0.5 - 0.5 * c.y / c.w;
@@ -120,16 +128,19 @@ TEST_CASE("G-buffer and motion of an analytic scene match CPU ray casting and re
                 const Vec4 q = capture::transform(invVp, {2.0 * u - 1.0, 1.0 - 2.0 * v, d, 1.0});
                 Vec4 p{q.x / q.w, q.y / q.w, q.z / q.w, 1.0};
                 const ObjectDesc& object = scene.objects[e.object];
-                const Mat4 toPrevious = capture::multiply(objectMatrix(object, 0.0), *capture::inverse(objectMatrix(object, 1.0)));
+                const Mat4 toPrevious = capture::multiply(objectMatrix(object, 0.0),
+                                                          *capture::inverse(objectMatrix(object, 1.0)));
                 if (!(toPrevious == capture::identity())) ++moving;
                 p = capture::transform(toPrevious, p);
                 const Vec4 c = capture::transform(cam.camera.prevViewProjection, p);
                 prevU = 0.5 * c.x / c.w + 0.5;
                 prevV = 0.5 - 0.5 * c.y / c.w;
-                const double expectedRoughness = static_cast<double>(scene.materials[scene.objects[e.object].material].roughness);
+                const double expectedRoughness =
+                    static_cast<double>(scene.materials[scene.objects[e.object].material].roughness);
                 CHECK(std::fabs(static_cast<double>(roughness->pixels[i]) - expectedRoughness) < 1e-6);
             }
-            worstMotionPx = std::max({worstMotionPx, std::fabs(u + mvx - prevU) * w, std::fabs(v + mvy - prevV) * h});
+            worstMotionPx =
+                std::max({worstMotionPx, std::fabs(u + mvx - prevU) * w, std::fabs(v + mvy - prevV) * h});
         }
     }
     INFO("disagreeing pixels " << disagreements << ", hits " << hits << ", on the moving sphere " << moving);

@@ -89,37 +89,52 @@ TEST_CASE("Malformed scene files name the file, line, key and problem", "[scene]
     CHECK(contains(errorOf("effects = [\"reflections\"\n"), "bad.toml:"));
     CHECK(contains(errorOf("effects = [\"reflections\"\n"), "syntax"));
     CHECK(contains(errorOf("resolution = [1, 2]\n"), "effects: missing"));
-    CHECK(contains(errorOf("effects = [\"refractions\"]\n"), "bad.toml:1: effects: unknown effect 'refractions'"));
+    CHECK(contains(errorOf("effects = [\"refractions\"]\n"),
+                   "bad.toml:1: effects: unknown effect 'refractions'"));
     CHECK(contains(errorOf("effects = [\"reflections\", \"reflections\"]\n"), "listed twice"));
-    CHECK(contains(errorOf("frames = 0\n" + std::string(kMinimal)), "bad.toml:1: frames: value 0 is outside"));
-    CHECK(contains(errorOf("resolutoin = [1, 2]\n" + std::string(kMinimal)), "bad.toml:1: resolutoin: unknown key"));
-    CHECK(contains(errorOf(std::string(kMinimal) + "[camera]\nfov_y = \"wide\"\n"), "bad.toml:5: camera.fov_y: expected a finite number"));
-    CHECK(contains(errorOf(std::string(kMinimal) + "[camera]\nposition = [1, 2]\n"), "bad.toml:5: camera.position: expected an array of 3 numbers"));
-    CHECK(contains(errorOf(std::string(kMinimal) + "[camera]\nnear = 2.0\nfar = 1.0\n"), "camera.far: must be greater"));
+    CHECK(
+        contains(errorOf("frames = 0\n" + std::string(kMinimal)), "bad.toml:1: frames: value 0 is outside"));
+    CHECK(contains(errorOf("resolutoin = [1, 2]\n" + std::string(kMinimal)),
+                   "bad.toml:1: resolutoin: unknown key"));
+    CHECK(contains(errorOf(std::string(kMinimal) + "[camera]\nfov_y = \"wide\"\n"),
+                   "bad.toml:5: camera.fov_y: expected a finite number"));
+    CHECK(contains(errorOf(std::string(kMinimal) + "[camera]\nposition = [1, 2]\n"),
+                   "bad.toml:5: camera.position: expected an array of 3 numbers"));
+    CHECK(contains(errorOf(std::string(kMinimal) + "[camera]\nnear = 2.0\nfar = 1.0\n"),
+                   "camera.far: must be greater"));
     CHECK(contains(errorOf(std::string(kMinimal) + "[[objects]]\ntype = \"box\"\nmaterial = \"nope\"\n"),
                    "bad.toml:6: objects[0].material: unknown material 'nope'"));
-    CHECK(contains(errorOf(std::string(kMinimal) + "[materials.m]\n[[objects]]\ntype = \"cone\"\nmaterial = \"m\"\n"),
-                   "objects[0].type: expected"));
-    CHECK(contains(errorOf(std::string(kMinimal) + "[materials.m]\nmetallic = 2.0\n"), "materials.m.metallic: value 2 is outside [0, 1]"));
+    CHECK(contains(
+        errorOf(std::string(kMinimal) + "[materials.m]\n[[objects]]\ntype = \"cone\"\nmaterial = \"m\"\n"),
+        "objects[0].type: expected"));
+    CHECK(contains(errorOf(std::string(kMinimal) + "[materials.m]\nmetallic = 2.0\n"),
+                   "materials.m.metallic: value 2 is outside [0, 1]"));
     CHECK(contains(errorOf("effects = [\"shadows\"]\n"), "shadow_light: effect 'shadows' needs a light"));
-    CHECK(contains(errorOf(std::string(kMinimal) + "[reference]\nreflections = true\n"), "reference.reflections: needs effect"));
-    CHECK(contains(errorOf(std::string(kMinimal) + "[[lights]]\ntype = \"directional\"\ndirection = [0, 0, 0]\n"),
-                   "lights[1].direction: must not be zero"));
+    CHECK(contains(errorOf(std::string(kMinimal) + "[reference]\nreflections = true\n"),
+                   "reference.reflections: needs effect"));
+    CHECK(contains(
+        errorOf(std::string(kMinimal) + "[[lights]]\ntype = \"directional\"\ndirection = [0, 0, 0]\n"),
+        "lights[1].direction: must not be zero"));
 }
 
 TEST_CASE("A missing model file is an error naming the key and the path", "[scene][file]") {
-    const std::string message = errorOf(std::string(kMinimal) +
-                                        "[materials.m]\n[[objects]]\ntype = \"mesh\"\nmaterial = \"m\"\nfile = \"no/such/model.glb\"\n",
-                                        "/tmp/scenes/bad.toml");
-    CHECK(contains(message, "/tmp/scenes/bad.toml:8: objects[0].file: file '/tmp/scenes/no/such/model.glb' does not exist"));
+    const std::string message = errorOf(
+        std::string(kMinimal) +
+            "[materials.m]\n[[objects]]\ntype = \"mesh\"\nmaterial = \"m\"\nfile = \"no/such/model.glb\"\n",
+        "/tmp/scenes/bad.toml");
+    CHECK(contains(
+        message,
+        "/tmp/scenes/bad.toml:8: objects[0].file: file '/tmp/scenes/no/such/model.glb' does not exist"));
 }
 
 TEST_CASE("A model file assimp cannot read fails when the geometry is built", "[scene][file]") {
     const std::filesystem::path dir = std::filesystem::path(GLINT_TEST_OUTPUT_DIR) / "scene_file_test";
     std::filesystem::create_directories(dir);
     std::ofstream(dir / "broken.gltf") << "{ this is not json";
-    const Scene s = parseScene(std::string(kMinimal) + "[materials.m]\n[[objects]]\ntype = \"mesh\"\nmaterial = \"m\"\nfile = \"broken.gltf\"\n",
-                               dir / "scene.toml");
+    const Scene s = parseScene(
+        std::string(kMinimal) +
+            "[materials.m]\n[[objects]]\ntype = \"mesh\"\nmaterial = \"m\"\nfile = \"broken.gltf\"\n",
+        dir / "scene.toml");
     try {
         loadMeshes(s);
         FAIL("no error");

@@ -8,7 +8,8 @@ scene::Scene analyticScene(std::uint32_t width, std::uint32_t height, std::uint3
     s.height = height;
     s.frameCount = frames;
     s.shadowSamples = 4;
-    s.camera.keys = {{0.0f, {0.0f, 1.5f, 4.0f}, {0.0f, 0.4f, 0.0f}}, {4.0f, {0.4f, 1.4f, 3.8f}, {0.0f, 0.4f, 0.0f}}};
+    s.camera.keys = {{0.0f, {0.0f, 1.5f, 4.0f}, {0.0f, 0.4f, 0.0f}},
+                     {4.0f, {0.4f, 1.4f, 3.8f}, {0.0f, 0.4f, 0.0f}}};
     scene::LightDesc sun;
     sun.direction = {0.37139f, 0.74278f, 0.55709f};
     sun.angularRadiusDegrees = 4.0f;
@@ -39,7 +40,8 @@ scene::Scene analyticScene(std::uint32_t width, std::uint32_t height, std::uint3
     ball.shape = scene::ShapeKind::Sphere;
     ball.radius = 0.45f;
     ball.material = 2;
-    ball.keys = {{0.0f, {0.5f, 0.45f, 0.2f}, {}, {1.0f, 1.0f, 1.0f}}, {4.0f, {1.3f, 0.45f, 0.2f}, {}, {1.0f, 1.0f, 1.0f}}};
+    ball.keys = {{0.0f, {0.5f, 0.45f, 0.2f}, {}, {1.0f, 1.0f, 1.0f}},
+                 {4.0f, {1.3f, 0.45f, 0.2f}, {}, {1.0f, 1.0f, 1.0f}}};
     s.objects = {plane, box, ball};
     return s;
 }

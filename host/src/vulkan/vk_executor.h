@@ -41,7 +41,7 @@ struct Executor {
     // Sampler bindings get linear clamp-to-edge, or nearest when their name contains "point".
     VkSampler linearClampSampler = VK_NULL_HANDLE;
     VkSampler pointClampSampler = VK_NULL_HANDLE;
-    Buffer constantRing;                           // per-pass constants, host-visible
+    Buffer constantRing; // per-pass constants, host-visible
     VkDeviceSize constantRingUsed = 0;
     // 1x1 images bound to storage-image array slots past an image's last level, one per
     // format, so that no spare slot ever aliases a live level (reference defect: spare mip
