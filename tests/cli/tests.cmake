@@ -36,3 +36,13 @@ glint_cli_test(NAME "an unknown verb is a usage error" LABELS unit EXIT 2
 glint_cli_test(NAME "devices lists at least one Vulkan device with its subgroup size" LABELS gpu EXIT 0
   STDOUT "subgroup size [0-9]+"
   COMMAND --validate devices)
+
+# Every bundled scene simulates under the validation layer into a capture that info reads.
+foreach(scene IN ITEMS courtyard_penumbra disocclusion glossy_room gltf_engine mirror_corridor mostly_sky
+                       thin_pillars toward_mirror)
+  add_test(NAME "cli: the bundled scene ${scene} simulates into a capture that info describes"
+    COMMAND "${CMAKE_COMMAND}" "-DGLINT=$<TARGET_FILE:glint>" "-DSCENE=${PROJECT_SOURCE_DIR}/harness/scenes/${scene}.toml"
+            "-DOUT=${PROJECT_BINARY_DIR}/test-output/cli/scenes/${scene}" -P "${CMAKE_CURRENT_SOURCE_DIR}/cli/simulate_scene.cmake")
+  set_tests_properties("cli: the bundled scene ${scene} simulates into a capture that info describes"
+                       PROPERTIES LABELS gpu)
+endforeach()
