@@ -1,6 +1,7 @@
 #include "capture/capture_test_support.h"
 
 #include <capture/capture_error.h>
+#include <capture/frame_io.h>
 #include <capture/motion_convention.h>
 
 #include <OpenEXR/ImfChannelList.h>
@@ -8,6 +9,7 @@
 #include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStdIO.h>
+#include <catch2/catch.hpp>
 
 #include <cmath>
 #include <fstream>
@@ -144,6 +146,19 @@ std::string readBytes(const std::filesystem::path& file) {
     std::ifstream in(file, std::ios::binary);
     in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
     return bytes;
+}
+
+Imf::Header validFrameHeader(const std::filesystem::path& dir, std::uint32_t width, std::uint32_t height) {
+    writeFrame(dir / "valid.exr", makeFullFrame(width, height));
+    return exrHeaderOf(dir / "valid.exr");
+}
+
+std::string rejectionOf(const std::filesystem::path& file, const Imf::Header& header) {
+    writeZeroExr(file, header);
+    const std::string message = captureErrorOf([&] { (void)readFrame(file); });
+    CHECK(isOneLine(message));
+    CHECK(message.find(file.filename().string()) != std::string::npos);
+    return message;
 }
 
 } // namespace glint::capture::test

@@ -50,6 +50,14 @@ std::string captureErrorOf(const std::function<void()>& read);
 
 bool isOneLine(const std::string& text);
 
+// The header of a valid full frame of the given size written into dir, for tests that break
+// it one way each.
+Imf::Header validFrameHeader(const std::filesystem::path& dir, std::uint32_t width, std::uint32_t height);
+
+// Writes a frame file with `header` and returns readFrame's error, after checking that it is
+// one line naming the file.
+std::string rejectionOf(const std::filesystem::path& file, const Imf::Header& header);
+
 void writeBytes(const std::filesystem::path& file, const std::string& bytes);
 std::string readBytes(const std::filesystem::path& file);
 

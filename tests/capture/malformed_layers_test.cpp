@@ -13,16 +13,11 @@ using namespace glint::capture;
 
 namespace {
 Imf::Header validHeader(const std::filesystem::path& dir) {
-    writeFrame(dir / "valid.exr", test::makeFullFrame(8, 4));
-    return test::exrHeaderOf(dir / "valid.exr");
+    return test::validFrameHeader(dir, 8, 4);
 }
 
 std::string rejection(const std::filesystem::path& file, const Imf::Header& header) {
-    test::writeZeroExr(file, header);
-    const std::string message = test::captureErrorOf([&] { (void)readFrame(file); });
-    CHECK(test::isOneLine(message));
-    CHECK(message.find(file.filename().string()) != std::string::npos);
-    return message;
+    return test::rejectionOf(file, header);
 }
 
 void setEffects(Imf::Header& header, std::vector<std::string> effects) {
