@@ -1,21 +1,45 @@
 #!/usr/bin/env bash
-# The main job: installs what is missing, builds the release preset, then lists the Vulkan
-# devices and describes the bundled sample capture. Output goes to out/ (report.md).
+# The main job: installs what is missing, builds the release preset, then
+#   - lists the Vulkan devices,
+#   - describes the bundled sample capture,
+#   - simulates every bundled scene (harness/scenes) into a capture sequence under out/scenes,
+#   - measures the depth pyramid at 1920x1080 on the selected device,
+# and writes everything to out/report.md. GLINT_OUT moves out/, GLINT_DEVICE picks the device.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 "$root/scripts/setup.sh" release glint glint_make_sample
 cd "$root"
 bin=build/release/harness
+glint="$bin/cli/glint"
 out=${GLINT_OUT:-out}
-mkdir -p "$out"
+mkdir -p "$out/scenes"
 "$bin/capture/glint_make_sample" "$out"
 {
   echo "# glint demo report"
   echo
+  echo "## Devices"
   echo '```'
-  "$bin/cli/glint" devices
+  "$glint" devices
+  echo '```'
   echo
-  "$bin/cli/glint" info "$out/sample"
+  echo "## Sample capture"
+  echo '```'
+  "$glint" info "$out/sample"
+  echo '```'
+  echo
+  echo "## Bundled scenes (glint simulate, GPU time per pass)"
+  for scene in harness/scenes/*.toml; do
+    name=$(basename "$scene" .toml)
+    echo
+    echo "### $name"
+    echo '```'
+    "$glint" simulate "$scene" --out "$out/scenes/$name"
+    echo '```'
+  done
+  echo
+  echo "## Depth pyramid, 1920x1080 (glint bench)"
+  echo '```'
+  "$glint" bench depth_pyramid --size 1920x1080 --runs 20
   echo '```'
 } | tee "$out/report.md"
-echo "demo: wrote $out/report.md"
+echo "demo: wrote $out/report.md and the captures under $out/scenes"
