@@ -46,3 +46,16 @@ foreach(scene IN ITEMS courtyard_penumbra disocclusion glossy_room gltf_engine m
   set_tests_properties("cli: the bundled scene ${scene} simulates into a capture that info describes"
                        PROPERTIES LABELS gpu)
 endforeach()
+
+glint_cli_test(NAME "bench times the depth pyramid under validation" LABELS gpu EXIT 0
+  STDOUT "effect depth_pyramid at 97x61.*build +median"
+  COMMAND --validate bench depth_pyramid --size 97x61 --runs 2 --farthest --reversed)
+glint_cli_test(NAME "bench times roughness extraction under validation" LABELS gpu EXIT 0
+  STDOUT "extract_roughness +median"
+  COMMAND --validate bench roughness --size 33x17 --runs 2)
+glint_cli_test(NAME "bench of an unknown effect is a usage error" LABELS unit EXIT 2
+  STDERR_ONE_LINE "unknown effect 'nosuch'"
+  COMMAND bench nosuch --runs 1)
+glint_cli_test(NAME "bench with a malformed size is a usage error" LABELS unit EXIT 2
+  STDERR_ONE_LINE "--size must read WxH"
+  COMMAND bench depth_pyramid --size large)
