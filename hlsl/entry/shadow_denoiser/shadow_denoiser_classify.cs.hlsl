@@ -1,0 +1,86 @@
+// Entry for the shadow denoiser's tile classification + temporal pass: bindings, callbacks,
+// main. Engines read this file as the integration example for
+// glint/shadow_denoiser/glint_shadow_denoiser_classify.hlsli.
+#include "entry/common/glint_entry_common.hlsli"
+#include "glint/shadow_denoiser/glint_shadow_denoiser_constants.h"
+#include "glint/shadow_denoiser/glint_shadow_denoiser_classify.hlsli"
+
+[[vk::binding(0, 0)]] ConstantBuffer<GLINT_ShadowDenoiserClassifyConstants> g_glint_constants;
+[[vk::binding(1, 0)]] StructuredBuffer<uint> g_glint_shadow_mask;
+[[vk::binding(2, 0)]] Texture2D<float> g_glint_depth;
+[[vk::binding(3, 0)]] Texture2D<float> g_glint_previous_depth;
+[[vk::binding(4, 0)]] Texture2D<float4> g_glint_normals;
+[[vk::binding(5, 0)]] Texture2D<float2> g_glint_motion;
+[[vk::binding(6, 0)]] Texture2D<float4> g_glint_moments_history;
+[[vk::binding(7, 0)]] Texture2D<float2> g_glint_shadow_history;
+[[vk::binding(8, 0)]] RWStructuredBuffer<uint> g_glint_tile_metadata;
+[[vk::binding(9, 0)]] GLINT_IMAGE_FORMAT(rg32f) RWTexture2D<float2> g_glint_shadow_variance;
+[[vk::binding(10, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_moments;
+
+uint GLINT_SHADOW_DENOISER_LoadMask(int2 tile)
+{
+    return g_glint_shadow_mask[uint(tile.y) * g_glint_constants.maskTiles.x + uint(tile.x)];
+}
+
+float GLINT_SHADOW_DENOISER_LoadDepth(int2 pixel)
+{
+    return g_glint_depth.Load(int3(pixel, 0));
+}
+
+float GLINT_SHADOW_DENOISER_LoadPreviousDepth(int2 pixel)
+{
+    return g_glint_previous_depth.Load(int3(pixel, 0));
+}
+
+float3 GLINT_SHADOW_DENOISER_LoadNormal(int2 pixel)
+{
+    float2 unpack = g_glint_constants.normalUnpack;
+    return g_glint_normals.Load(int3(pixel, 0)).xyz * unpack.x + unpack.y;
+}
+
+float2 GLINT_SHADOW_DENOISER_LoadMotion(int2 pixel)
+{
+    return g_glint_motion.Load(int3(pixel, 0));
+}
+
+float3 GLINT_SHADOW_DENOISER_LoadMomentsHistory(int2 pixel)
+{
+    return g_glint_moments_history.Load(int3(pixel, 0)).xyz;
+}
+
+float GLINT_SHADOW_DENOISER_LoadShadowHistory(int2 pixel)
+{
+    return g_glint_shadow_history.Load(int3(pixel, 0)).x;
+}
+
+void GLINT_SHADOW_DENOISER_StoreMetadata(uint tileIndex, uint metadata)
+{
+    g_glint_tile_metadata[tileIndex] = metadata;
+}
+
+void GLINT_SHADOW_DENOISER_StoreShadowVariance(int2 pixel, float2 value)
+{
+    g_glint_shadow_variance[pixel] = value;
+}
+
+void GLINT_SHADOW_DENOISER_StoreMoments(int2 pixel, float3 moments)
+{
+    g_glint_moments[pixel] = float4(moments, 0.0);
+}
+
+[numthreads(8, 8, 1)] void main(uint3 groupId : SV_GroupID, uint3 groupThreadId : SV_GroupThreadID,
+                                uint groupIndex : SV_GroupIndex)
+{
+    // glslang passes no ConstantBuffer to a function: copy it into the plain struct.
+    GLINT_ShadowDenoiserClassifyParams c;
+    c.inputSize = g_glint_constants.inputSize;
+    c.maskTiles = g_glint_constants.maskTiles;
+    c.reproject = float4x4(g_glint_constants.reproject[0], g_glint_constants.reproject[1], g_glint_constants.reproject[2], g_glint_constants.reproject[3]);
+    c.inverseViewProj = float4x4(g_glint_constants.inverseViewProj[0], g_glint_constants.inverseViewProj[1], g_glint_constants.inverseViewProj[2],
+                                 g_glint_constants.inverseViewProj[3]);
+    c.eyePosition = g_glint_constants.eyePosition;
+    c.viewDepth = g_glint_constants.viewDepth;
+    c.ndcYSign = g_glint_constants.ndcYSign;
+    c.resetHistory = g_glint_constants.resetHistory;
+    GLINT_SHADOW_DENOISER_Classify(groupId.xy, groupThreadId.xy, groupIndex, c);
+}

@@ -1,0 +1,60 @@
+// Entry for the shadow denoiser's a-trous filter (run three times with step 1, 2, 4):
+// bindings, callbacks, main. Engines read this file as the integration example for
+// glint/shadow_denoiser/glint_shadow_denoiser_filter.hlsli.
+//
+// Permutation: GLINT_SHADOW_DENOISER_TILE_SKIP=1 skips tiles the classification cleared and
+// counts the tiles it filters.
+#include "entry/common/glint_entry_common.hlsli"
+#include "glint/shadow_denoiser/glint_shadow_denoiser_constants.h"
+#include "glint/shadow_denoiser/glint_shadow_denoiser_filter.hlsli"
+
+[[vk::binding(0, 0)]] ConstantBuffer<GLINT_ShadowDenoiserFilterConstants> g_glint_constants;
+[[vk::binding(1, 0)]] Texture2D<float2> g_glint_filter_input;
+[[vk::binding(2, 0)]] Texture2D<float> g_glint_depth;
+[[vk::binding(3, 0)]] Texture2D<float4> g_glint_normals;
+[[vk::binding(4, 0)]] GLINT_IMAGE_FORMAT(rg32f) RWTexture2D<float2> g_glint_filter_output;
+#if GLINT_SHADOW_DENOISER_TILE_SKIP
+[[vk::binding(5, 0)]] StructuredBuffer<uint> g_glint_tile_metadata;
+[[vk::binding(6, 0)]] RWStructuredBuffer<uint> g_glint_filter_work;
+
+uint GLINT_SHADOW_DENOISER_LoadTileMetadata(uint tileIndex)
+{
+    return g_glint_tile_metadata[tileIndex];
+}
+
+void GLINT_SHADOW_DENOISER_CountFilteredTile()
+{
+    uint previous;
+    InterlockedAdd(g_glint_filter_work[0], 1u, previous);
+}
+#endif
+
+float2 GLINT_SHADOW_DENOISER_LoadMeanVariance(int2 pixel)
+{
+    return g_glint_filter_input.Load(int3(pixel, 0));
+}
+
+float GLINT_SHADOW_DENOISER_LoadDepth(int2 pixel)
+{
+    return g_glint_depth.Load(int3(pixel, 0));
+}
+
+float3 GLINT_SHADOW_DENOISER_LoadNormal(int2 pixel)
+{
+    float2 unpack = g_glint_constants.normalUnpack;
+    return g_glint_normals.Load(int3(pixel, 0)).xyz * unpack.x + unpack.y;
+}
+
+void GLINT_SHADOW_DENOISER_StoreFiltered(int2 pixel, float2 meanVariance)
+{
+    g_glint_filter_output[pixel] = meanVariance;
+}
+
+[numthreads(8, 8, 1)] void main(uint3 groupId : SV_GroupID, uint3 groupThreadId : SV_GroupThreadID,
+                                uint groupIndex : SV_GroupIndex)
+{
+    GLINT_SHADOW_DENOISER_Filter(groupId.xy, groupThreadId.xy, groupIndex, g_glint_constants.inputSize,
+                                 g_glint_constants.step, g_glint_constants.finalPass != 0,
+                                 g_glint_constants.viewDepth, g_glint_constants.depthSigma,
+                                 g_glint_constants.normalPower);
+}

@@ -1,0 +1,247 @@
+// glint shadow denoiser, pass 2 (tile classification + temporal accumulation): tile metadata,
+// local statistics from the visibility mask, disocclusion, Welford moments, history
+// reprojection with neighbourhood clamping (docs/shadow_denoiser.md).
+//
+// Integration: define these callbacks before or after including this header. Pixel and tile
+// arguments are always inside the image / mask.
+//
+//   uint   GLINT_SHADOW_DENOISER_LoadMask(int2 tile);          mask word of 8x4 tile
+//   float  GLINT_SHADOW_DENOISER_LoadDepth(int2 pixel);         device depth, current frame
+//   float  GLINT_SHADOW_DENOISER_LoadPreviousDepth(int2 pixel); device depth, previous frame
+//   float3 GLINT_SHADOW_DENOISER_LoadNormal(int2 pixel);        unpacked world normal
+//   float2 GLINT_SHADOW_DENOISER_LoadMotion(int2 pixel);        convention A: uv_prev = uv + mv
+//   float3 GLINT_SHADOW_DENOISER_LoadMomentsHistory(int2 pixel);(mean, M2, n) of last frame
+//   float  GLINT_SHADOW_DENOISER_LoadShadowHistory(int2 pixel); last frame's filter-0 mean
+//   void   GLINT_SHADOW_DENOISER_StoreMetadata(uint tileIndex, uint metadata);
+//   void   GLINT_SHADOW_DENOISER_StoreShadowVariance(int2 pixel, float2 value);
+//   void   GLINT_SHADOW_DENOISER_StoreMoments(int2 pixel, float3 moments);
+// Every loaded value may be non-finite: such histories count as missing, such depths as sky.
+//
+// Dispatch: [numthreads(8, 8, 1)], ceil(W / 8) x ceil(H / 8) x 1 groups.
+#ifndef GLINT_SHADOW_DENOISER_CLASSIFY_HLSLI
+#define GLINT_SHADOW_DENOISER_CLASSIFY_HLSLI
+
+#include "glint/common/glint_math.hlsli"
+#include "glint/shadow_denoiser/glint_shadow_denoiser_constants.h"
+
+uint GLINT_SHADOW_DENOISER_LoadMask(int2 tile);
+float GLINT_SHADOW_DENOISER_LoadDepth(int2 pixel);
+float GLINT_SHADOW_DENOISER_LoadPreviousDepth(int2 pixel);
+float3 GLINT_SHADOW_DENOISER_LoadNormal(int2 pixel);
+float2 GLINT_SHADOW_DENOISER_LoadMotion(int2 pixel);
+float3 GLINT_SHADOW_DENOISER_LoadMomentsHistory(int2 pixel);
+float GLINT_SHADOW_DENOISER_LoadShadowHistory(int2 pixel);
+void GLINT_SHADOW_DENOISER_StoreMetadata(uint tileIndex, uint metadata);
+void GLINT_SHADOW_DENOISER_StoreShadowVariance(int2 pixel, float2 value);
+void GLINT_SHADOW_DENOISER_StoreMoments(int2 pixel, float3 moments);
+
+groupshared uint g_glint_shadow_denoiser_classify_receivers;
+
+// View depth of a receiver (finite depth strictly inside (1e-6, 1 - 1e-6)), or -1.
+float GLINT_SHADOW_DENOISER_ClassifyViewDepth(float depth, float4 viewDepth)
+{
+    if (!GLINT_IsFinite(depth) || !(depth > 1e-6 && depth < 1.0 - 1e-6))
+        return -1.0;
+    float z = viewDepth.x / (viewDepth.y + viewDepth.z * depth);
+    return GLINT_IsFinite(z) && z > 0.0 ? z : -1.0;
+}
+
+// Normalized 1D weights w(i) = exp(-3 i^2 / 81) / sum_{j=-8..8} exp(-3 j^2 / 81), i = 0..8.
+static const float GLINT_SHADOW_DENOISER_GAUSSIAN_17[9] = {0.11082929, 0.10679958, 0.09556847, 0.07941266, 0.06127663,
+                                                           0.04390662, 0.02921428, 0.01805055, 0.01035657};
+
+float GLINT_SHADOW_DENOISER_GaussianWeight(int i)
+{
+    return GLINT_SHADOW_DENOISER_GAUSSIAN_17[i];
+}
+
+// Horizontal 17-tap sum for pixel row y (clamped to the image) centred on column x. Mask
+// tiles outside the image clamp to the border tile.
+float GLINT_SHADOW_DENOISER_RowSum(int x, int y, uint2 inputSize, uint2 maskTiles)
+{
+    int row = clamp(y, 0, int(inputSize.y) - 1);
+    int tileY = row >> 2;
+    int tileX = x >> 3;
+    uint shift = uint(row & 3) * 8u;
+    uint left = (GLINT_SHADOW_DENOISER_LoadMask(int2(max(tileX - 1, 0), tileY)) >> shift) & 0xFFu;
+    uint centre = (GLINT_SHADOW_DENOISER_LoadMask(int2(tileX, tileY)) >> shift) & 0xFFu;
+    uint right = (GLINT_SHADOW_DENOISER_LoadMask(int2(min(tileX + 1, int(maskTiles.x) - 1), tileY)) >> shift) & 0xFFu;
+    uint window = (left | (centre << 8) | (right << 16)) >> uint(x & 7);
+    float sum = 0.0;
+    [unroll] for (int k = 0; k <= 16; ++k)
+        sum += ((window >> uint(k)) & 1u) != 0u ? GLINT_SHADOW_DENOISER_GaussianWeight(abs(k - 8)) : 0.0;
+    return sum;
+}
+
+float GLINT_SHADOW_DENOISER_BilinearHistory(float2 uv, uint2 inputSize, out bool valid)
+{
+    float2 p = uv * float2(inputSize) - 0.5;
+    float2 base = floor(p);
+    float2 f = p - base;
+    int2 b = int2(base);
+    int2 last = int2(inputSize) - 1;
+    float h00 = GLINT_SHADOW_DENOISER_LoadShadowHistory(clamp(b, int2(0, 0), last));
+    float h10 = GLINT_SHADOW_DENOISER_LoadShadowHistory(clamp(b + int2(1, 0), int2(0, 0), last));
+    float h01 = GLINT_SHADOW_DENOISER_LoadShadowHistory(clamp(b + int2(0, 1), int2(0, 0), last));
+    float h11 = GLINT_SHADOW_DENOISER_LoadShadowHistory(clamp(b + int2(1, 1), int2(0, 0), last));
+    float h = lerp(lerp(h00, h10, f.x), lerp(h01, h11, f.x), f.y);
+    valid = GLINT_IsFinite(h);
+    return valid ? clamp(h, 0.0, 1.0) : 0.0;
+}
+
+// Constants as in GLINT_ShadowDenoiserClassifyConstants; the matrices are built from its rows
+// with float4x4(row0, row1, row2, row3), so mul(matrix, p) = (dot(row_i, p)).
+struct GLINT_ShadowDenoiserClassifyParams
+{
+    uint2 inputSize;
+    uint2 maskTiles;
+    float4x4 reproject;
+    float4x4 inverseViewProj;
+    float4 eyePosition;
+    float4 viewDepth;
+    float ndcYSign;
+    uint resetHistory;
+};
+
+void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint2 groupThreadId, uint groupIndex,
+                                    GLINT_ShadowDenoiserClassifyParams c)
+{
+    int2 pixel = int2(groupId * 8u + groupThreadId);
+    bool inside = all(uint2(pixel) < c.inputSize);
+    int2 loadPixel = min(pixel, int2(c.inputSize) - 1);
+    float depth = GLINT_SHADOW_DENOISER_LoadDepth(loadPixel);
+    float z = GLINT_SHADOW_DENOISER_ClassifyViewDepth(depth, c.viewDepth);
+    bool receiver = inside && z > 0.0;
+
+    if (groupIndex == 0)
+        g_glint_shadow_denoiser_classify_receivers = 0u;
+    GroupMemoryBarrierWithGroupSync();
+    if (receiver)
+        InterlockedOr(g_glint_shadow_denoiser_classify_receivers, 1u);
+    GroupMemoryBarrierWithGroupSync();
+    bool anyReceiver = g_glint_shadow_denoiser_classify_receivers != 0u;
+
+    // Uniform region: the 3x6 mask tiles around the block (24x24 pixels), clamped.
+    uint orMask = 0u;
+    uint andMask = 0xFFFFFFFFu;
+    int2 firstTile = int2(groupId.x, groupId.y * 2u);
+    for (int j = -2; j <= 3; ++j)
+        for (int i = -1; i <= 1; ++i)
+        {
+            int2 tile = clamp(firstTile + int2(i, j), int2(0, 0), int2(c.maskTiles) - 1);
+            uint word = GLINT_SHADOW_DENOISER_LoadMask(tile);
+            orMask |= word;
+            andMask &= word;
+        }
+    bool allLit = andMask == 0xFFFFFFFFu;
+    bool clear = !anyReceiver || allLit || orMask == 0u;
+
+    if (groupIndex == 0)
+    {
+        uint tilesX = (c.inputSize.x + 7u) / 8u;
+        uint metadata = clear ? GLINT_SHADOW_DENOISER_TILE_CLEAR : 0u;
+        if (clear && anyReceiver && allLit)
+            metadata |= GLINT_SHADOW_DENOISER_TILE_LIGHT;
+        GLINT_SHADOW_DENOISER_StoreMetadata(groupId.y * tilesX + groupId.x, metadata);
+    }
+    if (!inside)
+        return;
+    if (clear)
+    {
+        float value = anyReceiver && allLit && receiver ? 1.0 : 0.0;
+        GLINT_SHADOW_DENOISER_StoreShadowVariance(pixel, float2(value, 0.0));
+        GLINT_SHADOW_DENOISER_StoreMoments(pixel, float3(value, 0.0, receiver ? 1.0 : 0.0));
+        return;
+    }
+    if (!receiver)
+    {
+        GLINT_SHADOW_DENOISER_StoreShadowVariance(pixel, float2(0.0, 0.0));
+        GLINT_SHADOW_DENOISER_StoreMoments(pixel, float3(0.0, 0.0, 0.0));
+        return;
+    }
+
+    // Local mean and variance: 17x17 Gaussian, rows first.
+    float mean = 0.0;
+    for (int r = -8; r <= 8; ++r)
+        mean += GLINT_SHADOW_DENOISER_GaussianWeight(abs(r)) *
+                GLINT_SHADOW_DENOISER_RowSum(pixel.x, pixel.y + r, c.inputSize, c.maskTiles);
+    mean = clamp(mean, 0.0, 1.0);
+    float spatialVariance = max(mean - mean * mean, 0.0);
+    float spatialSigma = sqrt(spatialVariance);
+    uint ownWord = GLINT_SHADOW_DENOISER_LoadMask(int2(pixel.x >> 3, pixel.y >> 2));
+    float x = ((ownWord >> (uint(pixel.y & 3) * 8u + uint(pixel.x & 7))) & 1u) != 0u ? 1.0 : 0.0;
+
+    // Motion of the closest receiver of the 2x2 quad.
+    int2 quad = pixel & ~1;
+    int2 motionPixel = pixel;
+    float closest = z;
+    [unroll] for (int q = 0; q < 4; ++q)
+    {
+        int2 other = min(quad + int2(q & 1, q >> 1), int2(c.inputSize) - 1);
+        float otherZ = GLINT_SHADOW_DENOISER_ClassifyViewDepth(GLINT_SHADOW_DENOISER_LoadDepth(other), c.viewDepth);
+        if (otherZ > 0.0 && otherZ < closest)
+        {
+            closest = otherZ;
+            motionPixel = other;
+        }
+    }
+    float2 motion = GLINT_SHADOW_DENOISER_LoadMotion(motionPixel);
+    float2 uv = (float2(pixel) + 0.5) / float2(c.inputSize);
+    float2 uvPrevious = uv + motion;
+    bool disoccluded = c.resetHistory != 0u || !GLINT_IsFinite(uvPrevious.x) || !GLINT_IsFinite(uvPrevious.y) ||
+                       any(uvPrevious < 0.0) || any(uvPrevious > 1.0);
+    if (!disoccluded)
+    {
+        float4 ndc = float4(2.0 * uv.x - 1.0, c.ndcYSign * (2.0 * uv.y - 1.0), depth, 1.0);
+        float4 previousClip = mul(c.reproject, ndc);
+        float reprojectedZ = GLINT_SHADOW_DENOISER_ClassifyViewDepth(previousClip.z / previousClip.w, c.viewDepth);
+        int2 previousPixel = min(int2(uvPrevious * float2(c.inputSize)), int2(c.inputSize) - 1);
+        float previousZ =
+            GLINT_SHADOW_DENOISER_ClassifyViewDepth(GLINT_SHADOW_DENOISER_LoadPreviousDepth(previousPixel), c.viewDepth);
+        float4 world = mul(c.inverseViewProj, ndc);
+        float3 toEye = c.eyePosition.xyz - world.xyz / world.w;
+        float3 normal = GLINT_SHADOW_DENOISER_LoadNormal(pixel);
+        float cosine = abs(dot(normalize(toEye), normalize(normal)));
+        cosine = GLINT_IsFinite(cosine) ? min(cosine, 1.0) : 0.0;
+        float threshold = lerp(0.01, 0.1, pow(1.0 - cosine, 8.0));
+        float relative = abs(previousZ - reprojectedZ) / reprojectedZ;
+        disoccluded = !(reprojectedZ > 0.0) || !(previousZ > 0.0) || !(relative < threshold);
+    }
+
+    float3 moments = float3(0.0, 0.0, 0.0);
+    float history = mean;
+    if (!disoccluded)
+    {
+        int2 previousPixel = min(int2(uvPrevious * float2(c.inputSize)), int2(c.inputSize) - 1);
+        float3 loaded = GLINT_SHADOW_DENOISER_LoadMomentsHistory(previousPixel);
+        bool historyValid;
+        float bilinear = GLINT_SHADOW_DENOISER_BilinearHistory(uvPrevious, c.inputSize, historyValid);
+        if (GLINT_IsFinite(loaded.x) && GLINT_IsFinite(loaded.y) && GLINT_IsFinite(loaded.z) && historyValid)
+        {
+            moments = float3(clamp(loaded.x, 0.0, 1.0), max(loaded.y, 0.0), clamp(loaded.z, 0.0, 1023.0));
+            history = bilinear;
+        }
+    }
+
+    // Welford update with this frame's sample.
+    float n = moments.z + 1.0;
+    float delta = x - moments.x;
+    float newMean = moments.x + delta / n;
+    float m2 = moments.y + delta * (x - newMean);
+    float temporalVariance = n > 1.0 ? m2 / (n - 1.0) : 1.0;
+
+    float clampRadius = 0.5 * spatialSigma;
+    float clamped = clamp(history, mean - clampRadius, mean + clampRadius);
+    float deviation = (history - mean) / max(clampRadius, 0.001);
+    n *= exp(-deviation * deviation / 20.0);
+    float variance = n < 16.0 ? max(temporalVariance, spatialVariance) * max(16.0 - n, 1.0) : temporalVariance;
+    float youth = sqrt(max(8.0 - n, 0.0) / 8.0);
+    float result = lerp(clamped, x, lerp(0.05, 1.0, youth));
+
+    GLINT_SHADOW_DENOISER_StoreShadowVariance(
+        pixel, float2(clamp(GLINT_FiniteOr(result, 0.0), 0.0, 1.0), max(GLINT_FiniteOr(variance, 0.0), 0.0)));
+    GLINT_SHADOW_DENOISER_StoreMoments(pixel, float3(clamp(GLINT_FiniteOr(newMean, 0.0), 0.0, 1.0),
+                                                     max(GLINT_FiniteOr(m2, 0.0), 0.0), GLINT_FiniteOr(n, 0.0)));
+}
+
+#endif // GLINT_SHADOW_DENOISER_CLASSIFY_HLSLI

@@ -1,0 +1,69 @@
+// Constants of the shadow denoiser passes, compiled by both C++ and HLSL. The host fills them
+// from glint::planShadowDenoiser (host/src/core/shadow_denoiser_passes.cpp).
+#ifndef GLINT_SHADOW_DENOISER_CONSTANTS_H
+#define GLINT_SHADOW_DENOISER_CONSTANTS_H
+
+#include "glint/common/glint_shared_types.h"
+
+// The visibility mask: one 32-bit word per 8x4 pixel tile (docs/shadow_denoiser.md).
+#define GLINT_SHADOW_DENOISER_MASK_TILE_WIDTH 8
+#define GLINT_SHADOW_DENOISER_MASK_TILE_HEIGHT 4
+// A prepare group packs 4x4 mask tiles: 32x16 pixels, two pixels per thread.
+#define GLINT_SHADOW_DENOISER_PREPARE_GROUP_WIDTH 32
+#define GLINT_SHADOW_DENOISER_PREPARE_GROUP_HEIGHT 8
+#define GLINT_SHADOW_DENOISER_PREPARE_BLOCK_HEIGHT 16
+// The filter works on 8x8 pixel tiles with a 4-pixel apron (step 4 x radius 1).
+#define GLINT_SHADOW_DENOISER_FILTER_TILE 8
+#define GLINT_SHADOW_DENOISER_FILTER_APRON 4
+
+#ifdef __cplusplus
+namespace glint::shaders {
+GLINT_SHARED_USING;
+#endif
+
+GLINT_CONSTANTS_BEGIN(GLINT_ShadowDenoiserPrepareConstants)
+    uint2 inputSize;  // W x H of the visibility input
+    uint maskTilesX;  // ceil(W / 8): words per mask row
+    uint maskTilesY;  // ceil(H / 4): mask rows
+GLINT_CONSTANTS_END(GLINT_ShadowDenoiserPrepareConstants);
+
+GLINT_CONSTANTS_BEGIN(GLINT_ShadowDenoiserFilterConstants)
+    uint2 inputSize;         // W x H
+    uint step;               // a-trous tap spacing in pixels: 1, 2 or 4
+    uint finalPass;          // 1: apply the contrast remap to the mean
+    float4 viewDepth;        // (A, B, C, 0): view depth z = A / (B + C d) of device depth d
+    float2 normalUnpack;     // (mul, add): n = normalize(raw.xyz * mul + add)
+    float depthSigma;        // relative depth edge stop: exp(-|z_c - z_q| / (depthSigma z_c))
+    float normalPower;       // normal edge stop: max(0, N_c . N_q)^normalPower
+GLINT_CONSTANTS_END(GLINT_ShadowDenoiserFilterConstants);
+
+// Tile metadata bits (one word per 8x8 tile).
+#define GLINT_SHADOW_DENOISER_TILE_CLEAR 1u
+#define GLINT_SHADOW_DENOISER_TILE_LIGHT 2u
+
+// Matrices are column-vector (q = M p) and passed as four rows: q.i = dot(row_i, p).
+GLINT_CONSTANTS_BEGIN(GLINT_ShadowDenoiserClassifyConstants)
+    uint2 inputSize;
+    uint2 maskTiles;            // ceil(W / 8) x ceil(H / 4)
+    float4 reproject[4];        // R_reproj = VP_prev VP^-1: current NDC (x_n, y_n, d, 1) -> previous clip
+    float4 inverseViewProj[4];  // VP^-1: current NDC -> world (homogeneous)
+    float4 eyePosition;         // xyz: world-space eye
+    float4 viewDepth;           // (A, B, C, 0): view depth z = A / (B + C d), both frames
+    float2 normalUnpack;        // (mul, add)
+    float ndcYSign;             // y_n = ndcYSign (2 v - 1): +1 Vulkan-style, -1 D3D-style
+    uint resetHistory;          // 1: camera cut or first frame, every history is ignored
+GLINT_CONSTANTS_END(GLINT_ShadowDenoiserClassifyConstants);
+
+#ifdef __cplusplus
+static_assert(sizeof(GLINT_ShadowDenoiserClassifyConstants) == 192);
+static_assert(offsetof(GLINT_ShadowDenoiserClassifyConstants, reproject) == 16);
+static_assert(offsetof(GLINT_ShadowDenoiserClassifyConstants, eyePosition) == 144);
+static_assert(offsetof(GLINT_ShadowDenoiserClassifyConstants, normalUnpack) == 176);
+static_assert(sizeof(GLINT_ShadowDenoiserPrepareConstants) == 16);
+static_assert(sizeof(GLINT_ShadowDenoiserFilterConstants) == 48);
+static_assert(offsetof(GLINT_ShadowDenoiserFilterConstants, viewDepth) == 16);
+static_assert(offsetof(GLINT_ShadowDenoiserFilterConstants, normalUnpack) == 32);
+} // namespace glint::shaders
+#endif
+
+#endif // GLINT_SHADOW_DENOISER_CONSTANTS_H

@@ -1,0 +1,64 @@
+// glint public API: the ray-traced shadow denoiser (docs/shadow_denoiser.md).
+//
+// Input: one binary visibility sample per pixel (R32F, 1 = lit), device depth and world-space
+// normals. The plan packs the visibility into a bitmask (one word per 8 x 4 pixels) and runs
+// three edge-avoiding a-trous passes (steps 1, 2, 4) over (mean, variance), the last of which
+// applies the contrast remap. Tile classification in between accumulates over time.
+#pragma once
+
+#include "glint/glint_pass.h"
+#include "glint/glint_types.h"
+
+#include <array>
+#include <string>
+
+namespace glint {
+
+enum class ShadowDenoiserDepth : std::uint8_t {
+    Standard, // near 0, far 1: z = n f / (f - d (f - n))
+    Reversed, // near 1, far 0: z = n f / (n + d (f - n)); farPlane <= 0 means infinite (z = n / d)
+};
+
+struct ShadowDenoiserDesc {
+    Extent2D size; // 1..16384 each
+    ShadowDenoiserDepth depth = ShadowDenoiserDepth::Standard;
+    float nearPlane = 0.1f;
+    float farPlane = 1000.0f;
+    float normalUnpackMul = 1.0f; // n = normalize(raw.xyz * mul + add); (2, -1) for UNORM normals
+    float normalUnpackAdd = 0.0f;
+    float depthSigma = 0.02f; // relative depth edge stop, see docs/shadow_denoiser.md
+    float normalPower = 32.0f;
+    bool filter = true;           // false: no filter passes
+    bool classify = true;         // false: no classification; the filter reads "shadow_filter_input"
+    bool skipClearedTiles = true; // with classify: the filter skips tiles classification cleared
+
+    // Classification (temporal) inputs. Matrices are row-major 4x4 with column vectors (q = M p).
+    std::array<double, 16> reprojection{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}; // VP_prev VP^-1
+    std::array<double, 16> inverseViewProjection{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}; // VP^-1
+    std::array<float, 3> eyePosition{0.0f, 0.0f, 0.0f};
+    bool vulkanNdc = true;        // y_n = 2v - 1 (true) or 1 - 2v (D3D-style)
+    bool resetHistory = false;    // first frame, camera cut or resize: every history is ignored
+    std::uint32_t frameIndex = 0; // moments ping-pong on its parity
+};
+
+// Words of the visibility mask: ceil(W / 8) x ceil(H / 4).
+Extent2D shadowMaskTiles(Extent2D size);
+
+// Resources of the plan (application's inputs first):
+//   "shadow_visibility"     R32F W x H, sampled; 1 = lit, >= 0.5 counts as lit, NaN as shadowed
+//   "shadow_depth"          R32F W x H device depth
+//   "shadow_previous_depth" R32F W x H last frame's device depth (the application copies it)
+//   "shadow_normals"        RGBA W x H, any float format, world-space normals
+//   "shadow_motion"         RG W x H, convention A: uv_prev = uv + mv
+//   "shadow_filter_input"   RG32F W x H (mean, variance), only when classify is false
+//   "shadow_mask"           buffer, 4 bytes per mask word, written by "prepare"
+//   "shadow_tile_metadata"  buffer, 4 bytes per 8x8 tile: bit 0 CLEAR, bit 1 LIGHT
+//   "shadow_moments0/1"     RGBA32F (mean, M2, n, 0): written on frame parity, read on the other
+//   "shadow_scratch0/1"     RG32F (shadow, variance): classification writes 0; "filter0" writes 1,
+//                           which stays as the next frame's history; "filter1" writes 0
+//   "shadow_filter_work"    buffer, one uint: 8x8 tiles the three filter passes filtered (skipping)
+//   "shadow_output"         RG32F: .x the denoised shadow (1 = lit, 0 for non-receivers), .y variance
+// Every owned image must hold finite values or be ignored through resetHistory on the first frame.
+Result planShadowDenoiser(const ShadowDenoiserDesc& desc, EffectPlan& plan, std::string* error);
+
+} // namespace glint

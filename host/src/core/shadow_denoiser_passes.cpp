@@ -1,0 +1,189 @@
+// The shadow denoiser as data: sizes, passes, resources.
+#include "glint/glint_shadow_denoiser.h"
+
+#include "core/dispatch.h"
+#include "glint/shadow_denoiser/glint_shadow_denoiser_constants.h"
+
+#include <cmath>
+
+namespace glint {
+namespace {
+
+constexpr std::uint32_t kMaxExtent = 16384;
+
+Result invalid(std::string* error, const std::string& message) {
+    if (error) *error = "shadow denoiser: " + message;
+    return Result::InvalidArgument;
+}
+
+bool positiveFinite(float value) {
+    return std::isfinite(value) && value > 0.0f;
+}
+
+// (A, B, C) with view depth z = A / (B + C d); computed in double.
+shared::float4 viewDepthCoefficients(const ShadowDenoiserDesc& desc) {
+    const double n = desc.nearPlane;
+    const double f = desc.farPlane;
+    if (desc.depth == ShadowDenoiserDepth::Reversed && !(f > 0.0)) // infinite far plane: z = n / d
+        return {static_cast<float>(n), 0.0f, 1.0f, 0.0f};
+    const double a = n * f / (f - n);
+    if (desc.depth == ShadowDenoiserDepth::Standard) // z = n f / (f - d (f - n))
+        return {static_cast<float>(a), static_cast<float>(f / (f - n)), -1.0f, 0.0f};
+    return {static_cast<float>(a), static_cast<float>(n / (f - n)), 1.0f, 0.0f}; // z = n f / (n + d (f - n))
+}
+
+Pass preparePass(const ShadowDenoiserDesc& desc, Extent2D tiles) {
+    Pass pass;
+    pass.name = "prepare";
+    pass.pipeline = "shadow_denoiser_prepare";
+    pass.groupSize[0] = GLINT_SHADOW_DENOISER_PREPARE_GROUP_WIDTH;
+    pass.groupSize[1] = GLINT_SHADOW_DENOISER_PREPARE_GROUP_HEIGHT;
+    pass.groupSize[2] = 1;
+    pass.dispatch =
+        DirectDispatch{core::divideRoundUp(desc.size.width, GLINT_SHADOW_DENOISER_PREPARE_GROUP_WIDTH),
+                       core::divideRoundUp(desc.size.height, GLINT_SHADOW_DENOISER_PREPARE_BLOCK_HEIGHT), 1};
+    shaders::GLINT_ShadowDenoiserPrepareConstants constants{};
+    constants.inputSize = {desc.size.width, desc.size.height};
+    constants.maskTilesX = tiles.width;
+    constants.maskTilesY = tiles.height;
+    pass.constantsBinding = "g_glint_constants";
+    pass.constants = core::packConstants(constants);
+    pass.uses = {{"g_glint_visibility", "shadow_visibility", Access::Read},
+                 {"g_glint_shadow_mask", "shadow_mask", Access::Write}};
+    return pass;
+}
+
+Pass filterPass(const ShadowDenoiserDesc& desc, std::uint32_t index, const char* input, const char* output) {
+    Pass pass;
+    pass.name = "filter" + std::to_string(index);
+    pass.pipeline = "shadow_denoiser_filter";
+    pass.groupSize[0] = GLINT_SHADOW_DENOISER_FILTER_TILE;
+    pass.groupSize[1] = GLINT_SHADOW_DENOISER_FILTER_TILE;
+    pass.groupSize[2] = 1;
+    pass.dispatch =
+        DirectDispatch{core::divideRoundUp(desc.size.width, GLINT_SHADOW_DENOISER_FILTER_TILE),
+                       core::divideRoundUp(desc.size.height, GLINT_SHADOW_DENOISER_FILTER_TILE), 1};
+    shaders::GLINT_ShadowDenoiserFilterConstants constants{};
+    constants.inputSize = {desc.size.width, desc.size.height};
+    constants.step = 1u << index;
+    constants.finalPass = index == 2 ? 1u : 0u;
+    constants.viewDepth = viewDepthCoefficients(desc);
+    constants.normalUnpack = {desc.normalUnpackMul, desc.normalUnpackAdd};
+    constants.depthSigma = desc.depthSigma;
+    constants.normalPower = desc.normalPower;
+    pass.constantsBinding = "g_glint_constants";
+    pass.constants = core::packConstants(constants);
+    pass.uses = {{"g_glint_filter_input", input, Access::Read},
+                 {"g_glint_depth", "shadow_depth", Access::Read},
+                 {"g_glint_normals", "shadow_normals", Access::Read},
+                 {"g_glint_filter_output", output, Access::Write}};
+    if (desc.classify && desc.skipClearedTiles) {
+        pass.pipeline = "shadow_denoiser_filter.skip";
+        pass.uses.push_back({"g_glint_tile_metadata", "shadow_tile_metadata", Access::Read});
+        pass.uses.push_back({"g_glint_filter_work", "shadow_filter_work", Access::ReadWrite});
+        if (index == 0) pass.zeroBuffers = {"shadow_filter_work"};
+    }
+    return pass;
+}
+
+Pass classifyPass(const ShadowDenoiserDesc& desc, Extent2D tiles) {
+    Pass pass;
+    pass.name = "classify";
+    pass.pipeline = "shadow_denoiser_classify";
+    pass.dispatch =
+        DirectDispatch{core::divideRoundUp(desc.size.width, GLINT_SHADOW_DENOISER_FILTER_TILE),
+                       core::divideRoundUp(desc.size.height, GLINT_SHADOW_DENOISER_FILTER_TILE), 1};
+    shaders::GLINT_ShadowDenoiserClassifyConstants constants{};
+    constants.inputSize = {desc.size.width, desc.size.height};
+    constants.maskTiles = {tiles.width, tiles.height};
+    for (std::size_t row = 0; row < 4; ++row) {
+        const double* r = &desc.reprojection[4 * row];
+        const double* v = &desc.inverseViewProjection[4 * row];
+        constants.reproject[row] = {static_cast<float>(r[0]), static_cast<float>(r[1]),
+                                    static_cast<float>(r[2]), static_cast<float>(r[3])};
+        constants.inverseViewProj[row] = {static_cast<float>(v[0]), static_cast<float>(v[1]),
+                                          static_cast<float>(v[2]), static_cast<float>(v[3])};
+    }
+    constants.eyePosition = {desc.eyePosition[0], desc.eyePosition[1], desc.eyePosition[2], 0.0f};
+    constants.viewDepth = viewDepthCoefficients(desc);
+    constants.normalUnpack = {desc.normalUnpackMul, desc.normalUnpackAdd};
+    constants.ndcYSign = desc.vulkanNdc ? 1.0f : -1.0f;
+    constants.resetHistory = desc.resetHistory ? 1u : 0u;
+    pass.constantsBinding = "g_glint_constants";
+    pass.constants = core::packConstants(constants);
+    const bool odd = (desc.frameIndex & 1u) != 0;
+    pass.uses = {{"g_glint_shadow_mask", "shadow_mask", Access::Read},
+                 {"g_glint_depth", "shadow_depth", Access::Read},
+                 {"g_glint_previous_depth", "shadow_previous_depth", Access::Read},
+                 {"g_glint_normals", "shadow_normals", Access::Read},
+                 {"g_glint_motion", "shadow_motion", Access::Read},
+                 {"g_glint_moments_history", odd ? "shadow_moments0" : "shadow_moments1", Access::Read},
+                 {"g_glint_shadow_history", "shadow_scratch1", Access::Read},
+                 {"g_glint_tile_metadata", "shadow_tile_metadata", Access::Write},
+                 {"g_glint_shadow_variance", "shadow_scratch0", Access::Write},
+                 {"g_glint_moments", odd ? "shadow_moments1" : "shadow_moments0", Access::Write}};
+    return pass;
+}
+
+bool finiteMatrix(const std::array<double, 16>& matrix) {
+    for (double value : matrix)
+        if (!std::isfinite(value)) return false;
+    return true;
+}
+
+} // namespace
+
+Extent2D shadowMaskTiles(Extent2D size) {
+    return {core::divideRoundUp(size.width, GLINT_SHADOW_DENOISER_MASK_TILE_WIDTH),
+            core::divideRoundUp(size.height, GLINT_SHADOW_DENOISER_MASK_TILE_HEIGHT)};
+}
+
+Result planShadowDenoiser(const ShadowDenoiserDesc& desc, EffectPlan& plan, std::string* error) {
+    if (desc.size.width == 0 || desc.size.height == 0 || desc.size.width > kMaxExtent ||
+        desc.size.height > kMaxExtent)
+        return invalid(error, "size must be 1..16384 in each dimension");
+    if (!positiveFinite(desc.nearPlane)) return invalid(error, "nearPlane must be positive and finite");
+    const bool infiniteFar = desc.depth == ShadowDenoiserDepth::Reversed && !(desc.farPlane > 0.0f);
+    if (!infiniteFar && !(std::isfinite(desc.farPlane) && desc.farPlane > desc.nearPlane))
+        return invalid(error, "farPlane must be finite and beyond nearPlane");
+    if (!(desc.depthSigma >= 1e-6f && std::isfinite(desc.depthSigma)))
+        return invalid(error, "depthSigma must be finite and >= 1e-6");
+    if (!(desc.normalPower >= 1.0f && desc.normalPower <= 256.0f))
+        return invalid(error, "normalPower must be 1..256");
+    if (!std::isfinite(desc.normalUnpackMul) || !std::isfinite(desc.normalUnpackAdd))
+        return invalid(error, "normal unpack factors must be finite");
+
+    if (!finiteMatrix(desc.reprojection) || !finiteMatrix(desc.inverseViewProjection))
+        return invalid(error, "camera matrices must be finite");
+
+    const Extent2D tiles = shadowMaskTiles(desc.size);
+    plan = EffectPlan{};
+    plan.effect = "shadow_denoiser";
+    plan.buffers.push_back({"shadow_mask", std::uint64_t{tiles.width} * tiles.height * 4u, false});
+    plan.passes.push_back(preparePass(desc, tiles));
+    const std::uint32_t w = desc.size.width;
+    const std::uint32_t h = desc.size.height;
+    if (desc.classify || desc.filter) {
+        plan.images.push_back({"shadow_scratch0", w, h, 1, Format::RG32Float});
+        plan.images.push_back({"shadow_scratch1", w, h, 1, Format::RG32Float});
+    }
+    if (desc.classify) {
+        const std::uint64_t tileCount =
+            std::uint64_t{core::divideRoundUp(w, GLINT_SHADOW_DENOISER_FILTER_TILE)} *
+            core::divideRoundUp(h, GLINT_SHADOW_DENOISER_FILTER_TILE);
+        plan.buffers.push_back({"shadow_tile_metadata", tileCount * 4u, false});
+        plan.images.push_back({"shadow_moments0", w, h, 1, Format::RGBA32Float});
+        plan.images.push_back({"shadow_moments1", w, h, 1, Format::RGBA32Float});
+        plan.passes.push_back(classifyPass(desc, tiles));
+    }
+    if (!desc.filter) return Result::Ok;
+    plan.images.push_back({"shadow_output", w, h, 1, Format::RG32Float});
+    if (desc.classify && desc.skipClearedTiles) plan.buffers.push_back({"shadow_filter_work", 4, false});
+    plan.passes.push_back(
+        filterPass(desc, 0, desc.classify ? "shadow_scratch0" : "shadow_filter_input", "shadow_scratch1"));
+    plan.passes.push_back(filterPass(desc, 1, "shadow_scratch1", "shadow_scratch0"));
+    plan.passes.push_back(filterPass(desc, 2, "shadow_scratch0", "shadow_output"));
+    return Result::Ok;
+}
+
+} // namespace glint

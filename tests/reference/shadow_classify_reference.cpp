@@ -1,0 +1,184 @@
+#include "reference/shadow_classify_reference.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace glint::reference {
+namespace {
+
+constexpr float kGaussian[9] = {0.11082929f, 0.10679958f, 0.09556847f, 0.07941266f, 0.06127663f,
+                                0.04390662f, 0.02921428f, 0.01805055f, 0.01035657f};
+
+float viewDepthOf(float d, const float c[3]) {
+    if (!std::isfinite(d) || !(d > 1e-6f && d < 1.0f - 1e-6f)) return -1.0f;
+    const float z = c[0] / (c[1] + c[2] * d);
+    return std::isfinite(z) && z > 0.0f ? z : -1.0f;
+}
+
+std::array<float, 4> transform(const std::array<float, 16>& m, const std::array<float, 4>& p) {
+    std::array<float, 4> q{};
+    for (std::size_t r = 0; r < 4; ++r)
+        q[r] = m[4 * r] * p[0] + m[4 * r + 1] * p[1] + m[4 * r + 2] * p[2] + m[4 * r + 3] * p[3];
+    return q;
+}
+
+bool finite(float v) {
+    return std::isfinite(v);
+}
+
+} // namespace
+
+ShadowClassifyOutputs shadowClassify(const ShadowClassifyInputs& in) {
+    const int w = static_cast<int>(in.width);
+    const int h = static_cast<int>(in.height);
+    const int tilesX = (w + 7) / 8;
+    const int tilesY = (h + 3) / 4;
+    auto idx = [w](int x, int y) { return std::size_t(y) * std::size_t(w) + std::size_t(x); };
+    auto word = [&](int tx, int ty) {
+        return in.mask[std::size_t(std::clamp(ty, 0, tilesY - 1)) * std::size_t(tilesX) +
+                       std::size_t(std::clamp(tx, 0, tilesX - 1))];
+    };
+    auto z = [&](int x, int y) { return viewDepthOf(in.depth[idx(x, y)], in.viewDepth); };
+    auto rowSum = [&](int x, int y) {
+        const int row = std::clamp(y, 0, h - 1);
+        const int shift = (row & 3) * 8;
+        const std::uint32_t left = (word((x >> 3) - 1, row >> 2) >> shift) & 0xFFu;
+        const std::uint32_t centre = (word(x >> 3, row >> 2) >> shift) & 0xFFu;
+        const std::uint32_t right = (word((x >> 3) + 1, row >> 2) >> shift) & 0xFFu;
+        const std::uint32_t window = (left | (centre << 8) | (right << 16)) >> (x & 7);
+        float sum = 0.0f;
+        for (int k = 0; k <= 16; ++k)
+            if ((window >> k) & 1u) sum += kGaussian[std::abs(k - 8)];
+        return sum;
+    };
+
+    ShadowClassifyOutputs out;
+    const int groupsX = (w + 7) / 8;
+    const int groupsY = (h + 7) / 8;
+    out.metadata.assign(std::size_t(groupsX) * std::size_t(groupsY), 0u);
+    out.shadowVariance.assign(2 * idx(0, h), 0.0f);
+    out.moments.assign(4 * idx(0, h), 0.0f);
+    for (int gy = 0; gy < groupsY; ++gy)
+        for (int gx = 0; gx < groupsX; ++gx) {
+            bool anyReceiver = false;
+            for (int y = gy * 8; y < std::min(gy * 8 + 8, h); ++y)
+                for (int x = gx * 8; x < std::min(gx * 8 + 8, w); ++x)
+                    anyReceiver = anyReceiver || z(x, y) > 0.0f;
+            std::uint32_t orMask = 0u, andMask = 0xFFFFFFFFu;
+            for (int j = -2; j <= 3; ++j)
+                for (int i = -1; i <= 1; ++i) {
+                    orMask |= word(gx + i, gy * 2 + j);
+                    andMask &= word(gx + i, gy * 2 + j);
+                }
+            const bool allLit = andMask == 0xFFFFFFFFu;
+            const bool clear = !anyReceiver || allLit || orMask == 0u;
+            out.metadata[std::size_t(gy) * std::size_t(groupsX) + std::size_t(gx)] =
+                (clear ? 1u : 0u) | (clear && anyReceiver && allLit ? 2u : 0u);
+            for (int y = gy * 8; y < std::min(gy * 8 + 8, h); ++y)
+                for (int x = gx * 8; x < std::min(gx * 8 + 8, w); ++x) {
+                    const std::size_t p = idx(x, y);
+                    const float zc = z(x, y);
+                    const bool receiver = zc > 0.0f;
+                    if (clear) {
+                        const float value = anyReceiver && allLit && receiver ? 1.0f : 0.0f;
+                        out.shadowVariance[2 * p] = value;
+                        out.moments[4 * p] = value;
+                        out.moments[4 * p + 2] = receiver ? 1.0f : 0.0f;
+                        continue;
+                    }
+                    if (!receiver) continue;
+                    float mean = 0.0f;
+                    for (int r = -8; r <= 8; ++r) mean += kGaussian[std::abs(r)] * rowSum(x, y + r);
+                    mean = std::clamp(mean, 0.0f, 1.0f);
+                    const float spatialVariance = std::max(mean - mean * mean, 0.0f);
+                    const float spatialSigma = std::sqrt(spatialVariance);
+                    const float sample =
+                        ((word(x >> 3, y >> 2) >> ((y & 3) * 8 + (x & 7))) & 1u) ? 1.0f : 0.0f;
+
+                    int mx = x, my = y;
+                    float closest = zc;
+                    for (int q = 0; q < 4; ++q) {
+                        const int ox = std::min((x & ~1) + (q & 1), w - 1);
+                        const int oy = std::min((y & ~1) + (q >> 1), h - 1);
+                        const float oz = z(ox, oy);
+                        if (oz > 0.0f && oz < closest) {
+                            closest = oz;
+                            mx = ox;
+                            my = oy;
+                        }
+                    }
+                    const float u = (float(x) + 0.5f) / float(w);
+                    const float v = (float(y) + 0.5f) / float(h);
+                    const float up = u + in.motion[2 * idx(mx, my)];
+                    const float vp = v + in.motion[2 * idx(mx, my) + 1];
+                    bool disoccluded = in.reset || !finite(up) || !finite(vp) || up < 0.0f || vp < 0.0f ||
+                                       up > 1.0f || vp > 1.0f;
+                    const int px = std::min(int(up * float(w)), w - 1);
+                    const int py = std::min(int(vp * float(h)), h - 1);
+                    if (!disoccluded) {
+                        const std::array<float, 4> ndc{2.0f * u - 1.0f, in.ndcYSign * (2.0f * v - 1.0f),
+                                                       in.depth[p], 1.0f};
+                        const std::array<float, 4> clip = transform(in.reprojection, ndc);
+                        const float zr = viewDepthOf(clip[2] / clip[3], in.viewDepth);
+                        const float zp = viewDepthOf(in.previousDepth[idx(px, py)], in.viewDepth);
+                        const std::array<float, 4> world = transform(in.inverseViewProjection, ndc);
+                        float e[3], n[3];
+                        for (std::size_t k = 0; k < 3; ++k) {
+                            e[k] = in.eye[k] - world[k] / world[3];
+                            n[k] = in.normals[4 * p + k];
+                        }
+                        const float el = std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+                        const float nl = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+                        float cosine = std::abs((e[0] * n[0] + e[1] * n[1] + e[2] * n[2]) / (el * nl));
+                        cosine = finite(cosine) ? std::min(cosine, 1.0f) : 0.0f;
+                        const float threshold = 0.01f + (0.1f - 0.01f) * std::pow(1.0f - cosine, 8.0f);
+                        const float relative = std::abs(zp - zr) / zr;
+                        disoccluded = !(zr > 0.0f) || !(zp > 0.0f) || !(relative < threshold);
+                    }
+                    float m = 0.0f, m2 = 0.0f, count = 0.0f, history = mean;
+                    if (!disoccluded) {
+                        const std::size_t q = idx(px, py);
+                        const float* loaded = &in.momentsHistory[4 * q];
+                        const float fx = up * float(w) - 0.5f, fy = vp * float(h) - 0.5f;
+                        const int bx = int(std::floor(fx)), by = int(std::floor(fy));
+                        const float tx = fx - float(bx), ty = fy - float(by);
+                        auto hist = [&](int hx, int hy) {
+                            return in
+                                .shadowHistory[2 * idx(std::clamp(hx, 0, w - 1), std::clamp(hy, 0, h - 1))];
+                        };
+                        const float top = hist(bx, by) + (hist(bx + 1, by) - hist(bx, by)) * tx;
+                        const float bottom =
+                            hist(bx, by + 1) + (hist(bx + 1, by + 1) - hist(bx, by + 1)) * tx;
+                        const float bilinear = top + (bottom - top) * ty;
+                        if (finite(loaded[0]) && finite(loaded[1]) && finite(loaded[2]) && finite(bilinear)) {
+                            m = std::clamp(loaded[0], 0.0f, 1.0f);
+                            m2 = std::max(loaded[1], 0.0f);
+                            count = std::clamp(loaded[2], 0.0f, 1023.0f);
+                            history = std::clamp(bilinear, 0.0f, 1.0f);
+                        }
+                    }
+                    float n = count + 1.0f;
+                    const float delta = sample - m;
+                    const float newMean = m + delta / n;
+                    const float newM2 = m2 + delta * (sample - newMean);
+                    const float temporalVariance = n > 1.0f ? newM2 / (n - 1.0f) : 1.0f;
+                    const float radius = 0.5f * spatialSigma;
+                    const float clamped = std::clamp(history, mean - radius, mean + radius);
+                    const float deviation = (history - mean) / std::max(radius, 0.001f);
+                    n *= std::exp(-deviation * deviation / 20.0f);
+                    const float variance =
+                        n < 16.0f ? std::max(temporalVariance, spatialVariance) * std::max(16.0f - n, 1.0f)
+                                  : temporalVariance;
+                    const float youth = std::sqrt(std::max(8.0f - n, 0.0f) / 8.0f);
+                    const float result = clamped + (sample - clamped) * (0.05f + (1.0f - 0.05f) * youth);
+                    out.shadowVariance[2 * p] = std::clamp(finite(result) ? result : 0.0f, 0.0f, 1.0f);
+                    out.shadowVariance[2 * p + 1] = std::max(finite(variance) ? variance : 0.0f, 0.0f);
+                    out.moments[4 * p] = std::clamp(finite(newMean) ? newMean : 0.0f, 0.0f, 1.0f);
+                    out.moments[4 * p + 1] = std::max(finite(newM2) ? newM2 : 0.0f, 0.0f);
+                    out.moments[4 * p + 2] = finite(n) ? n : 0.0f;
+                }
+        }
+    return out;
+}
+
+} // namespace glint::reference

@@ -1,0 +1,36 @@
+// CPU reference of the shadow denoiser's tile classification + temporal pass
+// (docs/shadow_denoiser.md), written from the documented algorithm.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace glint::reference {
+
+struct ShadowClassifyInputs {
+    std::uint32_t width = 0, height = 0;
+    std::vector<std::uint32_t> mask;      // ceil(W/8) x ceil(H/4) words
+    std::vector<float> depth;             // W x H
+    std::vector<float> previousDepth;     // W x H
+    std::vector<float> normals;           // RGBA, unpacked
+    std::vector<float> motion;            // RG, convention A
+    std::vector<float> momentsHistory;    // RGBA (mean, M2, n, 0)
+    std::vector<float> shadowHistory;     // RG (.x used)
+    std::array<float, 16> reprojection{}; // row-major, column vectors
+    std::array<float, 16> inverseViewProjection{};
+    std::array<float, 3> eye{};
+    float viewDepth[3] = {0.1f, 1.0f, -1.0f};
+    float ndcYSign = 1.0f;
+    bool reset = false;
+};
+
+struct ShadowClassifyOutputs {
+    std::vector<std::uint32_t> metadata; // one per 8x8 tile
+    std::vector<float> shadowVariance;   // RG
+    std::vector<float> moments;          // RGBA (mean, M2, n, 0)
+};
+
+ShadowClassifyOutputs shadowClassify(const ShadowClassifyInputs& in);
+
+} // namespace glint::reference

@@ -1,0 +1,234 @@
+// Tile classification + temporal pass on the device against the CPU reference, camera cuts,
+// tile skipping metadata and non-finite inputs.
+#include "reference/shadow_classify_reference.h"
+#include "reference/shadow_denoiser_reference.h"
+#include "shadow_denoiser/shadow_runner.h"
+#include "support/gpu_test_context.h"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+using namespace glint;
+
+namespace {
+
+// The 17x17 sums, exp, sqrt and pow differ between the device and the C library by a few
+// ulps; every output channel must agree within this absolute tolerance (n up to ~1000 is
+// compared relatively).
+constexpr float kTolerance = 2e-4f;
+
+// A perspective-like VP^-1 that is not symmetric, so a transposed upload would change results.
+constexpr std::array<double, 16> kInverseViewProjection{0.8, 0.1, 0.0, 0.0,  0.0, -0.6, 0.0,   0.0,
+                                                        0.0, 0.0, 0.0, -1.0, 0.0, 0.0,  -4.95, 5.0};
+
+ShadowDenoiserDesc classifyDesc(std::uint32_t width, std::uint32_t height) {
+    ShadowDenoiserDesc desc;
+    desc.size = {width, height};
+    desc.filter = false;
+    desc.inverseViewProjection = kInverseViewProjection;
+    desc.eyePosition = {0.0f, 0.5f, 1.0f};
+    return desc;
+}
+
+reference::ShadowClassifyInputs referenceInputs(const ShadowDenoiserDesc& desc,
+                                                const test::ShadowInputs& inputs,
+                                                const std::vector<float>& moments,
+                                                const std::vector<float>& shadow) {
+    reference::ShadowClassifyInputs ref;
+    ref.width = desc.size.width;
+    ref.height = desc.size.height;
+    ref.mask = reference::packShadowMask(inputs.visibility, ref.width, ref.height);
+    ref.depth = inputs.depth;
+    ref.previousDepth = inputs.previousDepth;
+    ref.normals = inputs.normals;
+    ref.motion = inputs.motion;
+    ref.momentsHistory = moments;
+    ref.shadowHistory = shadow;
+    for (std::size_t i = 0; i < 16; ++i) {
+        ref.reprojection[i] = static_cast<float>(desc.reprojection[i]);
+        ref.inverseViewProjection[i] = static_cast<float>(desc.inverseViewProjection[i]);
+    }
+    ref.eye = desc.eyePosition;
+    const double n = desc.nearPlane;
+    const double f = desc.farPlane;
+    ref.viewDepth[0] = static_cast<float>(n * f / (f - n));
+    ref.viewDepth[1] = static_cast<float>(f / (f - n));
+    ref.viewDepth[2] = -1.0f;
+    ref.ndcYSign = desc.vulkanNdc ? 1.0f : -1.0f;
+    ref.reset = desc.resetHistory;
+    return ref;
+}
+
+// Random finite histories: moments (mean, M2, n) and the shadow history.
+void randomHistory(std::size_t count, std::uint32_t seed, std::vector<float>& moments,
+                   std::vector<float>& shadow) {
+    std::uint32_t state = seed;
+    auto next = [&state]() {
+        state = state * 1664525u + 1013904223u;
+        return static_cast<float>(state >> 8) / 16777216.0f;
+    };
+    moments.assign(4 * count, 0.0f);
+    shadow.assign(2 * count, 0.0f);
+    for (std::size_t i = 0; i < count; ++i) {
+        moments[4 * i] = next();
+        moments[4 * i + 1] = next() * 2.0f;
+        moments[4 * i + 2] = std::floor(next() * 40.0f);
+        shadow[2 * i] = next();
+        shadow[2 * i + 1] = next() * 0.1f;
+    }
+}
+
+std::size_t countMismatches(const std::vector<float>& actual, const std::vector<float>& expected) {
+    REQUIRE(actual.size() == expected.size());
+    std::size_t mismatches = 0;
+    for (std::size_t i = 0; i < expected.size(); ++i) {
+        const float scale = std::max(1.0f, std::abs(expected[i]));
+        if (!std::isfinite(actual[i]) || std::abs(actual[i] - expected[i]) > kTolerance * scale) ++mismatches;
+    }
+    return mismatches;
+}
+
+void checkClassify(ShadowDenoiserDesc desc, test::ShadowInputs inputs, std::uint32_t seed) {
+    const std::size_t count = std::size_t{desc.size.width} * desc.size.height;
+    std::vector<float> moments, shadow;
+    randomHistory(count, seed, moments, shadow);
+    test::ShadowRunner runner(desc);
+    runner.setHistory(desc.frameIndex, moments, shadow);
+    const test::ShadowOutputs actual = runner.run(desc, inputs);
+    const reference::ShadowClassifyOutputs expected =
+        reference::shadowClassify(referenceInputs(desc, inputs, moments, shadow));
+    INFO(desc.size.width << "x" << desc.size.height << " reset " << desc.resetHistory);
+    CHECK(actual.metadata == expected.metadata);
+    if (count >= 64 * 48 && !desc.resetHistory) {
+        // Not vacuous: some tiles are classified, some histories are reprojected, some rejected.
+        CHECK(std::count(expected.metadata.begin(), expected.metadata.end(), 0u) > 0);
+        std::size_t accumulated = 0, restarted = 0;
+        const std::size_t width = desc.size.width;
+        const std::size_t groupsX = (width + 7) / 8;
+        for (std::size_t i = 0; i < count; ++i) {
+            if (expected.metadata[(i / width / 8) * groupsX + (i % width) / 8] != 0u) continue;
+            // Welford from zero moments after one sample leaves M2 = 0 and n <= 1.
+            const bool fresh = expected.moments[4 * i + 2] <= 1.0f && expected.moments[4 * i + 1] == 0.0f;
+            accumulated += expected.moments[4 * i + 2] > 1.5f ? 1u : 0u;
+            restarted += fresh && expected.moments[4 * i + 2] > 0.0f ? 1u : 0u;
+        }
+        CHECK(accumulated > 20u);
+        CHECK(restarted > 20u);
+    }
+    CHECK(countMismatches(actual.classified, expected.shadowVariance) == 0u);
+    // The moments image has a fourth channel the reference leaves 0, as the shader does.
+    CHECK(countMismatches(actual.moments, expected.moments) == 0u);
+    GLINT_REQUIRE_NO_VALIDATION_ERRORS();
+}
+
+// Motion of (1.5, -0.5) pixels, and a region whose previous depth is 40% farther.
+test::ShadowInputs movingInputs(std::uint32_t width, std::uint32_t height, std::uint32_t seed) {
+    test::ShadowInputs inputs = test::makeShadowInputs(width, height, seed);
+    for (std::size_t i = 0; i < inputs.motion.size(); i += 2) {
+        inputs.motion[i] = 1.5f / static_cast<float>(width);
+        inputs.motion[i + 1] = -0.5f / static_cast<float>(height);
+    }
+    for (std::uint32_t y = 0; y < height; ++y)
+        for (std::uint32_t x = 0; x < width / 4; ++x) {
+            float& d = inputs.previousDepth[std::size_t{y} * width + x];
+            if (d < 1.0f) d = std::min(d + 0.02f, 0.999f);
+        }
+    return inputs;
+}
+
+} // namespace
+
+TEST_CASE("classify 64x48 with history and motion: matches the CPU reference", "[classify]") {
+    ShadowDenoiserDesc desc = classifyDesc(64, 48);
+    checkClassify(desc, movingInputs(64, 48, 11), 1);
+    desc.frameIndex = 1;
+    desc.vulkanNdc = false;
+    checkClassify(desc, movingInputs(64, 48, 12), 2);
+}
+
+TEST_CASE("classify 1x1, 13x7 and 203x77: match the CPU reference", "[classify]") {
+    checkClassify(classifyDesc(1, 1), movingInputs(1, 1, 13), 3);
+    checkClassify(classifyDesc(13, 7), movingInputs(13, 7, 14), 4);
+    checkClassify(classifyDesc(203, 77), movingInputs(203, 77, 15), 5);
+}
+
+TEST_CASE("classify: a camera cut ignores every history", "[classify][reset]") {
+    ShadowDenoiserDesc desc = classifyDesc(64, 48);
+    desc.resetHistory = true;
+    checkClassify(desc, movingInputs(64, 48, 16), 6);
+    test::ShadowRunner runner(desc);
+    std::vector<float> moments, shadow;
+    randomHistory(64 * 48, 7, moments, shadow);
+    runner.setHistory(0, moments, shadow);
+    const test::ShadowOutputs outputs = runner.run(desc, movingInputs(64, 48, 16));
+    for (std::size_t i = 0; i < 64 * 48; ++i) CHECK(outputs.moments[4 * i + 2] <= 1.0f);
+    GLINT_REQUIRE_NO_VALIDATION_ERRORS();
+}
+
+TEST_CASE("classify: uniform tiles are cleared and flagged", "[classify][tiles]") {
+    ShadowDenoiserDesc desc = classifyDesc(40, 24);
+    test::ShadowInputs inputs = test::makeShadowInputs(40, 24, 17);
+    std::fill(inputs.visibility.begin(), inputs.visibility.end(), 1.0f);
+    std::fill(inputs.depth.begin(), inputs.depth.end(), 0.9f);
+    inputs.previousDepth = inputs.depth;
+    checkClassify(desc, inputs, 8);
+    test::ShadowRunner runner(desc);
+    const test::ShadowOutputs outputs = runner.run(desc, inputs);
+    for (std::uint32_t word : outputs.metadata) CHECK(word == 3u); // CLEAR | LIGHT
+    for (std::size_t i = 0; i < outputs.classified.size(); i += 2) CHECK(outputs.classified[i] == 1.0f);
+    GLINT_REQUIRE_NO_VALIDATION_ERRORS();
+}
+
+TEST_CASE("classify and filter: non-finite inputs and histories give finite output", "[classify][finite]") {
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const float inf = std::numeric_limits<float>::infinity();
+    ShadowDenoiserDesc desc = classifyDesc(45, 29);
+    desc.filter = true;
+    test::ShadowInputs inputs = movingInputs(45, 29, 18);
+    const std::size_t count = inputs.depth.size();
+    for (std::size_t i = 0; i < count; i += 5) inputs.depth[i] = i % 2 ? nan : inf;
+    for (std::size_t i = 1; i < count; i += 7) inputs.previousDepth[i] = nan;
+    for (std::size_t i = 2; i < count; i += 3) inputs.normals[4 * i + (i % 3)] = nan;
+    for (std::size_t i = 3; i < count; i += 4) inputs.motion[2 * i + (i % 2)] = i % 3 ? nan : inf;
+    std::vector<float> moments(4 * count, nan), shadow(2 * count, inf);
+    test::ShadowRunner runner(desc);
+    runner.setHistory(0, moments, shadow);
+    for (std::uint32_t frame = 0; frame < 3; ++frame) {
+        desc.frameIndex = frame;
+        const test::ShadowOutputs outputs = runner.run(desc, inputs);
+        for (float v : outputs.moments) CHECK(std::isfinite(v));
+        for (float v : outputs.filtered) CHECK(std::isfinite(v));
+    }
+    GLINT_REQUIRE_NO_VALIDATION_ERRORS();
+}
+
+TEST_CASE("tile skipping: an all-lit frame filters no tile, with identical output", "[classify][tiles]") {
+    ShadowDenoiserDesc desc = classifyDesc(45, 29);
+    desc.filter = true;
+    desc.resetHistory = true;
+    test::ShadowInputs inputs = test::makeShadowInputs(45, 29, 19);
+    std::fill(inputs.visibility.begin(), inputs.visibility.end(), 1.0f);
+    inputs.previousDepth = inputs.depth;
+    test::ShadowOutputs skipped, full;
+    {
+        test::ShadowRunner runner(desc);
+        skipped = runner.run(desc, inputs);
+    }
+    desc.skipClearedTiles = false;
+    {
+        test::ShadowRunner runner(desc);
+        full = runner.run(desc, inputs);
+    }
+    CHECK(skipped.filteredTiles == 0u);
+    CHECK(skipped.filtered == full.filtered);
+    // A frame with a penumbra filters some tiles, all three passes counted.
+    desc.skipClearedTiles = true;
+    test::ShadowRunner runner(desc);
+    const test::ShadowOutputs penumbra = runner.run(desc, test::makeShadowInputs(45, 29, 19));
+    CHECK(penumbra.filteredTiles > 0u);
+    CHECK(penumbra.filteredTiles < 3u * 6u * 4u);
+    GLINT_REQUIRE_NO_VALIDATION_ERRORS();
+}

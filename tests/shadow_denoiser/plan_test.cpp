@@ -1,0 +1,88 @@
+// The shadow denoiser plan and the CPU packer's bit layout.
+#include "reference/shadow_denoiser_reference.h"
+
+#include "glint/glint_shadow_denoiser.h"
+
+#include <catch2/catch.hpp>
+
+#include <limits>
+
+using namespace glint;
+
+TEST_CASE("shadow plan: passes, resources and sizes", "[plan]") {
+    ShadowDenoiserDesc desc;
+    desc.size = {13, 7};
+    EffectPlan plan;
+    std::string error;
+    REQUIRE(planShadowDenoiser(desc, plan, &error) == Result::Ok);
+    REQUIRE(plan.passes.size() == 5);
+    CHECK(plan.passes[0].name == "prepare");
+    CHECK(plan.passes[1].name == "classify");
+    CHECK(plan.passes[2].name == "filter0");
+    CHECK(plan.passes[4].name == "filter2");
+    CHECK(std::get<DirectDispatch>(plan.passes[0].dispatch).groupsX == 1);
+    CHECK(std::get<DirectDispatch>(plan.passes[1].dispatch).groupsX == 2);
+    CHECK(std::get<DirectDispatch>(plan.passes[1].dispatch).groupsY == 1);
+    REQUIRE(plan.buffers.size() == 3);
+    CHECK(plan.buffers[2].name == "shadow_filter_work");
+    CHECK(plan.passes[2].pipeline == "shadow_denoiser_filter.skip");
+    CHECK(plan.passes[2].zeroBuffers == std::vector<std::string>{"shadow_filter_work"});
+    CHECK(plan.buffers[0].name == "shadow_mask");
+    CHECK(plan.buffers[0].size == 2 * 2 * 4);
+    CHECK(plan.buffers[1].name == "shadow_tile_metadata");
+    CHECK(plan.buffers[1].size == 2 * 1 * 4);
+    CHECK(plan.images.size() == 5);
+    // Moments ping-pong on the frame parity.
+    CHECK(plan.passes[1].uses[9].resource == "shadow_moments0");
+    desc.frameIndex = 1;
+    REQUIRE(planShadowDenoiser(desc, plan, &error) == Result::Ok);
+    CHECK(plan.passes[1].uses[9].resource == "shadow_moments1");
+    CHECK(plan.passes[1].uses[5].resource == "shadow_moments0");
+    CHECK(shadowMaskTiles({1917, 1077}).width == 240);
+    CHECK(shadowMaskTiles({1917, 1077}).height == 270);
+
+    desc.filter = false;
+    desc.classify = false;
+    REQUIRE(planShadowDenoiser(desc, plan, &error) == Result::Ok);
+    CHECK(plan.passes.size() == 1);
+    CHECK(plan.images.empty());
+}
+
+TEST_CASE("shadow plan: invalid descriptions are refused", "[plan]") {
+    EffectPlan plan;
+    std::string error;
+    ShadowDenoiserDesc desc;
+    desc.size = {0, 4};
+    CHECK(planShadowDenoiser(desc, plan, &error) == Result::InvalidArgument);
+    desc.size = {16385, 4};
+    CHECK(planShadowDenoiser(desc, plan, &error) == Result::InvalidArgument);
+    desc.size = {4, 4};
+    desc.depthSigma = 0.0f;
+    CHECK(planShadowDenoiser(desc, plan, &error) == Result::InvalidArgument);
+    desc.depthSigma = 0.02f;
+    desc.farPlane = desc.nearPlane;
+    CHECK(planShadowDenoiser(desc, plan, &error) == Result::InvalidArgument);
+    desc.depth = ShadowDenoiserDepth::Reversed;
+    desc.farPlane = 0.0f; // infinite
+    CHECK(planShadowDenoiser(desc, plan, &error) == Result::Ok);
+    desc.normalPower = std::numeric_limits<float>::quiet_NaN();
+    CHECK(planShadowDenoiser(desc, plan, &error) == Result::InvalidArgument);
+    CHECK(error.find("shadow denoiser") == 0);
+}
+
+TEST_CASE("shadow mask layout: one byte per row, leftmost pixel in bit 0, edges clamp", "[reference]") {
+    // 9 x 5: tiles 2 x 2. Only pixel (8, 4) is lit: it is the whole in-image part of tile
+    // (1, 1), so every bit of that tile repeats it; tile (1, 0) has column 8 of rows 0-3.
+    std::vector<float> visibility(9 * 5, 0.0f);
+    visibility[4 * 9 + 8] = 1.0f;
+    std::vector<std::uint32_t> mask = reference::packShadowMask(visibility, 9, 5);
+    REQUIRE(mask.size() == 4);
+    CHECK(mask[0] == 0u);
+    CHECK(mask[1] == 0u);
+    CHECK(mask[2] == 0u);
+    CHECK(mask[3] == 0xFFFFFFFFu);
+    visibility.assign(9 * 5, 0.0f);
+    visibility[1 * 9 + 2] = 1.0f; // (2, 1): bit 8 + 2
+    mask = reference::packShadowMask(visibility, 9, 5);
+    CHECK(mask[0] == (1u << 10));
+}

@@ -1,0 +1,24 @@
+# Shadow denoiser: the plan and the CPU packer (unit), and the passes on the device (gpu)
+# against the CPU references.
+glint_add_test_suite(NAME shadow_denoiser_unit LABELS unit
+  SOURCES
+    shadow_denoiser/plan_test.cpp
+    reference/shadow_denoiser_reference.cpp
+  LIBS glint_core)
+
+glint_add_test_suite(NAME shadow_denoiser LABELS gpu
+  SOURCES
+    shadow_denoiser/prepare_test.cpp
+    shadow_denoiser/filter_test.cpp
+    shadow_denoiser/classify_test.cpp
+    reference/shadow_classify_reference.cpp
+    shadow_denoiser/shadow_runner.cpp
+    reference/shadow_denoiser_reference.cpp
+  LIBS glint_gpu_test_support glint_gpu)
+
+# The denoiser on a simulated static scene (simulator: harness/scene).
+glint_add_test_suite(NAME shadow_denoiser_scene LABELS gpu
+  SOURCES
+    shadow_denoiser/convergence_test.cpp
+    shadow_denoiser/shadow_runner.cpp
+  LIBS glint_scene glint_gpu_test_support glint_gpu)
