@@ -4,6 +4,7 @@
 
 #include "glint/glint_depth_pyramid.h"
 #include "glint/glint_gbuffer.h"
+#include "glint/glint_shadow_denoiser.h"
 
 #include <gpu/gpu_context.h>
 #include <gpu/gpu_plan_runner.h>
@@ -12,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <stdexcept>
 
 namespace glint::cli {
@@ -27,13 +29,36 @@ std::vector<float> syntheticDepth(uint32_t width, uint32_t height) {
     return depth;
 }
 
+// An application-side image the effect reads.
+struct Input {
+    std::string name;
+    VkFormat format = VK_FORMAT_UNDEFINED;
+    uint32_t channels = 1;
+    std::vector<float> texels;
+};
+
 struct Setup {
     EffectPlan plan;
-    std::string inputName;
-    VkFormat inputFormat = VK_FORMAT_UNDEFINED;
-    uint32_t inputChannels = 1;
-    std::vector<float> input;
+    std::vector<Input> inputs;
 };
+
+// 1-sample visibility: a soft-edged band of shadow with per-pixel noise, so the denoiser's
+// tiles are a realistic mix of lit, shadowed and penumbra.
+std::vector<float> noisyVisibility(uint32_t width, uint32_t height) {
+    std::vector<float> visibility(std::size_t{width} * height);
+    for (uint32_t y = 0; y < height; ++y)
+        for (uint32_t x = 0; x < width; ++x) {
+            const float u = static_cast<float>(x) / static_cast<float>(width);
+            const float lit = std::clamp((u - 0.3f) * 4.0f, 0.0f, 1.0f);
+            uint32_t hash = (x * 73856093u) ^ (y * 19349663u);
+            hash ^= hash >> 13;
+            hash *= 0x5bd1e995u;
+            hash ^= hash >> 15;
+            const float random = static_cast<float>(hash & 0xFFFFu) / 65535.0f;
+            visibility[std::size_t{y} * width + x] = random < lit ? 1.0f : 0.0f;
+        }
+    return visibility;
+}
 
 Setup setupEffect(const BenchOptions& options) {
     Setup setup;
@@ -48,23 +73,36 @@ Setup setupEffect(const BenchOptions& options) {
         desc.levelCount = options.levels;
         desc.copyLevel0 = !options.skipLevel0;
         if (planDepthPyramid(desc, setup.plan, &error) != Result::Ok) throw std::invalid_argument(error);
-        setup.inputName = "depth";
-        setup.inputFormat = VK_FORMAT_R32_SFLOAT;
-        setup.input = syntheticDepth(size.width, size.height);
+        setup.inputs.push_back({"depth", VK_FORMAT_R32_SFLOAT, 1, syntheticDepth(size.width, size.height)});
     } else if (options.effect == "roughness") {
         RoughnessExtractionDesc desc;
         desc.size = size;
         desc.materialChannel = 1;
         if (planRoughnessExtraction(desc, setup.plan, &error) != Result::Ok)
             throw std::invalid_argument(error);
-        setup.inputName = "material";
-        setup.inputFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
-        setup.inputChannels = 4;
-        const std::vector<float> ramp = syntheticDepth(size.width, size.height);
-        for (float value : ramp) setup.input.insert(setup.input.end(), {value, value, value, 1.0f});
+        Input material{"material", VK_FORMAT_R32G32B32A32_SFLOAT, 4, {}};
+        for (float value : syntheticDepth(size.width, size.height))
+            material.texels.insert(material.texels.end(), {value, value, value, 1.0f});
+        setup.inputs.push_back(std::move(material));
+    } else if (options.effect == "shadow_denoiser") {
+        ShadowDenoiserDesc desc;
+        desc.size = size;
+        desc.frameIndex = 1;
+        if (planShadowDenoiser(desc, setup.plan, &error) != Result::Ok) throw std::invalid_argument(error);
+        const std::vector<float> depth = syntheticDepth(size.width, size.height);
+        Input normals{"shadow_normals", VK_FORMAT_R32G32B32A32_SFLOAT, 4, {}};
+        for (std::size_t i = 0; i < depth.size(); ++i)
+            normals.texels.insert(normals.texels.end(), {0.0f, 1.0f, 0.0f, 0.0f});
+        setup.inputs.push_back(
+            {"shadow_visibility", VK_FORMAT_R32_SFLOAT, 1, noisyVisibility(size.width, size.height)});
+        setup.inputs.push_back({"shadow_depth", VK_FORMAT_R32_SFLOAT, 1, depth});
+        setup.inputs.push_back({"shadow_previous_depth", VK_FORMAT_R32_SFLOAT, 1, depth});
+        setup.inputs.push_back(std::move(normals));
+        setup.inputs.push_back(
+            {"shadow_motion", VK_FORMAT_R32G32_SFLOAT, 2, std::vector<float>(depth.size() * 2, 0.0f)});
     } else {
         throw std::invalid_argument("bench: unknown effect '" + options.effect +
-                                    "' (depth_pyramid, roughness)");
+                                    "' (depth_pyramid, roughness, shadow_denoiser)");
     }
     return setup;
 }
@@ -80,11 +118,19 @@ int runBench(const BenchOptions& options) {
     gpu::Context context = gpu::createContext(contextOptions);
     Setup setup = setupEffect(options);
 
-    vk::Image input = vk::createImage2D(context.device, options.width, options.height, setup.inputFormat);
-    gpu::uploadImage(context, input, setup.input, setup.inputChannels);
-    gpu::PlanResources owned = gpu::createPlanResources(context, setup.plan);
+    std::vector<vk::Image> inputs;
+    std::map<std::string, const vk::Image*> external;
+    inputs.reserve(setup.inputs.size());
+    for (const Input& input : setup.inputs) {
+        inputs.push_back(vk::createImage2D(context.device, options.width, options.height, input.format));
+        gpu::uploadImage(context, inputs.back(), input.texels, input.channels);
+        external[input.name] = &inputs.back();
+    }
+    // Owned images start at 0 rather than NaN: histories must hold finite values when the
+    // frame being timed does not reset them.
+    gpu::PlanResources owned = gpu::createPlanResources(context, setup.plan, 0.0f);
     vk::Executor executor = vk::createExecutor(context.device);
-    const vk::ResourceTable table = gpu::resourceTable(owned, {{setup.inputName, &input}});
+    const vk::ResourceTable table = gpu::resourceTable(owned, external);
 
     // Warm-up runs settle clocks and pipeline creation before anything is measured.
     gpu::executePlan(context, executor, setup.plan, table, std::min(options.runs, 10u));
@@ -111,9 +157,16 @@ int runBench(const BenchOptions& options) {
                     1000.0 * values[values.size() * 9 / 10]);
     }
 
+    if (timings.passes.size() > 1 && !timings.times.empty()) {
+        double total = 0.0;
+        for (std::size_t pass = 0; pass < timings.passes.size(); ++pass)
+            total += gpu::medianMilliseconds(timings, pass);
+        std::printf("  %-20s %9.2f us (sum of the medians)\n", "all passes", 1000.0 * total);
+    }
+
     vk::destroyExecutor(executor);
     gpu::destroyPlanResources(context, owned);
-    vk::destroyImage(context.device, input);
+    for (vk::Image& input : inputs) vk::destroyImage(context.device, input);
     gpu::destroyContext(context);
     const uint32_t errors = context.validation ? context.validation->errors.load() : 0u;
     if (errors > 0) std::fprintf(stderr, "glint: %u validation errors\n", errors);

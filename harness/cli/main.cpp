@@ -29,7 +29,8 @@ int main(int argc, char** argv) {
     std::string benchSize = "1920x1080";
     CLI::App* benchCommand =
         app.add_subcommand("bench", "GPU time of one effect (median of timestamped runs)");
-    benchCommand->add_option("effect", bench.effect, "depth_pyramid | roughness")->required();
+    benchCommand->add_option("effect", bench.effect, "depth_pyramid | roughness | shadow_denoiser")
+        ->required();
     benchCommand->add_option("--size", benchSize, "render size WxH")->capture_default_str();
     benchCommand->add_option("--runs", bench.runs, "measured runs")->capture_default_str();
     benchCommand->add_option("--levels", bench.levels, "depth pyramid levels (0 = full chain)");

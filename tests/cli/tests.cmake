@@ -59,3 +59,6 @@ glint_cli_test(NAME "bench of an unknown effect is a usage error" LABELS unit EX
 glint_cli_test(NAME "bench with a malformed size is a usage error" LABELS unit EXIT 2
   STDERR_ONE_LINE "--size must read WxH"
   COMMAND bench depth_pyramid --size large)
+glint_cli_test(NAME "bench times every shadow denoiser pass under validation" LABELS gpu EXIT 0
+  STDOUT "prepare.*classify.*filter0.*filter1.*filter2.*all passes"
+  COMMAND --validate bench shadow_denoiser --size 41x23 --runs 2)
