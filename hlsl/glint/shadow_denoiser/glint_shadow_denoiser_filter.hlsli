@@ -146,8 +146,11 @@ void GLINT_SHADOW_DENOISER_Filter(uint2 groupId, uint2 groupThreadId, uint group
     float sigma = sqrt(filteredVariance + 1e-9);
     float depthScale = max(depthSigma * geometry.x, 1e-20);
 
+    // The mean accumulates offsets from the centre (mean = s_c + sum w (s_q - s_c) / sum w):
+    // a uniform neighbourhood then returns s_c exactly on every GPU, whatever the precision of
+    // its division, so a skipped tile's constant and a filtered tile's result agree bit for bit.
     float weightSum = 1.0;
-    float meanSum = value.x;
+    float meanOffsetSum = 0.0;
     float varianceSum = value.y;
     [unroll] for (int j = -1; j <= 1; ++j)
         [unroll] for (int i = -1; i <= 1; ++i)
@@ -164,10 +167,10 @@ void GLINT_SHADOW_DENOISER_Filter(uint2 groupId, uint2 groupThreadId, uint group
                            exp(-abs(value.x - tap.x) / sigma) * exp(-abs(geometry.x - other.x) / depthScale) *
                            normalWeight;
             weightSum += weight;
-            meanSum += weight * tap.x;
+            meanOffsetSum += weight * (tap.x - value.x);
             varianceSum += weight * weight * tap.y;
         }
-    float mean = clamp(meanSum / weightSum, 0.0, 1.0);
+    float mean = clamp(value.x + meanOffsetSum / weightSum, 0.0, 1.0);
     float variance = max(varianceSum / (weightSum * weightSum), 0.0);
     if (finalPass)
         mean = pow(mean, max(1.2 - variance, 1.0));
