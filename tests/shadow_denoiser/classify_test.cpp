@@ -86,7 +86,12 @@ std::size_t countMismatches(const std::vector<float>& actual, const std::vector<
     std::size_t mismatches = 0;
     for (std::size_t i = 0; i < expected.size(); ++i) {
         const float scale = std::max(1.0f, std::abs(expected[i]));
-        if (!std::isfinite(actual[i]) || std::abs(actual[i] - expected[i]) > kTolerance * scale) ++mismatches;
+        if (!std::isfinite(actual[i]) || std::abs(actual[i] - expected[i]) > kTolerance * scale) {
+            // The first few, so a failure says where and by how much.
+            if (mismatches < 6)
+                UNSCOPED_INFO("value " << i << ": gpu " << actual[i] << " reference " << expected[i]);
+            ++mismatches;
+        }
     }
     return mismatches;
 }
@@ -124,12 +129,15 @@ void checkClassify(ShadowDenoiserDesc desc, test::ShadowInputs inputs, std::uint
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }
 
-// Motion of (1.5, -0.5) pixels, and a region whose previous depth is 40% farther.
+// Motion of (1.3, -0.7) pixels, and a region whose previous depth is 40% farther. The motion is
+// deliberately not a multiple of half a pixel: with (1.5, -0.5) every previous position lands
+// exactly on a pixel edge, where the history pixel index is discontinuous and a one-ulp
+// difference in GPU arithmetic (seen on NVIDIA) picks the neighbour's history.
 test::ShadowInputs movingInputs(std::uint32_t width, std::uint32_t height, std::uint32_t seed) {
     test::ShadowInputs inputs = test::makeShadowInputs(width, height, seed);
     for (std::size_t i = 0; i < inputs.motion.size(); i += 2) {
-        inputs.motion[i] = 1.5f / static_cast<float>(width);
-        inputs.motion[i + 1] = -0.5f / static_cast<float>(height);
+        inputs.motion[i] = 1.3f / static_cast<float>(width);
+        inputs.motion[i + 1] = -0.7f / static_cast<float>(height);
     }
     for (std::uint32_t y = 0; y < height; ++y)
         for (std::uint32_t x = 0; x < width / 4; ++x) {

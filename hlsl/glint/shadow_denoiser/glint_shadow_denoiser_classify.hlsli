@@ -204,8 +204,13 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint2 groupThreadId, uint gro
         float cosine = abs(dot(normalize(toEye), normalize(normal)));
         cosine = GLINT_IsFinite(cosine) ? min(cosine, 1.0) : 0.0;
         float threshold = lerp(0.01, 0.1, pow(1.0 - cosine, 8.0));
-        float relative = abs(previousZ - reprojectedZ) / reprojectedZ;
-        disoccluded = !(reprojectedZ > 0.0) || !(previousZ > 0.0) || !(relative < threshold);
+        // Finiteness is tested on the bits, never through a comparison with a NaN: drivers may
+        // assume no NaNs (Vulkan does not require preserving them) and rewrite !(a < b) as
+        // a >= b, which turned sky pixels (infinite view depth) into accepted histories on NVIDIA.
+        bool depthsValid = GLINT_IsFinite(reprojectedZ) && GLINT_IsFinite(previousZ) && reprojectedZ > 0.0 &&
+                           previousZ > 0.0;
+        float relative = depthsValid ? abs(previousZ - reprojectedZ) / reprojectedZ : 1.0;
+        disoccluded = !depthsValid || !GLINT_IsFinite(relative) || relative >= threshold;
     }
 
     float3 moments = float3(0.0, 0.0, 0.0);
