@@ -2,6 +2,7 @@
 #include "glint/glint_depth_pyramid.h"
 
 #include "core/dispatch.h"
+#include "core/plan_checks.h"
 #include "glint/depth_pyramid/glint_depth_pyramid_constants.h"
 
 #include <algorithm>
@@ -11,15 +12,13 @@ namespace glint {
 namespace {
 
 constexpr std::uint32_t kTile = 64; // a group's tile of level 0: levels 1-6 need 2^6 texels
-constexpr std::uint32_t kMaxExtent = 16384;
 
 constexpr std::uint32_t roundUpToTile(std::uint32_t value) {
     return core::divideRoundUp(value, kTile) * kTile;
 }
 
 Result invalid(std::string* error, const std::string& message) {
-    if (error) *error = "depth pyramid: " + message;
-    return Result::InvalidArgument;
+    return core::invalidArgument(error, "depth pyramid", message);
 }
 
 const char* pipelineFor(const DepthPyramidDesc& desc) {
@@ -43,9 +42,7 @@ DepthPyramidLayout depthPyramidLayout(Extent2D size, std::uint32_t requestedLeve
 }
 
 Result planDepthPyramid(const DepthPyramidDesc& desc, EffectPlan& plan, std::string* error) {
-    if (desc.size.width == 0 || desc.size.height == 0 || desc.size.width > kMaxExtent ||
-        desc.size.height > kMaxExtent)
-        return invalid(error, "size must be 1..16384 in each dimension");
+    if (!core::validExtent(desc.size)) return invalid(error, "size must be 1..16384 in each dimension");
     const DepthPyramidLayout layout = depthPyramidLayout(desc.size, desc.levelCount);
     if (desc.levelCount > layout.fullLevelCount)
         return invalid(error, "levelCount " + std::to_string(desc.levelCount) +

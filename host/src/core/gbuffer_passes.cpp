@@ -2,38 +2,20 @@
 #include "glint/glint_gbuffer.h"
 
 #include "core/dispatch.h"
+#include "core/plan_checks.h"
 #include "glint/gbuffer/glint_gbuffer_constants.h"
 
 namespace glint {
 
-const char* resultName(Result result) {
-    switch (result) {
-    case Result::Ok:
-        return "ok";
-    case Result::InvalidArgument:
-        return "invalid argument";
-    case Result::Unsupported:
-        return "unsupported";
-    case Result::DeviceError:
-        return "device error";
-    }
-    return "unknown result";
-}
-
 namespace {
-constexpr std::uint32_t kMaxExtent = 16384;
-
-Result invalid(std::string* error, const char* message) {
-    if (error) *error = message;
-    return Result::InvalidArgument;
+Result invalid(std::string* error, const std::string& message) {
+    return core::invalidArgument(error, "roughness extraction", message);
 }
 } // namespace
 
 Result planRoughnessExtraction(const RoughnessExtractionDesc& desc, EffectPlan& plan, std::string* error) {
-    if (desc.size.width == 0 || desc.size.height == 0 || desc.size.width > kMaxExtent ||
-        desc.size.height > kMaxExtent)
-        return invalid(error, "roughness extraction: size must be 1..16384 in each dimension");
-    if (desc.materialChannel > 3) return invalid(error, "roughness extraction: materialChannel must be 0..3");
+    if (!core::validExtent(desc.size)) return invalid(error, "size must be 1..16384 in each dimension");
+    if (desc.materialChannel > 3) return invalid(error, "materialChannel must be 0..3");
 
     shaders::GLINT_GBufferRoughnessConstants constants{};
     constants.size = {desc.size.width, desc.size.height};

@@ -2,6 +2,7 @@
 #include "glint/glint_shadow_denoiser.h"
 
 #include "core/dispatch.h"
+#include "core/plan_checks.h"
 #include "glint/shadow_denoiser/glint_shadow_denoiser_constants.h"
 
 #include <cmath>
@@ -9,11 +10,8 @@
 namespace glint {
 namespace {
 
-constexpr std::uint32_t kMaxExtent = 16384;
-
 Result invalid(std::string* error, const std::string& message) {
-    if (error) *error = "shadow denoiser: " + message;
-    return Result::InvalidArgument;
+    return core::invalidArgument(error, "shadow denoiser", message);
 }
 
 bool positiveFinite(float value) {
@@ -60,9 +58,7 @@ Pass filterPass(const ShadowDenoiserDesc& desc, std::uint32_t index, const char*
     pass.groupSize[0] = GLINT_SHADOW_DENOISER_FILTER_TILE;
     pass.groupSize[1] = GLINT_SHADOW_DENOISER_FILTER_TILE;
     pass.groupSize[2] = 1;
-    pass.dispatch =
-        DirectDispatch{core::divideRoundUp(desc.size.width, GLINT_SHADOW_DENOISER_FILTER_TILE),
-                       core::divideRoundUp(desc.size.height, GLINT_SHADOW_DENOISER_FILTER_TILE), 1};
+    pass.dispatch = core::gridFor(desc.size.width, desc.size.height, 1, pass.groupSize);
     shaders::GLINT_ShadowDenoiserFilterConstants constants{};
     constants.inputSize = {desc.size.width, desc.size.height};
     constants.step = 1u << index;
@@ -90,9 +86,7 @@ Pass classifyPass(const ShadowDenoiserDesc& desc, Extent2D tiles) {
     Pass pass;
     pass.name = "classify";
     pass.pipeline = "shadow_denoiser_classify";
-    pass.dispatch =
-        DirectDispatch{core::divideRoundUp(desc.size.width, GLINT_SHADOW_DENOISER_FILTER_TILE),
-                       core::divideRoundUp(desc.size.height, GLINT_SHADOW_DENOISER_FILTER_TILE), 1};
+    pass.dispatch = core::gridFor(desc.size.width, desc.size.height, 1, pass.groupSize);
     shaders::GLINT_ShadowDenoiserClassifyConstants constants{};
     constants.inputSize = {desc.size.width, desc.size.height};
     constants.maskTiles = {tiles.width, tiles.height};
@@ -139,9 +133,7 @@ Extent2D shadowMaskTiles(Extent2D size) {
 }
 
 Result planShadowDenoiser(const ShadowDenoiserDesc& desc, EffectPlan& plan, std::string* error) {
-    if (desc.size.width == 0 || desc.size.height == 0 || desc.size.width > kMaxExtent ||
-        desc.size.height > kMaxExtent)
-        return invalid(error, "size must be 1..16384 in each dimension");
+    if (!core::validExtent(desc.size)) return invalid(error, "size must be 1..16384 in each dimension");
     if (!positiveFinite(desc.nearPlane)) return invalid(error, "nearPlane must be positive and finite");
     const bool infiniteFar = desc.depth == ShadowDenoiserDepth::Reversed && !(desc.farPlane > 0.0f);
     if (!infiniteFar && !(std::isfinite(desc.farPlane) && desc.farPlane > desc.nearPlane))
