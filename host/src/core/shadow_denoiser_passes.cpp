@@ -1,6 +1,7 @@
 // The shadow denoiser as data: sizes, passes, resources.
 #include "glint/glint_shadow_denoiser.h"
 
+#include "core/camera.h"
 #include "core/dispatch.h"
 #include "core/plan_checks.h"
 #include "glint/shadow_denoiser/glint_shadow_denoiser_constants.h"
@@ -18,16 +19,9 @@ bool positiveFinite(float value) {
     return std::isfinite(value) && value > 0.0f;
 }
 
-// (A, B, C) with view depth z = A / (B + C d); computed in double.
 shared::float4 viewDepthCoefficients(const ShadowDenoiserDesc& desc) {
-    const double n = desc.nearPlane;
-    const double f = desc.farPlane;
-    if (desc.depth == ShadowDenoiserDepth::Reversed && !(f > 0.0)) // infinite far plane: z = n / d
-        return {static_cast<float>(n), 0.0f, 1.0f, 0.0f};
-    const double a = n * f / (f - n);
-    if (desc.depth == ShadowDenoiserDepth::Standard) // z = n f / (f - d (f - n))
-        return {static_cast<float>(a), static_cast<float>(f / (f - n)), -1.0f, 0.0f};
-    return {static_cast<float>(a), static_cast<float>(n / (f - n)), 1.0f, 0.0f}; // z = n f / (n + d (f - n))
+    return core::viewDepthCoefficients(desc.depth == ShadowDenoiserDepth::Reversed, desc.nearPlane,
+                                       desc.farPlane);
 }
 
 Pass preparePass(const ShadowDenoiserDesc& desc, Extent2D tiles) {
@@ -119,12 +113,6 @@ Pass classifyPass(const ShadowDenoiserDesc& desc, Extent2D tiles) {
     return pass;
 }
 
-bool finiteMatrix(const std::array<double, 16>& matrix) {
-    for (double value : matrix)
-        if (!std::isfinite(value)) return false;
-    return true;
-}
-
 } // namespace
 
 Extent2D shadowMaskTiles(Extent2D size) {
@@ -145,7 +133,7 @@ Result planShadowDenoiser(const ShadowDenoiserDesc& desc, EffectPlan& plan, std:
     if (!std::isfinite(desc.normalUnpackMul) || !std::isfinite(desc.normalUnpackAdd))
         return invalid(error, "normal unpack factors must be finite");
 
-    if (!finiteMatrix(desc.reprojection) || !finiteMatrix(desc.inverseViewProjection))
+    if (!core::isFinite(desc.reprojection) || !core::isFinite(desc.inverseViewProjection))
         return invalid(error, "camera matrices must be finite");
 
     const Extent2D tiles = shadowMaskTiles(desc.size);

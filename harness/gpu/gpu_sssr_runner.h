@@ -1,0 +1,67 @@
+// Runs the reflections effect (vk_sssr.h) on the harness context from CPU arrays: uploads the
+// application's inputs (the environment with a box-filtered mip chain), records one frame,
+// reads the outputs back. Shared by the tests and `glint bench sssr`.
+#pragma once
+
+#include <gpu/gpu_context.h>
+#include <gpu/gpu_plan_runner.h>
+
+#include "glint/glint_sssr.h"
+#include "vulkan/vk_sssr.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace glint::gpu {
+
+struct SssrFrameInputs {
+    std::vector<float> depth;             // W x H device depth
+    std::vector<float> normals;           // RGBA
+    std::vector<float> material;          // RGBA (roughness in desc.materialChannel)
+    std::vector<float> color;             // RGBA lit colour
+    std::vector<float> motion;            // RG
+    std::vector<float> baseColorMetallic; // RGBA, composite only
+    std::uint32_t environmentWidth = 0, environmentHeight = 0;
+    std::vector<float> environment; // RGBA lat-long, level 0
+};
+
+struct SssrFrameOutputs {
+    std::vector<float> radiance;         // RGBA: rgb, hit distance
+    std::vector<float> confidence;       // R
+    std::vector<float> roughness;        // R, GGX alpha
+    std::vector<float> rayInfo;          // RGBA, debugOutput only
+    std::vector<float> composite;        // RGBA, composite only
+    std::vector<float> blueNoise;        // RG 128 x 128
+    std::vector<std::uint32_t> rayList;  // counters[1] entries
+    std::vector<std::uint32_t> tileList; // counters[3] entries
+    std::uint32_t counters[4] = {};
+    std::uint32_t arguments[6] = {};
+};
+
+class SssrRunner {
+  public:
+    SssrRunner(const Context& context, const SssrDesc& desc);
+    ~SssrRunner();
+    SssrRunner(const SssrRunner&) = delete;
+    SssrRunner& operator=(const SssrRunner&) = delete;
+
+    // Uploads the inputs that are non-empty (the environment's mips included) and keeps them.
+    void upload(const SssrFrameInputs& inputs);
+    // Records and submits one frame; with `timings`, per-pass GPU times (ms) in plan order.
+    void run(const SssrDesc& frame, std::vector<double>* timings = nullptr);
+    SssrFrameOutputs readback() const;
+    std::vector<std::string> passNames(const SssrDesc& frame) const;
+
+  private:
+    const Context& context_;
+    SssrDesc desc_;
+    vk::SssrEffect effect_;
+    vk::Executor executor_;
+    std::vector<vk::Image> images_; // depth, normals, material, color, motion, base colour, environment
+};
+
+// Box-filtered mip chain of an RGBA lat-long map: levels[0] is the input.
+std::vector<std::vector<float>> environmentMips(std::uint32_t width, std::uint32_t height,
+                                                const std::vector<float>& rgba);
+
+} // namespace glint::gpu

@@ -1,0 +1,66 @@
+// Entry for the SSSR intersection: bindings, callbacks, main. Engines read this file as the
+// integration example for glint/sssr/glint_sssr_intersect.hlsli.
+//
+// Permutations: GLINT_SSSR_THICKNESS_AWARE=1 (RG32F closest+farthest pyramid),
+// GLINT_SSSR_DEBUG_OUTPUT=1 (per-ray class and iteration count).
+#include "entry/common/glint_entry_common.hlsli"
+#include "glint/sssr/glint_sssr_constants.h"
+#include "glint/sssr/glint_sssr_intersect.hlsli"
+#include "entry/sssr/sssr_environment.hlsli"
+
+// A cbuffer holding the struct (not ConstantBuffer<T>) so that glslang can pass it by value.
+[[vk::binding(0, 0)]] cbuffer g_glint_constants { GLINT_SssrConstants g_glint_sssr; };
+[[vk::binding(1, 0)]] Texture2D<float> g_glint_depth;
+#if GLINT_SSSR_THICKNESS_AWARE
+[[vk::binding(2, 0)]] Texture2D<float2> g_glint_depth_pyramid;
+#else
+[[vk::binding(2, 0)]] Texture2D<float> g_glint_depth_pyramid;
+#endif
+[[vk::binding(3, 0)]] Texture2D<float4> g_glint_normals;
+[[vk::binding(4, 0)]] Texture2D<float> g_glint_roughness;
+[[vk::binding(5, 0)]] Texture2D<float2> g_glint_blue_noise;
+[[vk::binding(6, 0)]] Texture2D<float4> g_glint_color;
+[[vk::binding(7, 0)]] Texture2D<float2> g_glint_motion;
+[[vk::binding(8, 0)]] Texture2D<float4> g_glint_environment;
+[[vk::binding(9, 0)]] SamplerState g_glint_linear_clamp;
+[[vk::binding(10, 0)]] StructuredBuffer<uint> g_glint_counters;
+[[vk::binding(11, 0)]] StructuredBuffer<uint> g_glint_ray_list;
+[[vk::binding(12, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_radiance;
+[[vk::binding(13, 0)]] GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float> g_glint_confidence;
+#if GLINT_SSSR_DEBUG_OUTPUT
+[[vk::binding(14, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_ray_info;
+void GLINT_SSSR_StoreRayInfo(int2 pixel, float4 info) { g_glint_ray_info[pixel] = info; }
+#endif
+
+// Level 0 is the input depth itself: the pyramid is built without its level-0 copy.
+float GLINT_SSSR_LoadDepth(int2 texel, int mip)
+{
+#if GLINT_SSSR_THICKNESS_AWARE
+    return mip == 0 ? g_glint_depth.Load(int3(texel, 0)) : g_glint_depth_pyramid.Load(int3(texel, mip)).x;
+#else
+    return mip == 0 ? g_glint_depth.Load(int3(texel, 0)) : g_glint_depth_pyramid.Load(int3(texel, mip));
+#endif
+}
+#if GLINT_SSSR_THICKNESS_AWARE
+float GLINT_SSSR_LoadFarthestDepth(int2 texel, int mip) { return g_glint_depth_pyramid.Load(int3(texel, mip)).y; }
+#endif
+float3 GLINT_SSSR_LoadNormal(int2 pixel) { return g_glint_normals.Load(int3(pixel, 0)).xyz; }
+float GLINT_SSSR_LoadRoughness(int2 pixel) { return g_glint_roughness.Load(int3(pixel, 0)); }
+float2 GLINT_SSSR_LoadBlueNoise(int2 pixel) { return g_glint_blue_noise.Load(int3(pixel & 127, 0)); }
+float3 GLINT_SSSR_LoadColor(int2 pixel) { return g_glint_color.Load(int3(pixel, 0)).rgb; }
+float3 GLINT_SSSR_SampleColor(float2 uv) { return g_glint_color.SampleLevel(g_glint_linear_clamp, uv, 0).rgb; }
+float2 GLINT_SSSR_LoadMotion(int2 pixel) { return g_glint_motion.Load(int3(pixel, 0)); }
+float3 GLINT_SSSR_SampleEnvironment(float3 direction, float lod)
+{
+    return SSSR_EntrySampleLatLong(g_glint_environment, g_glint_linear_clamp, direction, lod);
+}
+uint GLINT_SSSR_LoadRayCount() { return g_glint_counters[1]; }
+uint GLINT_SSSR_LoadRay(uint index) { return g_glint_ray_list[index]; }
+void GLINT_SSSR_StoreRadiance(int2 pixel, float4 value) { g_glint_radiance[pixel] = value; }
+void GLINT_SSSR_StoreConfidence(int2 pixel, float confidence) { g_glint_confidence[pixel] = confidence; }
+
+[numthreads(64, 1, 1)] void main(uint3 groupId : SV_GroupID, uint groupIndex : SV_GroupIndex)
+{
+    GLINT_SSSR_Intersect(g_glint_sssr, groupIndex,
+                         (groupId.y * GLINT_SSSR_GROUPS_PER_ROW + groupId.x) * GLINT_SSSR_RAYS_PER_GROUP + groupIndex);
+}

@@ -1,0 +1,191 @@
+// glint SSSR, pass 2: tile classification (docs/sssr.md). Decides per pixel whether a ray is
+// traced, copied from a quad neighbour or replaced by the environment; compacts the traced
+// pixels into the ray list and the tiles with glossy pixels into the denoiser's tile list;
+// extracts GGX alpha once; writes every pixel's initial radiance.
+//
+// Integration: define these callbacks before or after including this header.
+//
+//   float  GLINT_SSSR_LoadDepth(int2 pixel, int mip);
+//       Device depth; this pass reads mip 0 only. Pixels outside the image are never asked.
+//   float3 GLINT_SSSR_LoadNormal(int2 pixel);
+//       The stored normal before unpacking (the header applies normalUnpack and normalizes).
+//   float4 GLINT_SSSR_LoadMaterial(int2 pixel);
+//       The material texture; constants.materialChannel selects roughness (r or alpha per flags).
+//   float2 GLINT_SSSR_LoadMotion(int2 pixel);
+//       The application's motion vector; uv_prev = uv + motionScale * mv (convention A).
+//   float  GLINT_SSSR_SampleVarianceHistory(float2 uv);
+//       Last frame's reflection variance, bilinear, uv in [0,1]^2 (only with VARIANCE_GUIDED).
+//   float3 GLINT_SSSR_SampleEnvironment(float3 worldDirection, float lod);
+//       The prefiltered environment, lod in the environment's own levels (0 = sharpest).
+//   void   GLINT_SSSR_StoreRoughness(int2 pixel, float alpha);
+//   void   GLINT_SSSR_StoreRadiance(int2 pixel, float4 radianceAndHitDistance);
+//   void   GLINT_SSSR_StoreConfidence(int2 pixel, float confidence);
+//   uint   GLINT_SSSR_AddRays(uint count);   atomic add to counter 0, returns the previous value
+//   void   GLINT_SSSR_StoreRay(uint index, uint entry);
+//   uint   GLINT_SSSR_AddTile();             atomic add of 1 to counter 2, returns the previous value
+//   void   GLINT_SSSR_StoreTile(uint index, uint entry);
+//
+// Dispatch: [numthreads(8, 8, 1)], ceil(W / 8) x ceil(H / 8) groups, one 8x8 tile per group.
+// Quads never straddle tiles, so every quad decision is made in groupshared memory and holds
+// for any subgroup size.
+#ifndef GLINT_SSSR_CLASSIFY_HLSLI
+#define GLINT_SSSR_CLASSIFY_HLSLI
+
+#include "glint/sssr/glint_sssr_common.hlsli"
+#include "glint/common/glint_ggx.hlsli"
+
+float GLINT_SSSR_LoadDepth(int2 pixel, int mip);
+float3 GLINT_SSSR_LoadNormal(int2 pixel);
+float4 GLINT_SSSR_LoadMaterial(int2 pixel);
+float2 GLINT_SSSR_LoadMotion(int2 pixel);
+float GLINT_SSSR_SampleVarianceHistory(float2 uv);
+float3 GLINT_SSSR_SampleEnvironment(float3 worldDirection, float lod);
+void GLINT_SSSR_StoreRoughness(int2 pixel, float alpha);
+void GLINT_SSSR_StoreRadiance(int2 pixel, float4 radianceAndHitDistance);
+void GLINT_SSSR_StoreConfidence(int2 pixel, float confidence);
+uint GLINT_SSSR_AddRays(uint count);
+void GLINT_SSSR_StoreRay(uint index, uint entry);
+uint GLINT_SSSR_AddTile();
+void GLINT_SSSR_StoreTile(uint index, uint entry);
+
+#define GLINT_SSSR_STATE_TRACES 1u
+#define GLINT_SSSR_STATE_REQUIRES_COPY 2u
+
+groupshared uint g_glint_sssr_state[GLINT_SSSR_TILE * GLINT_SSSR_TILE];
+groupshared uint g_glint_sssr_ray_count;
+groupshared uint g_glint_sssr_ray_base;
+groupshared uint g_glint_sssr_any_glossy;
+
+uint GLINT_SSSR_StateAt(uint2 local)
+{
+    return g_glint_sssr_state[local.y * GLINT_SSSR_TILE + local.x];
+}
+
+// The quad neighbour a pixel that needs a copy takes its ray from: the first of x^1, y^1 and
+// both that traces (1, 2, 3), or 0 when none does and the pixel must trace itself (the
+// reference leaves such pixels black, defect 11). Out-of-image neighbours never trace.
+uint GLINT_SSSR_DonorOf(uint2 local)
+{
+    if ((GLINT_SSSR_StateAt(local ^ uint2(1, 0)) & GLINT_SSSR_STATE_TRACES) != 0)
+        return 1u;
+    if ((GLINT_SSSR_StateAt(local ^ uint2(0, 1)) & GLINT_SSSR_STATE_TRACES) != 0)
+        return 2u;
+    if ((GLINT_SSSR_StateAt(local ^ uint2(1, 1)) & GLINT_SSSR_STATE_TRACES) != 0)
+        return 3u;
+    return 0u;
+}
+
+// True when the neighbour at local ^ offset needs a copy and chose this pixel (code = offset).
+bool GLINT_SSSR_ChoseMe(uint2 local, uint2 offset, uint code)
+{
+    uint2 neighbour = local ^ offset;
+    return (GLINT_SSSR_StateAt(neighbour) & GLINT_SSSR_STATE_REQUIRES_COPY) != 0 &&
+           GLINT_SSSR_DonorOf(neighbour) == code;
+}
+
+// Variance of last frame at the reprojected position; off-screen history counts as high so
+// that the pixel traces (reference defect 12: the reference reads it unreprojected).
+bool GLINT_SSSR_HighVariance(GLINT_SssrConstants c, int2 pixel, float2 uv)
+{
+    float2 motion = GLINT_SSSR_LoadMotion(pixel) * c.motionScale;
+    float2 previousUv = uv + float2(GLINT_FiniteOr(motion.x, 1e9), GLINT_FiniteOr(motion.y, 1e9));
+    if (any(previousUv < 0.0) || any(previousUv > 1.0))
+        return true;
+    return !(GLINT_SSSR_SampleVarianceHistory(previousUv) <= c.varianceThreshold);
+}
+
+void GLINT_SSSR_Classify(GLINT_SssrConstants c, uint2 groupId, uint2 local)
+{
+    uint localIndex = local.y * GLINT_SSSR_TILE + local.x;
+    if (localIndex == 0)
+    {
+        g_glint_sssr_ray_count = 0;
+        g_glint_sssr_any_glossy = 0;
+    }
+    uint2 pixel = groupId * GLINT_SSSR_TILE + local;
+    bool inImage = all(pixel < c.inputSize);
+    int2 ipixel = int2(pixel);
+    float2 uv = (float2(pixel) + 0.5) * c.inverseInputSize;
+
+    bool reflective = false;
+    bool glossy = false;
+    bool mirror = false;
+    float alpha = 1.0;
+    float3 normal = float3(0.0, 0.0, 0.0);
+    float depth = 0.0;
+    if (inImage)
+    {
+        depth = GLINT_SSSR_LoadDepth(ipixel, 0);
+        normal = GLINT_SSSR_UnpackNormal(c, GLINT_SSSR_LoadNormal(ipixel));
+        float4 material = GLINT_SSSR_LoadMaterial(ipixel);
+        uint channel = min(c.materialChannel, 3u);
+        float raw = channel == 0 ? material.x : channel == 1 ? material.y : channel == 2 ? material.z : material.w;
+        alpha = GLINT_SSSR_AlphaFromMaterial(c, raw);
+        GLINT_SSSR_StoreRoughness(ipixel, alpha);
+        reflective = !GLINT_SSSR_IsBackground(depth, GLINT_SSSR_Reversed(c)) && dot(normal, normal) > 0.0;
+        glossy = reflective && alpha < c.roughnessThreshold;
+        mirror = glossy && alpha < c.mirrorThreshold;
+    }
+    bool halfResolution = (c.flags & GLINT_SSSR_FLAG_HALF_RESOLUTION) != 0;
+    bool needsDenoiser = glossy && !mirror;
+    bool base = GLINT_SSSR_IsBasePixel(c, pixel);
+    // Mirrors always trace, except in half-resolution mode where every pixel shares its quad's ray.
+    bool traces = glossy && (base || (mirror && !halfResolution));
+    bool copies = (needsDenoiser || (mirror && halfResolution)) && !traces;
+    if (copies && (c.flags & GLINT_SSSR_FLAG_VARIANCE_GUIDED) != 0 && GLINT_SSSR_HighVariance(c, ipixel, uv))
+    {
+        traces = true;
+        copies = false;
+    }
+    g_glint_sssr_state[localIndex] = (traces ? GLINT_SSSR_STATE_TRACES : 0u) | (copies ? GLINT_SSSR_STATE_REQUIRES_COPY : 0u);
+    GroupMemoryBarrierWithGroupSync();
+
+    if (copies && GLINT_SSSR_DonorOf(local) == 0)
+        traces = true; // promoted: no neighbour traces for it
+    uint copyFlags = 0;
+    if (traces && !copies)
+    {
+        copyFlags |= GLINT_SSSR_ChoseMe(local, uint2(1, 0), 1u) ? GLINT_SSSR_RAY_COPY_H : 0u;
+        copyFlags |= GLINT_SSSR_ChoseMe(local, uint2(0, 1), 2u) ? GLINT_SSSR_RAY_COPY_V : 0u;
+        copyFlags |= GLINT_SSSR_ChoseMe(local, uint2(1, 1), 3u) ? GLINT_SSSR_RAY_COPY_D : 0u;
+    }
+
+    // Compaction: one global atomic per group, entries in arbitrary order within the group.
+    uint slot = 0;
+    if (traces)
+        InterlockedAdd(g_glint_sssr_ray_count, 1u, slot);
+    if (glossy)
+        InterlockedOr(g_glint_sssr_any_glossy, 1u);
+    GroupMemoryBarrierWithGroupSync();
+    if (localIndex == 0)
+    {
+        if (g_glint_sssr_ray_count > 0)
+            g_glint_sssr_ray_base = GLINT_SSSR_AddRays(g_glint_sssr_ray_count);
+        if (g_glint_sssr_any_glossy != 0)
+            GLINT_SSSR_StoreTile(GLINT_SSSR_AddTile(), GLINT_SSSR_PackTile(groupId * GLINT_SSSR_TILE));
+    }
+    GroupMemoryBarrierWithGroupSync();
+    if (traces)
+        GLINT_SSSR_StoreRay(g_glint_sssr_ray_base + slot, GLINT_SSSR_PackRay(pixel, copyFlags));
+
+    if (!inImage)
+        return;
+    // Initial radiance: the environment for reflective pixels that get no ray, 0 elsewhere;
+    // traced pixels and their copies are overwritten by the intersection.
+    float3 radiance = float3(0.0, 0.0, 0.0);
+    if (reflective && !glossy)
+    {
+        float3 viewPosition = GLINT_SSSR_ViewPosition(c, uv, depth);
+        float3 view = -normalize(GLINT_SSSR_MulDirection(c.worldFromView, viewPosition));
+        float3 n = GLINT_GGX_BendNormalTowardView(normal, view);
+        float NdotV = dot(n, view);
+        float3 mirrorDirection = 2.0 * NdotV * n - view;
+        // The lobe's LOD at its centre (H = N), the same estimate the traced misses use.
+        float lod = GLINT_SSSR_EnvironmentLod(c, GLINT_GGX_ReflectionPdf(NdotV, 1.0, alpha));
+        radiance = GLINT_SSSR_SampleEnvironment(mirrorDirection, lod) * c.iblFactor;
+    }
+    GLINT_SSSR_StoreRadiance(ipixel, float4(GLINT_SSSR_SanitizeRadiance(radiance), GLINT_SSSR_MISS_DISTANCE));
+    GLINT_SSSR_StoreConfidence(ipixel, 0.0);
+}
+
+#endif // GLINT_SSSR_CLASSIFY_HLSLI

@@ -1,0 +1,158 @@
+// Tile classification against the CPU classification (tests/reference): the ray list (as a
+// set, the GPU's order is arbitrary), the tile list, the counters and the indirect arguments,
+// the extracted roughness, and a frame with nothing to trace.
+#include "reference/sssr_reference.h"
+#include "sssr/sssr_test_scene.h"
+#include "support/gpu_test_context.h"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+using namespace glint;
+
+namespace {
+
+struct Rng {
+    std::uint32_t state;
+    float next() {
+        state = state * 1664525u + 1013904223u;
+        return static_cast<float>(state >> 8) / 16777216.0f;
+    }
+};
+
+// Random G-buffer: sky, NaN depth, zero and NaN normals, roughness (perceptual, channel 1)
+// spread over both sides of the threshold with exact mirrors and NaN.
+test::SssrTestView randomView(std::uint32_t width, std::uint32_t height, bool reversed, std::uint32_t seed) {
+    test::SssrTestView view = test::makeSssrTestView(width, height, reversed);
+    view.desc.materialChannel = 1;
+    view.desc.roughnessIsPerceptual = true;
+    Rng rng{seed};
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    for (std::size_t i = 0; i < std::size_t{width} * height; ++i) {
+        const float kind = rng.next();
+        test::setViewDepth(view, static_cast<std::uint32_t>(i % width), static_cast<std::uint32_t>(i / width),
+                           2.0 + 10.0 * static_cast<double>(rng.next()));
+        if (kind < 0.05f) view.inputs.depth[i] = reversed ? 0.0f : 1.0f;
+        if (kind >= 0.05f && kind < 0.07f) view.inputs.depth[i] = nan;
+        const float r = rng.next();
+        view.inputs.material[4 * i + 1] = r < 0.1f ? 0.0f : r < 0.12f ? nan : 0.6f * rng.next();
+        if (rng.next() < 0.03f) view.inputs.normals[4 * i + 2] = rng.next() < 0.5f ? 0.0f : nan;
+    }
+    return view;
+}
+
+reference::SssrClassifyInputs referenceInputs(const test::SssrTestView& view) {
+    reference::SssrClassifyInputs in;
+    in.width = view.desc.size.width;
+    in.height = view.desc.size.height;
+    in.depth = view.inputs.depth;
+    in.reversedDepth = view.desc.depth == DepthConvention::Reversed;
+    in.roughnessThreshold = view.desc.roughnessThreshold;
+    in.mirrorThreshold = view.desc.mirrorThreshold;
+    in.samplesPerQuad = view.desc.samplesPerQuad;
+    const std::size_t count = std::size_t{in.width} * in.height;
+    for (std::size_t i = 0; i < count; ++i) {
+        const float r = view.inputs.material[4 * i + view.desc.materialChannel];
+        // The documented conversion: alpha = r^2 for a perceptual input, clamped to [0, 1].
+        in.alpha.push_back(std::isfinite(r) ? std::clamp(r, 0.0f, 1.0f) * std::clamp(r, 0.0f, 1.0f) : 1.0f);
+        for (std::size_t c = 0; c < 3; ++c) in.normals.push_back(view.inputs.normals[4 * i + c]);
+    }
+    return in;
+}
+
+std::vector<std::uint32_t> sorted(std::vector<std::uint32_t> values) {
+    std::sort(values.begin(), values.end());
+    return values;
+}
+
+} // namespace
+
+TEST_CASE("classification matches the CPU classification for 1, 2 and 4 samples per quad",
+          "[sssr][classify]") {
+    for (const bool reversed : {false, true})
+        for (const std::uint32_t samples : {1u, 2u, 4u})
+            for (const auto& size : {std::pair{37u, 21u}, std::pair{64u, 16u}, std::pair{9u, 3u}}) {
+                INFO("reversed " << reversed << ", samples per quad " << samples << ", " << size.first << "x"
+                                 << size.second);
+                test::SssrTestView view =
+                    randomView(size.first, size.second, reversed, samples * 31u + size.first);
+                view.desc.samplesPerQuad = samples;
+                gpu::SssrRunner runner(test::testContext(), view.desc);
+                runner.upload(view.inputs);
+                runner.run(view.desc);
+                const gpu::SssrFrameOutputs out = runner.readback();
+                const reference::SssrClassification expected = reference::sssrClassify(referenceInputs(view));
+                REQUIRE(expected.rayCount > 0);
+                CHECK(out.counters[0] == 0); // reset by the arguments pass
+                CHECK(out.counters[2] == 0);
+                CHECK(out.counters[1] == expected.rayCount);
+                CHECK(out.counters[3] == expected.tileCount);
+                CHECK(sorted(out.rayList) == expected.rays);
+                CHECK(sorted(out.tileList) == expected.tiles);
+                const std::uint32_t groups = (expected.rayCount + 63) / 64;
+                CHECK(out.arguments[0] * out.arguments[1] >= groups);
+                CHECK(out.arguments[0] == std::min(groups, 1024u));
+                CHECK(out.arguments[3] == expected.tileCount);
+                const auto inputs = referenceInputs(view);
+                for (std::size_t i = 0; i < inputs.alpha.size(); ++i) {
+                    INFO("pixel " << i);
+                    REQUIRE(out.roughness[i] == Approx(inputs.alpha[i]).margin(1e-7));
+                }
+            }
+    GLINT_REQUIRE_NO_VALIDATION_ERRORS();
+}
+
+TEST_CASE("variance-guided tracing adds rays where the reprojected variance history is high",
+          "[sssr][classify]") {
+    test::SssrTestView view = randomView(40, 24, false, 7);
+    view.desc.varianceGuided = true;
+    view.desc.varianceThreshold = -1.0f; // the (zero) history is above it everywhere
+    gpu::SssrRunner runner(test::testContext(), view.desc);
+    runner.upload(view.inputs);
+    runner.run(view.desc);
+    const gpu::SssrFrameOutputs out = runner.readback();
+    reference::SssrClassifyInputs in = referenceInputs(view);
+    in.varianceGuided = true;
+    in.varianceThreshold = -1.0f;
+    in.variance.assign(in.alpha.size(), 0.0f);
+    const reference::SssrClassification expected = reference::sssrClassify(in);
+    const reference::SssrClassification unguided = reference::sssrClassify(referenceInputs(view));
+    CHECK(expected.rayCount > unguided.rayCount);
+    CHECK(sorted(out.rayList) == expected.rays);
+    GLINT_REQUIRE_NO_VALIDATION_ERRORS();
+}
+
+TEST_CASE("a frame with no reflective pixel traces no ray and dispatches zero groups", "[sssr][classify]") {
+    for (const bool sky : {true, false}) {
+        INFO((sky ? "all sky" : "all rough"));
+        test::SssrTestView view = test::makeSssrTestView(33, 17, false);
+        if (!sky) {
+            for (std::uint32_t y = 0; y < 17; ++y)
+                for (std::uint32_t x = 0; x < 33; ++x) test::setViewDepth(view, x, y, 5.0);
+            for (std::size_t i = 0; i < 33 * 17; ++i) view.inputs.material[4 * i] = 0.5f; // alpha above 0.2
+        }
+        gpu::SssrRunner runner(test::testContext(), view.desc);
+        runner.upload(view.inputs);
+        for (int frame = 0; frame < 2; ++frame) { // the second frame sees the counters the first left
+            view.desc.frameIndex = static_cast<std::uint32_t>(frame);
+            runner.run(view.desc);
+            const gpu::SssrFrameOutputs out = runner.readback();
+            CHECK(out.counters[0] == 0);
+            CHECK(out.counters[1] == 0);
+            CHECK(out.counters[2] == 0);
+            CHECK(out.counters[3] == 0);
+            CHECK(out.arguments[0] * out.arguments[1] * out.arguments[2] == 0); // intersection groups
+            CHECK(out.arguments[3] == 0);                                       // denoiser tiles
+            // Rough pixels get the environment, sky pixels 0; every hit distance is the miss value.
+            for (std::size_t i = 0; i < 33 * 17; ++i) {
+                CHECK(out.radiance[4 * i + 3] == 65504.0f);
+                if (sky) CHECK(out.radiance[4 * i] == 0.0f);
+                if (!sky) CHECK(out.radiance[4 * i] > 0.0f);
+            }
+        }
+    }
+    GLINT_REQUIRE_NO_VALIDATION_ERRORS();
+}

@@ -1,0 +1,15 @@
+# SSSR: the plan (unit) and the passes on the device (gpu) against the CPU references in
+# tests/reference/sssr_reference.*. The tables, VNDF and reference self-tests have their own
+# fragments (tables.cmake, vndf.cmake, reference.cmake).
+glint_add_test_suite(NAME sssr_unit LABELS unit
+  SOURCES sssr/plan_test.cpp
+  LIBS glint_core)
+
+glint_add_test_suite(NAME sssr LABELS gpu
+  SOURCES
+    sssr/classify_test.cpp
+    sssr/traversal_test.cpp
+    sssr/hard_cases_test.cpp
+    sssr/sssr_test_scene.cpp
+    reference/sssr_reference.cpp
+  LIBS glint_gpu_test_support glint_gpu)
