@@ -1,5 +1,6 @@
 // glint bench: GPU time of one effect at one setting, from timestamps around each dispatch,
 // median of many runs, with the device and driver it ran on. Never asserts a speed.
+#include "cli_bench_sssr.h"
 #include "cli_commands.h"
 
 #include "glint/glint_depth_pyramid.h"
@@ -102,7 +103,7 @@ Setup setupEffect(const BenchOptions& options) {
             {"shadow_motion", VK_FORMAT_R32G32_SFLOAT, 2, std::vector<float>(depth.size() * 2, 0.0f)});
     } else {
         throw std::invalid_argument("bench: unknown effect '" + options.effect +
-                                    "' (depth_pyramid, roughness, shadow_denoiser)");
+                                    "' (depth_pyramid, roughness, shadow_denoiser, sssr)");
     }
     return setup;
 }
@@ -116,6 +117,19 @@ int runBench(const BenchOptions& options) {
     contextOptions.validation = options.validate;
     contextOptions.synchronizationValidation = options.validate;
     gpu::Context context = gpu::createContext(contextOptions);
+    if (options.effect == "sssr") {
+        int code = kExitUsage;
+        try {
+            code = runBenchSssr(options, context);
+        } catch (...) {
+            gpu::destroyContext(context);
+            throw;
+        }
+        gpu::destroyContext(context);
+        const uint32_t errors = context.validation ? context.validation->errors.load() : 0u;
+        if (errors > 0) std::fprintf(stderr, "glint: %u validation errors\n", errors);
+        return errors > 0 ? kExitCheckFailed : code;
+    }
     Setup setup = setupEffect(options);
 
     std::vector<vk::Image> inputs;

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace glint::cli {
 
@@ -21,7 +22,9 @@ struct BenchOptions {
     uint32_t levels = 0; // depth pyramid: 0 = full chain
     bool reversed = false;
     bool farthest = false;
-    bool skipLevel0 = false; // depth pyramid: leave level 0 unwritten
+    bool skipLevel0 = false;           // depth pyramid: leave level 0 unwritten
+    std::string scene;                 // sssr: the scene to simulate (default the glossy room)
+    std::vector<std::string> settings; // sssr: "name=value" desc overrides
     bool validate = false;
 };
 

@@ -29,7 +29,7 @@ int main(int argc, char** argv) {
     std::string benchSize = "1920x1080";
     CLI::App* benchCommand =
         app.add_subcommand("bench", "GPU time of one effect (median of timestamped runs)");
-    benchCommand->add_option("effect", bench.effect, "depth_pyramid | roughness | shadow_denoiser")
+    benchCommand->add_option("effect", bench.effect, "depth_pyramid | roughness | shadow_denoiser | sssr")
         ->required();
     benchCommand->add_option("--size", benchSize, "render size WxH")->capture_default_str();
     benchCommand->add_option("--runs", bench.runs, "measured runs")->capture_default_str();
@@ -38,6 +38,9 @@ int main(int argc, char** argv) {
     benchCommand->add_flag("--farthest", bench.farthest, "closest and farthest channels");
     benchCommand->add_flag("--skip-level0", bench.skipLevel0,
                            "depth pyramid: do not copy the input into level 0");
+    benchCommand->add_option("--scene", bench.scene,
+                             "sssr: scene file to simulate (default: the glossy room)");
+    benchCommand->add_option("--set", bench.settings, "sssr: a setting, name=value (repeatable)");
 
     glint::cli::SimulateOptions simulate;
     std::string simulateSize;

@@ -49,7 +49,8 @@ std::vector<std::vector<float>> environmentMips(std::uint32_t width, std::uint32
     return levels;
 }
 
-SssrRunner::SssrRunner(const Context& context, const SssrDesc& desc) : context_(context), desc_(desc) {
+SssrRunner::SssrRunner(const Context& context, const SssrDesc& desc, bool compactInputs)
+    : context_(context), desc_(desc), compact_(compactInputs) {
     std::string error;
     if (vk::createSssr(context.device, desc, effect_, &error) != Result::Ok) throw std::runtime_error(error);
     executor_ = vk::createExecutor(context.device);
@@ -64,10 +65,14 @@ SssrRunner::~SssrRunner() {
 void SssrRunner::upload(const SssrFrameInputs& inputs) {
     const std::uint32_t w = desc_.size.width, h = desc_.size.height;
     if (images_.empty()) {
-        const VkFormat formats[] = {VK_FORMAT_R32_SFLOAT,          VK_FORMAT_R32G32B32A32_SFLOAT,
-                                    VK_FORMAT_R32G32B32A32_SFLOAT, VK_FORMAT_R32G32B32A32_SFLOAT,
-                                    VK_FORMAT_R32G32_SFLOAT,       VK_FORMAT_R32G32B32A32_SFLOAT};
-        for (VkFormat format : formats) images_.push_back(vk::createImage2D(context_.device, w, h, format));
+        const VkFormat full[] = {VK_FORMAT_R32_SFLOAT,          VK_FORMAT_R32G32B32A32_SFLOAT,
+                                 VK_FORMAT_R32G32B32A32_SFLOAT, VK_FORMAT_R32G32B32A32_SFLOAT,
+                                 VK_FORMAT_R32G32_SFLOAT,       VK_FORMAT_R32G32B32A32_SFLOAT};
+        const VkFormat compact[] = {VK_FORMAT_R32_SFLOAT,    VK_FORMAT_R16G16B16A16_SFLOAT,
+                                    VK_FORMAT_R16_SFLOAT,    VK_FORMAT_R16G16B16A16_SFLOAT,
+                                    VK_FORMAT_R16G16_SFLOAT, VK_FORMAT_R8G8B8A8_UNORM};
+        for (VkFormat format : compact_ ? compact : full)
+            images_.push_back(vk::createImage2D(context_.device, w, h, format));
         images_.push_back(vk::Image{});
     }
     const std::vector<float>* data[] = {&inputs.depth, &inputs.normals, &inputs.material,
@@ -77,6 +82,12 @@ void SssrRunner::upload(const SssrFrameInputs& inputs) {
         if (data[slot]->empty()) continue;
         if (data[slot]->size() != std::size_t{w} * h * channels[slot])
             throw std::runtime_error("sssr runner: input " + std::to_string(slot) + " has the wrong size");
+        if (compact_ && slot == kMaterial) { // R16F: roughness only, from channel 0
+            std::vector<float> roughness(std::size_t{w} * h);
+            for (std::size_t i = 0; i < roughness.size(); ++i) roughness[i] = (*data[slot])[4 * i];
+            uploadImage(context_, images_[kMaterial], roughness, 1);
+            continue;
+        }
         uploadImage(context_, images_[static_cast<std::size_t>(slot)], *data[slot], channels[slot]);
     }
     if (!inputs.environment.empty()) {
@@ -143,6 +154,8 @@ void SssrRunner::run(const SssrDesc& frame, std::vector<double>* timings) {
 
 SssrFrameOutputs SssrRunner::readback() const {
     SssrFrameOutputs out;
+    out.width = desc_.size.width;
+    out.height = desc_.size.height;
     const auto& images = effect_.images;
     const auto& buffers = effect_.buffers;
     out.radiance = readbackImage(context_, images.at("sssr_radiance"));

@@ -26,6 +26,7 @@ struct SssrFrameInputs {
 };
 
 struct SssrFrameOutputs {
+    std::uint32_t width = 0, height = 0;
     std::vector<float> radiance;         // RGBA: rgb, hit distance
     std::vector<float> confidence;       // R
     std::vector<float> roughness;        // R, GGX alpha
@@ -40,7 +41,11 @@ struct SssrFrameOutputs {
 
 class SssrRunner {
   public:
-    SssrRunner(const Context& context, const SssrDesc& desc);
+    // compactInputs: the application's images in the formats an engine would use (RGBA16F
+    // normals and colour, R16F roughness from material channel 0, RG16F motion) instead of
+    // 32-bit floats; for benchmarks. The tests keep 32 bits so that their references see
+    // exactly the values the GPU reads.
+    SssrRunner(const Context& context, const SssrDesc& desc, bool compactInputs = false);
     ~SssrRunner();
     SssrRunner(const SssrRunner&) = delete;
     SssrRunner& operator=(const SssrRunner&) = delete;
@@ -55,6 +60,7 @@ class SssrRunner {
   private:
     const Context& context_;
     SssrDesc desc_;
+    bool compact_ = false;
     vk::SssrEffect effect_;
     vk::Executor executor_;
     std::vector<vk::Image> images_; // depth, normals, material, color, motion, base colour, environment

@@ -1,3 +1,5 @@
+// Permutation GLINT_SSSR_HALF_STORAGE=1: roughness, radiance and confidence stored in 16-bit
+// float (the header clamps radiance to the fp16 range first).
 // Entry for the SSSR tile classification: bindings, callbacks, main. Engines read this file
 // as the integration example for glint/sssr/glint_sssr_classify.hlsli.
 #include "entry/common/glint_entry_common.hlsli"
@@ -14,9 +16,21 @@
 [[vk::binding(5, 0)]] Texture2D<float> g_glint_variance_history;
 [[vk::binding(6, 0)]] Texture2D<float4> g_glint_environment;
 [[vk::binding(7, 0)]] SamplerState g_glint_linear_clamp;
+#if GLINT_SSSR_HALF_STORAGE
+[[vk::binding(8, 0)]] GLINT_IMAGE_FORMAT(r16f) RWTexture2D<float> g_glint_roughness;
+#else
 [[vk::binding(8, 0)]] GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float> g_glint_roughness;
+#endif
+#if GLINT_SSSR_HALF_STORAGE
+[[vk::binding(9, 0)]] GLINT_IMAGE_FORMAT(rgba16f) RWTexture2D<float4> g_glint_radiance;
+#else
 [[vk::binding(9, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_radiance;
+#endif
+#if GLINT_SSSR_HALF_STORAGE
+[[vk::binding(10, 0)]] GLINT_IMAGE_FORMAT(r16f) RWTexture2D<float> g_glint_confidence;
+#else
 [[vk::binding(10, 0)]] GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float> g_glint_confidence;
+#endif
 [[vk::binding(11, 0)]] RWStructuredBuffer<uint> g_glint_counters;
 [[vk::binding(12, 0)]] RWStructuredBuffer<uint> g_glint_ray_list;
 [[vk::binding(13, 0)]] RWStructuredBuffer<uint> g_glint_tile_list;

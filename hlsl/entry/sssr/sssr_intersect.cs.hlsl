@@ -1,3 +1,5 @@
+// Permutation GLINT_SSSR_HALF_STORAGE=1: roughness, radiance and confidence stored in 16-bit
+// float (the header clamps radiance to the fp16 range first).
 // Entry for the SSSR intersection: bindings, callbacks, main. Engines read this file as the
 // integration example for glint/sssr/glint_sssr_intersect.hlsli.
 //
@@ -25,21 +27,34 @@
 [[vk::binding(9, 0)]] SamplerState g_glint_linear_clamp;
 [[vk::binding(10, 0)]] StructuredBuffer<uint> g_glint_counters;
 [[vk::binding(11, 0)]] StructuredBuffer<uint> g_glint_ray_list;
+#if GLINT_SSSR_HALF_STORAGE
+[[vk::binding(12, 0)]] GLINT_IMAGE_FORMAT(rgba16f) RWTexture2D<float4> g_glint_radiance;
+#else
 [[vk::binding(12, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_radiance;
+#endif
+#if GLINT_SSSR_HALF_STORAGE
+[[vk::binding(13, 0)]] GLINT_IMAGE_FORMAT(r16f) RWTexture2D<float> g_glint_confidence;
+#else
 [[vk::binding(13, 0)]] GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float> g_glint_confidence;
+#endif
 #if GLINT_SSSR_DEBUG_OUTPUT
 [[vk::binding(14, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_ray_info;
 void GLINT_SSSR_StoreRayInfo(int2 pixel, float4 info) { g_glint_ray_info[pixel] = info; }
 #endif
 
-// Level 0 is the input depth itself: the pyramid is built without its level-0 copy.
+// Level 0 is the input depth itself: the pyramid is built without its level-0 copy. Both
+// textures are read unconditionally and the result selected, so that rays of one wave at
+// different levels issue their loads together instead of one texture after the other.
 float GLINT_SSSR_LoadDepth(int2 texel, int mip)
 {
+    float level0 = g_glint_depth.Load(int3(texel, 0)); // in range at every mip: texel <= pixel
+    int coarseMip = max(mip, 1);
 #if GLINT_SSSR_THICKNESS_AWARE
-    return mip == 0 ? g_glint_depth.Load(int3(texel, 0)) : g_glint_depth_pyramid.Load(int3(texel, mip)).x;
+    float coarse = g_glint_depth_pyramid.Load(int3(texel >> (coarseMip - mip), coarseMip)).x;
 #else
-    return mip == 0 ? g_glint_depth.Load(int3(texel, 0)) : g_glint_depth_pyramid.Load(int3(texel, mip));
+    float coarse = g_glint_depth_pyramid.Load(int3(texel >> (coarseMip - mip), coarseMip));
 #endif
+    return mip == 0 ? level0 : coarse;
 }
 #if GLINT_SSSR_THICKNESS_AWARE
 float GLINT_SSSR_LoadFarthestDepth(int2 texel, int mip) { return g_glint_depth_pyramid.Load(int3(texel, mip)).y; }

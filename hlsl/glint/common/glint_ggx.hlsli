@@ -111,8 +111,14 @@ float3 GLINT_GGX_SampleVndf(float3 Vlocal, float alpha, float2 u, float bias)
     float3 Vh = GLINT_GGX_SafeNormalize(float3(a * Vlocal.x, a * Vlocal.y, Vlocal.z), float3(0.0, 0.0, 1.0));
     float b = GLINT_Saturate(GLINT_FiniteOr(bias, 0.0));
     float s = (1.0 - b) * GLINT_Saturate(GLINT_FiniteOr(u.y, 0.0));
-    float z = (1.0 - s) * (1.0 + Vh.z) - Vh.z;
-    float r = sqrt(max(1.0 - z * z, 0.0));
+    // z = (1 - s)(1 + Vh.z) - Vh.z, but the cap radius sqrt(1 - z^2) is taken from 1 - z and
+    // 1 + z written without cancellation: from z itself, the rounding of z near the pole
+    // (~1e-7) became a radius of ~5e-4, moving the densest samples by up to ~1e-4 rad and
+    // putting s = 0 off the lobe centre. Both factors below are sums of non-negative terms.
+    float oneMinusZ = s * (1.0 + Vh.z);
+    float onePlusZ = (1.0 - s) * (1.0 + Vh.z) + (1.0 - Vh.z);
+    float z = 1.0 - oneMinusZ;
+    float r = sqrt(max(oneMinusZ * onePlusZ, 0.0));
     float phi = 2.0 * GLINT_GGX_PI * GLINT_Saturate(GLINT_FiniteOr(u.x, 0.0));
     float3 Nh = float3(r * cos(phi), r * sin(phi), z) + Vh;
     // Nh.z >= 0 in exact arithmetic (z >= -Vh.z); max() removes rounding below it. Nh is zero

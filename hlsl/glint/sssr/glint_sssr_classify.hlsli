@@ -151,10 +151,16 @@ void GLINT_SSSR_Classify(GLINT_SssrConstants c, uint2 groupId, uint2 local)
     }
 
     // Compaction: one global atomic per group, entries in arbitrary order within the group.
-    uint slot = 0;
-    if (traces)
-        InterlockedAdd(g_glint_sssr_ray_count, 1u, slot);
-    if (glossy)
+    // Within a wave the slots come from a prefix count and one groupshared atomic per wave
+    // (instead of one per pixel); this holds for any wave size, and the order of the entries
+    // is unspecified either way.
+    uint waveRays = WaveActiveCountBits(traces);
+    uint waveBase = 0;
+    if (WaveIsFirstLane() && waveRays > 0)
+        InterlockedAdd(g_glint_sssr_ray_count, waveRays, waveBase);
+    uint slot = WaveReadLaneFirst(waveBase) + WavePrefixCountBits(traces);
+    bool waveGlossy = WaveActiveAnyTrue(glossy); // outside the condition: wave ops need every lane
+    if (WaveIsFirstLane() && waveGlossy)
         InterlockedOr(g_glint_sssr_any_glossy, 1u);
     GroupMemoryBarrierWithGroupSync();
     if (localIndex == 0)

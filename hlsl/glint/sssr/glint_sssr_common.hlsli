@@ -137,11 +137,12 @@ float GLINT_SSSR_EnvironmentLod(GLINT_SssrConstants c, float pdf)
     return clamp(GLINT_FiniteOr(lod, 0.0), 0.0, c.environmentMaxLod);
 }
 
-// Replaces non-finite or negative radiance by 0: nothing non-finite leaves a pass.
+// Replaces non-finite or negative radiance by 0 and clamps to the fp16 maximum, so that
+// nothing non-finite leaves a pass and the 16-bit storage permutation cannot overflow to Inf.
 float3 GLINT_SSSR_SanitizeRadiance(float3 value)
 {
-    return float3(max(GLINT_FiniteOr(value.x, 0.0), 0.0), max(GLINT_FiniteOr(value.y, 0.0), 0.0),
-                  max(GLINT_FiniteOr(value.z, 0.0), 0.0));
+    return float3(clamp(GLINT_FiniteOr(value.x, 0.0), 0.0, 65504.0), clamp(GLINT_FiniteOr(value.y, 0.0), 0.0, 65504.0),
+                  clamp(GLINT_FiniteOr(value.z, 0.0), 0.0, 65504.0));
 }
 
 #endif // GLINT_SSSR_COMMON_HLSLI

@@ -118,9 +118,8 @@ float GLINT_SSSR_Thickness(GLINT_SssrConstants c, float surfaceViewDepth)
 
 // t of the exit through the current cell's far x and y planes (with a small overshoot so the
 // next cell is entered for certain).
-float GLINT_SSSR_CellExit(GLINT_SSSR_Ray ray, float3 position, float cellSize, float2 overshoot)
+float GLINT_SSSR_CellExit(GLINT_SSSR_Ray ray, float2 cell, float cellSize, float2 overshoot)
 {
-    float2 cell = floor(position.xy / cellSize);
     float2 stepOut = float2(ray.direction.x > 0.0 ? 1.0 : 0.0, ray.direction.y > 0.0 ? 1.0 : 0.0);
     float2 boundary = (cell + stepOut) * cellSize + overshoot;
     float tx = ray.direction.x != 0.0 ? (boundary.x - ray.origin.x) * ray.inverseDirection.x : GLINT_SSSR_BIG;
@@ -134,10 +133,12 @@ void GLINT_SSSR_Step(GLINT_SssrConstants c, GLINT_SSSR_Ray ray, int finestLevel,
 {
     bool reversed = GLINT_SSSR_Reversed(c);
     float3 position = ray.origin + state.t * ray.direction;
-    float cellSize = float(1u << uint(state.level));
-    int2 cell = int2(floor(position.xy / cellSize));
+    // Cells are powers of two: scaling by the exact reciprocal avoids a division per step.
+    float cellSize = asfloat(uint(127 + state.level) << 23);
+    float2 cellFloat = floor(position.xy * asfloat(uint(127 - state.level) << 23));
+    int2 cell = int2(cellFloat);
     float surface = GLINT_SSSR_TraversalDepth(c, cell, state.level);
-    float tSide = GLINT_SSSR_CellExit(ray, position, cellSize, overshoot);
+    float tSide = GLINT_SSSR_CellExit(ray, cellFloat, cellSize, overshoot);
     state.iterations += 1;
     if (GLINT_SSSR_Closer(position.z, surface, reversed))
     {
@@ -316,7 +317,8 @@ void GLINT_SSSR_Intersect(GLINT_SssrConstants c, uint groupIndex, uint rayIndex)
         if (!degenerate)
         {
             // Initial advance out of the origin's own cell, with no depth test.
-            state.t = GLINT_SSSR_CellExit(ray, ray.origin, float(1u << uint(finestLevel)), overshoot);
+            float finestCell = float(1u << uint(finestLevel));
+            state.t = GLINT_SSSR_CellExit(ray, floor(ray.origin.xy / finestCell), finestCell, overshoot);
             state.level = finestLevel;
             state.live = state.t <= ray.tEnd;
             state.rayClass = state.live ? GLINT_SSSR_RAY_BUDGET : GLINT_SSSR_RAY_ESCAPED;
@@ -324,27 +326,37 @@ void GLINT_SSSR_Intersect(GLINT_SssrConstants c, uint groupIndex, uint rayIndex)
     }
     GroupMemoryBarrierWithGroupSync();
 
-    uint interval = 0;
-    for (uint start = 0; start < c.maxIterations; start += GLINT_SSSR_OCCUPANCY_INTERVAL)
+    if (c.minActiveRays == 0)
     {
-        uint stop = min(start + GLINT_SSSR_OCCUPANCY_INTERVAL, c.maxIterations);
-        for (uint i = start; i < stop && state.live; ++i)
+        // No occupancy exit: every ray marches on its own, with no group synchronization.
+        for (uint i = 0; i < c.maxIterations && state.live; ++i)
             GLINT_SSSR_Step(c, ray, finestLevel, overshoot, state);
-        uint slot = interval % 3u;
-        if (groupIndex == 0)
-            g_glint_sssr_live[(interval + 1u) % 3u] = 0;
-        if (state.live)
-            InterlockedAdd(g_glint_sssr_live[slot], 1u);
-        GroupMemoryBarrierWithGroupSync();
-        uint live = g_glint_sssr_live[slot];
-        interval += 1;
-        if (live == 0)
-            break;
-        // Stragglers: non-mirror rays stop when few of the group are still marching.
-        if (live <= c.minActiveRays && state.live && !mirror)
+    }
+    else
+    {
+        // minActiveRays is uniform, so this branch and every barrier in it are group-uniform.
+        uint interval = 0;
+        for (uint start = 0; start < c.maxIterations; start += GLINT_SSSR_OCCUPANCY_INTERVAL)
         {
-            state.live = false;
-            state.rayClass = GLINT_SSSR_RAY_OCCUPANCY;
+            uint stop = min(start + GLINT_SSSR_OCCUPANCY_INTERVAL, c.maxIterations);
+            for (uint i = start; i < stop && state.live; ++i)
+                GLINT_SSSR_Step(c, ray, finestLevel, overshoot, state);
+            uint slot = interval % 3u;
+            if (groupIndex == 0)
+                g_glint_sssr_live[(interval + 1u) % 3u] = 0;
+            if (state.live)
+                InterlockedAdd(g_glint_sssr_live[slot], 1u);
+            GroupMemoryBarrierWithGroupSync();
+            uint live = g_glint_sssr_live[slot];
+            interval += 1;
+            if (live == 0)
+                break;
+            // Stragglers: non-mirror rays stop when few of the group are still marching.
+            if (live <= c.minActiveRays && state.live && !mirror)
+            {
+                state.live = false;
+                state.rayClass = GLINT_SSSR_RAY_OCCUPANCY;
+            }
         }
     }
     if (!valid)

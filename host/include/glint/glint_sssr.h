@@ -58,6 +58,8 @@ struct SssrDesc {
     float importanceSampleBias = 0.0f; // 0..1 (Frostbite; DiligentFX uses 0.3): sharper, biased
     bool previousFrameColor = false;   // "color" is last frame's final colour, fetched through motion
     bool debugOutput = false;          // writes "sssr_ray_info": (hit x, hit y, class, iterations)
+    bool halfPrecisionStorage =
+        false; // roughness, radiance, confidence in 16-bit float (radiance clamped to 65504)
 
     // Environment (the application's prefiltered map behind GLINT_SSSR_SampleEnvironment).
     float iblFactor = 1.0f;
@@ -83,9 +85,9 @@ struct SssrDesc {
 //   "base_color_metallic"    RGBA, with composite only
 // Owned (plan.images / plan.buffers):
 //   "depth_pyramid", "depth_pyramid_counter"   see glint_depth_pyramid.h (7 levels)
-//   "sssr_roughness"         R32F GGX alpha (for the denoiser)
-//   "sssr_radiance"          RGBA32F rgb radiance, a = world-space hit distance (65504 = miss / none)
-//   "sssr_confidence"        R32F confidence of the screen-space hit (DiligentFX compositing)
+//   "sssr_roughness"         R32F (R16F with halfPrecisionStorage) GGX alpha (for the denoiser)
+//   "sssr_radiance"          RGBA32F (RGBA16F) rgb radiance, a = world hit distance (65504: miss)
+//   "sssr_confidence"        R32F (R16F) confidence of the screen-space hit (DiligentFX compositing)
 //   "sssr_blue_noise"        RG32F 128 x 128, this frame's sample
 //   "sssr_ray_list"          4 bytes per pixel; "sssr_tile_list" 4 bytes per 8 x 8 tile
 //   "sssr_counters"          16 bytes, zero at creation, kept zero between frames by the passes

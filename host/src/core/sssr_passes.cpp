@@ -114,7 +114,8 @@ Pass sssrPass(const char* name, const char* pipeline, std::uint32_t groupX, std:
 }
 
 Pass classifyPass(const SssrDesc& desc, const std::vector<std::byte>& constants) {
-    Pass pass = sssrPass("classify", "sssr_classify", GLINT_SSSR_TILE, GLINT_SSSR_TILE, constants);
+    Pass pass = sssrPass("classify", desc.halfPrecisionStorage ? "sssr_classify.half" : "sssr_classify",
+                         GLINT_SSSR_TILE, GLINT_SSSR_TILE, constants);
     pass.dispatch = core::gridFor(desc.size.width, desc.size.height, 1, pass.groupSize);
     pass.uses = {{"g_glint_depth", "depth", Access::Read},
                  {"g_glint_normals", "normals", Access::Read},
@@ -211,9 +212,10 @@ Result planSssr(const SssrDesc& desc, EffectPlan& plan, std::string* error) {
     const std::uint32_t h = desc.size.height;
     const std::uint64_t tiles =
         std::uint64_t{core::divideRoundUp(w, GLINT_SSSR_TILE)} * core::divideRoundUp(h, GLINT_SSSR_TILE);
-    plan.images.push_back({"sssr_roughness", w, h, 1, Format::R32Float});
-    plan.images.push_back({"sssr_radiance", w, h, 1, Format::RGBA32Float});
-    plan.images.push_back({"sssr_confidence", w, h, 1, Format::R32Float});
+    const bool half = desc.halfPrecisionStorage;
+    plan.images.push_back({"sssr_roughness", w, h, 1, half ? Format::R16Float : Format::R32Float});
+    plan.images.push_back({"sssr_radiance", w, h, 1, half ? Format::RGBA16Float : Format::RGBA32Float});
+    plan.images.push_back({"sssr_confidence", w, h, 1, half ? Format::R16Float : Format::R32Float});
     plan.images.push_back(
         {"sssr_blue_noise", GLINT_SSSR_BLUE_NOISE_SIZE, GLINT_SSSR_BLUE_NOISE_SIZE, 1, Format::RG32Float});
     if (desc.debugOutput) plan.images.push_back({"sssr_ray_info", w, h, 1, Format::RGBA32Float});

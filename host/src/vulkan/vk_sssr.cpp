@@ -119,8 +119,8 @@ Result dispatchSssr(SssrEffect& effect, Executor& executor, VkCommandBuffer cmd,
     SssrDesc desc = frame;
     desc.compositeReflection = effect.desc.compositeReflection;
     if (!sameResources(desc, effect.desc))
-        return fail(error,
-                    "size, depth convention, thicknessAware, debugOutput and composite are fixed at create");
+        return fail(error, "size, depth convention, thicknessAware, debugOutput, halfPrecisionStorage and "
+                           "composite are fixed at create");
     const std::pair<const char*, const Image*> required[] = {
         {"depth", inputs.depth}, {"normals", inputs.normals}, {"material", inputs.material},
         {"color", inputs.color}, {"motion", inputs.motion},   {"environment", inputs.environment}};

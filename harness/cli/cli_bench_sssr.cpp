@@ -1,0 +1,165 @@
+// glint bench sssr: the reflections effect on a simulated scene (default: the glossy room)
+// at the requested size, per-pass GPU times with the traced-pixel fraction next to them.
+// Settings come from --set name=value, so the same runs can sweep options.
+#include "cli_bench_sssr.h"
+
+#include "replay/replay_sssr.h"
+#include "scene/scene_file.h"
+#include "scene/scene_simulate.h"
+
+#include <gpu/gpu_sssr_runner.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <stdexcept>
+
+namespace glint::cli {
+namespace {
+
+float parseFloat(const std::string& name, const std::string& value) {
+    try {
+        std::size_t used = 0;
+        const float parsed = std::stof(value, &used);
+        if (used == value.size()) return parsed;
+    } catch (const std::exception&) {
+    }
+    throw std::invalid_argument("bench: --set " + name + " needs a number, got '" + value + "'");
+}
+
+bool parseBool(const std::string& name, const std::string& value) {
+    if (value == "1" || value == "true" || value == "on") return true;
+    if (value == "0" || value == "false" || value == "off") return false;
+    throw std::invalid_argument("bench: --set " + name + " needs true or false, got '" + value + "'");
+}
+
+std::uint32_t parseUint(const std::string& name, const std::string& value) {
+    const float parsed = parseFloat(name, value);
+    if (parsed < 0.0f || parsed != static_cast<float>(static_cast<std::uint32_t>(parsed)))
+        throw std::invalid_argument("bench: --set " + name + " needs a whole number, got '" + value + "'");
+    return static_cast<std::uint32_t>(parsed);
+}
+
+// With debugOutput: how the traced rays ended and how many iterations they took.
+void printRayClasses(const gpu::SssrFrameOutputs& out) {
+    static const char* const kNames[] = {"hit",    "escaped",  "budget",    "occupancy",
+                                         "behind", "rejected", "degenerate"};
+    std::size_t classes[7] = {};
+    std::vector<double> iterations;
+    for (std::uint32_t entry : out.rayList) {
+        const std::size_t x = entry & 0x7FFFu, y = (entry >> 15) & 0x3FFFu;
+        const float* info = &out.rayInfo[4 * (y * out.width + x)];
+        const auto rayClass = static_cast<std::size_t>(info[2]);
+        if (rayClass < 7) ++classes[rayClass];
+        iterations.push_back(static_cast<double>(info[3]));
+    }
+    std::sort(iterations.begin(), iterations.end());
+    std::printf("ray classes:");
+    for (std::size_t c = 0; c < 7; ++c)
+        std::printf(" %s %.1f %%", kNames[c],
+                    100.0 * static_cast<double>(classes[c]) /
+                        static_cast<double>(std::max<std::size_t>(1, iterations.size())));
+    if (!iterations.empty())
+        std::printf("\niterations: median %.0f, p90 %.0f, p99 %.0f, max %.0f\n",
+                    iterations[iterations.size() / 2], iterations[iterations.size() * 9 / 10],
+                    iterations[iterations.size() * 99 / 100], iterations.back());
+}
+
+} // namespace
+
+void applySssrSetting(SssrDesc& desc, const std::string& assignment) {
+    const std::size_t equals = assignment.find('=');
+    if (equals == std::string::npos)
+        throw std::invalid_argument("bench: --set wants name=value, got '" + assignment + "'");
+    const std::string name = assignment.substr(0, equals), value = assignment.substr(equals + 1);
+    if (name == "samplesPerQuad")
+        desc.samplesPerQuad = parseUint(name, value);
+    else if (name == "maxTraversalIterations")
+        desc.maxTraversalIterations = parseUint(name, value);
+    else if (name == "mostDetailedMip")
+        desc.mostDetailedMip = parseUint(name, value);
+    else if (name == "roughnessThreshold")
+        desc.roughnessThreshold = parseFloat(name, value);
+    else if (name == "occupancyExitFraction")
+        desc.occupancyExitFraction = parseFloat(name, value);
+    else if (name == "importanceSampleBias")
+        desc.importanceSampleBias = parseFloat(name, value);
+    else if (name == "thickness")
+        desc.thickness = parseFloat(name, value);
+    else if (name == "thicknessAware")
+        desc.thicknessAware = parseBool(name, value);
+    else if (name == "halfResolution")
+        desc.halfResolution = parseBool(name, value);
+    else if (name == "previousFrameColor")
+        desc.previousFrameColor = parseBool(name, value);
+    else if (name == "halfPrecisionStorage")
+        desc.halfPrecisionStorage = parseBool(name, value);
+    else if (name == "debugOutput")
+        desc.debugOutput = parseBool(name, value);
+    else
+        throw std::invalid_argument(
+            "bench: unknown setting '" + name +
+            "' (samplesPerQuad, maxTraversalIterations, mostDetailedMip, roughnessThreshold, "
+            "occupancyExitFraction, importanceSampleBias, thickness, thicknessAware, "
+            "halfResolution, previousFrameColor, debugOutput, halfPrecisionStorage)");
+}
+
+int runBenchSssr(const BenchOptions& options, const gpu::Context& context) {
+    scene::Scene scene =
+        scene::loadScene(options.scene.empty() ? "harness/scenes/glossy_room.toml" : options.scene);
+    if (!scene::needsReflections(scene))
+        throw std::invalid_argument("bench: scene '" + scene.file.string() + "' declares no reflections");
+    scene.width = options.width;
+    scene.height = options.height;
+    scene.frameCount = 1;
+    scene.reference = {}; // no references: only the inputs are needed
+    const scene::Simulation simulation = scene::simulate(context, scene);
+
+    SssrDesc desc;
+    gpu::SssrFrameInputs inputs;
+    replay::sssrFromFrame(simulation.frames.at(0), simulation.environment.value(), desc, inputs);
+    for (const std::string& setting : options.settings) applySssrSetting(desc, setting);
+    if (desc.materialChannel != 0)
+        throw std::invalid_argument("bench: roughness must come from material channel 0");
+    gpu::SssrRunner runner(context, desc, /*compactInputs=*/true);
+    runner.upload(inputs);
+    const std::vector<std::string> passes = runner.passNames(desc);
+    std::vector<std::vector<double>> times(passes.size());
+    for (std::uint32_t run = 0; run < std::min(options.runs, 10u) + options.runs; ++run) {
+        desc.frameIndex = run;
+        std::vector<double> timing;
+        runner.run(desc, &timing);
+        if (run < std::min(options.runs, 10u)) continue; // warm-up
+        for (std::size_t pass = 0; pass < std::min(timing.size(), passes.size()); ++pass)
+            times[pass].push_back(timing[pass]);
+    }
+    const gpu::SssrFrameOutputs out = runner.readback();
+    const double pixels = static_cast<double>(options.width) * options.height;
+
+    std::printf("device: %s, driver %s %s, subgroup %u\n", context.info.name.c_str(),
+                context.info.driverName.c_str(), context.info.driverInfo.c_str(),
+                context.device.subgroupSize);
+    std::printf("effect sssr on %s at %ux%u, %u runs\n", scene.file.filename().string().c_str(),
+                options.width, options.height, options.runs);
+    for (const std::string& setting : options.settings) std::printf("  set %s\n", setting.c_str());
+    std::printf("inputs: R32F depth, RGBA16F normals and colour, R16F roughness, RG16F motion\n");
+    std::printf("traced pixels %.1f %% (%u rays), tiles with glossy pixels %u\n",
+                100.0 * out.counters[1] / pixels, out.counters[1], out.counters[3]);
+    if (!out.rayInfo.empty()) printRayClasses(out);
+    double total = 0.0;
+    for (std::size_t pass = 0; pass < passes.size(); ++pass) {
+        std::vector<double>& values = times[pass];
+        if (values.empty()) {
+            std::printf("  %-20s no timestamps on this queue\n", passes[pass].c_str());
+            continue;
+        }
+        std::sort(values.begin(), values.end());
+        const double median = values[values.size() / 2];
+        total += median;
+        std::printf("  %-20s median %9.2f us   min %9.2f us   p90 %9.2f us\n", passes[pass].c_str(),
+                    1000.0 * median, 1000.0 * values.front(), 1000.0 * values[values.size() * 9 / 10]);
+    }
+    std::printf("  %-20s %9.2f us (sum of the medians)\n", "all passes", 1000.0 * total);
+    return kExitOk;
+}
+
+} // namespace glint::cli

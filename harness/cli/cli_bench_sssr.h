@@ -1,0 +1,19 @@
+// glint bench sssr (cli_bench_sssr.cpp).
+#pragma once
+
+#include "cli_commands.h"
+
+#include "glint/glint_sssr.h"
+
+#include <gpu/gpu_context.h>
+
+#include <string>
+
+namespace glint::cli {
+
+// Applies one "name=value" setting to the desc; throws std::invalid_argument naming it.
+void applySssrSetting(SssrDesc& desc, const std::string& assignment);
+
+int runBenchSssr(const BenchOptions& options, const gpu::Context& context);
+
+} // namespace glint::cli
