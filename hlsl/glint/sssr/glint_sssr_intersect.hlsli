@@ -92,8 +92,9 @@ struct GLINT_SSSR_TraversalState
 // (docs/depth_pyramid.md), so that level 0 and the coarse levels stay conservative together.
 float GLINT_SSSR_TraversalDepth(GLINT_SssrConstants c, int2 texel, int mip)
 {
-    int2 levelSize = int2((c.inputSize + (1u << uint(mip)) - 1u) >> uint(mip));
-    float depth = GLINT_SSSR_LoadDepth(clamp(texel, int2(0, 0), levelSize - 1), mip);
+    // The last texel of level k is (size - 1) >> k (levels are ceil-halved).
+    int2 lastTexel = int2((c.inputSize - 1u) >> uint(mip));
+    float depth = GLINT_SSSR_LoadDepth(clamp(texel, int2(0, 0), lastTexel), mip);
     if (!GLINT_IsFinite(depth))
         return GLINT_SSSR_FarDepth(GLINT_SSSR_Reversed(c));
     return depth < 1.17549435e-38 ? 0.0 : min(depth, 1.0);
@@ -103,10 +104,7 @@ float GLINT_SSSR_FarthestDepth(GLINT_SssrConstants c, int2 texel, int mip)
 {
 #if GLINT_SSSR_THICKNESS_AWARE
     if (mip > 0)
-    {
-        int2 levelSize = int2((c.inputSize + (1u << uint(mip)) - 1u) >> uint(mip));
-        return GLINT_SSSR_LoadFarthestDepth(clamp(texel, int2(0, 0), levelSize - 1), mip);
-    }
+        return GLINT_SSSR_LoadFarthestDepth(clamp(texel, int2(0, 0), int2((c.inputSize - 1u) >> uint(mip))), mip);
 #endif
     return GLINT_SSSR_TraversalDepth(c, texel, mip);
 }
