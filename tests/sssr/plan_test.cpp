@@ -32,11 +32,10 @@ TEST_CASE("the plan runs the pyramid, classification, blue noise, arguments and 
     REQUIRE(planSssr(validDesc(), plan, nullptr) == Result::Ok);
     std::vector<std::string> names;
     for (const Pass& pass : plan.passes) names.push_back(pass.name);
-    REQUIRE(names.size() == 5);
+    REQUIRE(names.size() == 4);
     CHECK(names[1] == "classify");
-    CHECK(names[2] == "blue_noise");
-    CHECK(names[3] == "indirect_args");
-    CHECK(names[4] == "intersect");
+    CHECK(names[2] == "blue_noise_args");
+    CHECK(names[3] == "intersect");
     const auto& classify = std::get<DirectDispatch>(findPass(plan, "classify")->dispatch);
     CHECK(classify.groupsX == 240);
     CHECK(classify.groupsY == 135);

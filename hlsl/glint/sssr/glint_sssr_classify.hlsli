@@ -116,13 +116,17 @@ void GLINT_SSSR_Classify(GLINT_SssrConstants c, uint2 groupId, uint2 local)
     if (inImage)
     {
         depth = GLINT_SSSR_LoadDepth(ipixel, 0);
-        normal = GLINT_SSSR_UnpackNormal(c, GLINT_SSSR_LoadNormal(ipixel));
-        float4 material = GLINT_SSSR_LoadMaterial(ipixel);
-        uint channel = min(c.materialChannel, 3u);
-        float raw = channel == 0 ? material.x : channel == 1 ? material.y : channel == 2 ? material.z : material.w;
-        alpha = GLINT_SSSR_AlphaFromMaterial(c, raw);
+        // Background pixels read nothing else (sky-heavy frames cost little) and store alpha 1.
+        if (!GLINT_SSSR_IsBackground(depth, GLINT_SSSR_Reversed(c)))
+        {
+            normal = GLINT_SSSR_UnpackNormal(c, GLINT_SSSR_LoadNormal(ipixel));
+            float4 material = GLINT_SSSR_LoadMaterial(ipixel);
+            uint channel = min(c.materialChannel, 3u);
+            float raw = channel == 0 ? material.x : channel == 1 ? material.y : channel == 2 ? material.z : material.w;
+            alpha = GLINT_SSSR_AlphaFromMaterial(c, raw);
+            reflective = dot(normal, normal) > 0.0;
+        }
         GLINT_SSSR_StoreRoughness(ipixel, alpha);
-        reflective = !GLINT_SSSR_IsBackground(depth, GLINT_SSSR_Reversed(c)) && dot(normal, normal) > 0.0;
         glossy = reflective && alpha < c.roughnessThreshold;
         mirror = glossy && alpha < c.mirrorThreshold;
     }

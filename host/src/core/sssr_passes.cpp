@@ -132,18 +132,13 @@ Pass classifyPass(const SssrDesc& desc, const std::vector<std::byte>& constants)
     return pass;
 }
 
+// Blue noise and the indirect arguments share one dispatch (see the entry file).
 Pass blueNoisePass(const std::vector<std::byte>& constants) {
-    Pass pass = sssrPass("blue_noise", "sssr_blue_noise", 8, 8, constants);
+    Pass pass = sssrPass("blue_noise_args", "sssr_blue_noise", 8, 8, constants);
     pass.dispatch = DirectDispatch{GLINT_SSSR_BLUE_NOISE_SIZE / 8, GLINT_SSSR_BLUE_NOISE_SIZE / 8, 1};
     pass.uses = {{"g_glint_blue_noise_source", "sssr_blue_noise_source", Access::Read},
-                 {"g_glint_blue_noise", "sssr_blue_noise", Access::Write}};
-    return pass;
-}
-
-Pass argumentsPass() {
-    Pass pass = sssrPass("indirect_args", "sssr_indirect_args", 1, 1, {});
-    pass.dispatch = DirectDispatch{1, 1, 1};
-    pass.uses = {{"g_glint_counters", "sssr_counters", Access::ReadWrite},
+                 {"g_glint_blue_noise", "sssr_blue_noise", Access::Write},
+                 {"g_glint_counters", "sssr_counters", Access::ReadWrite},
                  {"g_glint_arguments", "sssr_indirect_args", Access::Write}};
     return pass;
 }
@@ -226,7 +221,6 @@ Result planSssr(const SssrDesc& desc, EffectPlan& plan, std::string* error) {
 
     plan.passes.push_back(classifyPass(desc, constants));
     plan.passes.push_back(blueNoisePass(constants));
-    plan.passes.push_back(argumentsPass());
     plan.passes.push_back(intersectPass(desc, constants));
     if (desc.composite) {
         plan.images.push_back({"composite", w, h, 1, Format::RGBA32Float});
