@@ -103,15 +103,22 @@ void SssrRunner::upload(const SssrFrameInputs& inputs) {
     }
 }
 
-std::vector<std::string> SssrRunner::passNames(const SssrDesc& frame) const {
+std::vector<std::string> SssrRunner::passNames(const SssrDesc& frame, bool denoised) const {
     EffectPlan plan;
     std::vector<std::string> names;
     if (planSssr(frame, plan, nullptr) == Result::Ok)
         for (const Pass& pass : plan.passes) names.push_back(pass.name);
+    if (denoised)
+        for (const char* name : {"reproject", "prefilter", "resolve"}) names.push_back(name);
     return names;
 }
 
-void SssrRunner::run(const SssrDesc& frame, std::vector<double>* timings) {
+const vk::Image& SssrRunner::ownedImage(const std::string& name) const {
+    return effect_.images.at(name);
+}
+
+void SssrRunner::run(const SssrDesc& frame, std::vector<double>* timings,
+                     const ReflectionsDenoiserDesc* denoiser) {
     if (images_.empty() || images_[kEnvironment].image == VK_NULL_HANDLE)
         throw std::runtime_error("sssr runner: upload the inputs (with an environment) before running");
     vk::SssrInputs inputs;
@@ -122,7 +129,7 @@ void SssrRunner::run(const SssrDesc& frame, std::vector<double>* timings) {
     inputs.motion = &images_[kMotion];
     inputs.baseColorMetallic = &images_[kBaseColor];
     inputs.environment = &images_[kEnvironment];
-    const std::size_t passCount = passNames(frame).size();
+    const std::size_t passCount = passNames(frame, denoiser != nullptr).size();
     const bool timed = timings != nullptr && context_.device.timestamps;
     TimestampPool pool;
     if (timed) pool = createTimestampPool(context_.device, static_cast<std::uint32_t>(2 * passCount));
@@ -140,7 +147,7 @@ void SssrRunner::run(const SssrDesc& frame, std::vector<double>* timings) {
     Result result = Result::Ok;
     submitAndWait(context_, [&](VkCommandBuffer cmd) {
         if (timed) resetTimestamps(cmd, pool);
-        result = vk::dispatchSssr(effect_, executor_, cmd, frame, inputs, hooks, &error);
+        result = vk::dispatchSssr(effect_, executor_, cmd, frame, inputs, hooks, &error, denoiser);
     });
     if (timed) {
         const std::vector<uint64_t> ticks = readTimestamps(context_.device, pool);

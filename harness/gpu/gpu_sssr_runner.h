@@ -53,9 +53,14 @@ class SssrRunner {
     // Uploads the inputs that are non-empty (the environment's mips included) and keeps them.
     void upload(const SssrFrameInputs& inputs);
     // Records and submits one frame; with `timings`, per-pass GPU times (ms) in plan order.
-    void run(const SssrDesc& frame, std::vector<double>* timings = nullptr);
+    // With `denoiser` (the runner's desc has denoise), the reflections denoiser runs too and
+    // readback().radiance is its output.
+    void run(const SssrDesc& frame, std::vector<double>* timings = nullptr,
+             const ReflectionsDenoiserDesc* denoiser = nullptr);
     SssrFrameOutputs readback() const;
-    std::vector<std::string> passNames(const SssrDesc& frame) const;
+    std::vector<std::string> passNames(const SssrDesc& frame, bool denoised = false) const;
+    // An owned image by name (e.g. "rd_radiance0"), for tests that poison histories.
+    const vk::Image& ownedImage(const std::string& name) const;
 
   private:
     const Context& context_;

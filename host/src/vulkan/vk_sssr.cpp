@@ -22,7 +22,8 @@ Result fail(std::string* error, const std::string& message) {
 bool sameResources(const SssrDesc& a, const SssrDesc& b) {
     return a.size.width == b.size.width && a.size.height == b.size.height &&
            a.thicknessAware == b.thicknessAware && a.debugOutput == b.debugOutput &&
-           a.composite == b.composite && a.depth == b.depth;
+           a.composite == b.composite && a.depth == b.depth &&
+           a.halfPrecisionStorage == b.halfPrecisionStorage && a.denoise == b.denoise;
 }
 
 // Every owned image to GENERAL (contents zeroed), counters zeroed, tables copied in.
@@ -85,6 +86,16 @@ Result createSssr(const Device& device, const SssrDesc& desc, SssrEffect& effect
     effect.device = &device;
     effect.desc = planned;
     try {
+        if (planned.denoise) { // the denoiser's resources, allocated now like every other
+            ReflectionsDenoiserDesc denoiser;
+            denoiser.size = planned.size;
+            EffectPlan denoiserPlan;
+            if (const Result result = planReflectionsDenoiser(denoiser, denoiserPlan, error);
+                result != Result::Ok)
+                return result;
+            plan.images.insert(plan.images.end(), denoiserPlan.images.begin(), denoiserPlan.images.end());
+            plan.buffers.insert(plan.buffers.end(), denoiserPlan.buffers.begin(), denoiserPlan.buffers.end());
+        }
         for (const ImageDesc& image : plan.images)
             effect.images[image.name] =
                 createImage2D(device, image.width, image.height, toVkFormat(image.format), image.mipLevels);
@@ -114,13 +125,14 @@ Result createSssr(const Device& device, const SssrDesc& desc, SssrEffect& effect
 }
 
 Result dispatchSssr(SssrEffect& effect, Executor& executor, VkCommandBuffer cmd, const SssrDesc& frame,
-                    const SssrInputs& inputs, const PassHooks& hooks, std::string* error) {
+                    const SssrInputs& inputs, const PassHooks& hooks, std::string* error,
+                    const ReflectionsDenoiserDesc* denoiser) {
     if (!effect.device) return fail(error, "the effect was not created");
     SssrDesc desc = frame;
     desc.compositeReflection = effect.desc.compositeReflection;
     if (!sameResources(desc, effect.desc))
         return fail(error, "size, depth convention, thicknessAware, debugOutput, halfPrecisionStorage and "
-                           "composite are fixed at create");
+                           "composite and denoise are fixed at create");
     const std::pair<const char*, const Image*> required[] = {
         {"depth", inputs.depth}, {"normals", inputs.normals}, {"material", inputs.material},
         {"color", inputs.color}, {"motion", inputs.motion},   {"environment", inputs.environment}};
@@ -144,10 +156,24 @@ Result dispatchSssr(SssrEffect& effect, Executor& executor, VkCommandBuffer cmd,
     for (const auto& [name, image] : effect.images) table.images[name] = &image;
     for (const auto& [name, buffer] : effect.buffers) table.buffers[name] = &buffer;
     table.images["sssr_variance_history"] =
-        inputs.varianceHistory ? inputs.varianceHistory : &effect.images.at(kZeroVariance);
+        inputs.varianceHistory ? inputs.varianceHistory
+        : desc.denoise         ? &effect.images.at(reflectionsDenoiserVariance(desc.frameIndex + 1))
+                               : &effect.images.at(kZeroVariance);
 
     EffectPlan plan;
     if (const Result result = planSssr(desc, plan, error); result != Result::Ok) return result;
+    if (denoiser) {
+        if (!desc.denoise) return fail(error, "the effect was created without denoise");
+        if (denoiser->size.width != desc.size.width || denoiser->size.height != desc.size.height)
+            return fail(error, "the denoiser's size differs from the effect's");
+        EffectPlan denoiserPlan;
+        if (const Result result = planReflectionsDenoiser(*denoiser, denoiserPlan, error);
+            result != Result::Ok)
+            return result;
+        plan.passes.insert(plan.passes.end(), denoiserPlan.passes.begin(), denoiserPlan.passes.end());
+        plan.images.insert(plan.images.end(), denoiserPlan.images.begin(), denoiserPlan.images.end());
+        plan.buffers.insert(plan.buffers.end(), denoiserPlan.buffers.begin(), denoiserPlan.buffers.end());
+    }
     if (!effect.initialized) {
         recordInitialization(effect, cmd);
         effect.initialized = true;

@@ -5,6 +5,7 @@
 // zeroed counters, table uploads) ahead of the passes, so create needs no queue.
 #pragma once
 
+#include "glint/glint_reflections_denoiser.h"
 #include "glint/glint_sssr.h"
 #include "vulkan/vk_executor.h"
 
@@ -38,11 +39,14 @@ struct SssrEffect {
 Result createSssr(const Device& device, const SssrDesc& desc, SssrEffect& effect, std::string* error);
 
 // Records one frame. `frame` may change per frame everything but the size and the options
-// that change resources (thicknessAware, debugOutput, composite); frameIndex, camera and
-// thresholds are read from it. A plan that does not match its shaders (a bug, not an input
-// error) returns Unsupported with the executor's message.
+// that change resources (thicknessAware, debugOutput, halfPrecisionStorage, composite,
+// denoise); frameIndex, camera and thresholds are read from it. With `denoiser` (the effect
+// created with denoise), the reflections denoiser runs after the intersection and overwrites
+// "sssr_radiance" with the denoised result; its variance is next frame's TVGT history. A plan that does not
+// match its shaders (a bug, not an input error) returns Unsupported with the executor's message.
 Result dispatchSssr(SssrEffect& effect, Executor& executor, VkCommandBuffer cmd, const SssrDesc& frame,
-                    const SssrInputs& inputs, const PassHooks& hooks, std::string* error);
+                    const SssrInputs& inputs, const PassHooks& hooks, std::string* error,
+                    const ReflectionsDenoiserDesc* denoiser = nullptr);
 
 void destroySssr(SssrEffect& effect);
 

@@ -1,0 +1,39 @@
+// Entry for the reflections denoiser's reproject pass: bindings, callbacks, main
+// (glint/reflections_denoiser/glint_reflections_denoiser_reproject.hlsli).
+#include "entry/reflections_denoiser/rd_common.hlsli"
+#include "glint/reflections_denoiser/glint_reflections_denoiser_reproject.hlsli"
+
+[[vk::binding(5, 0)]] Texture2D<float4> g_glint_noisy;
+[[vk::binding(6, 0)]] Texture2D<float2> g_glint_motion;
+[[vk::binding(7, 0)]] StructuredBuffer<uint> g_glint_history_tile_mask;
+[[vk::binding(8, 0)]] Texture2D<float4> g_glint_history_guides;
+[[vk::binding(9, 0)]] Texture2D<float4> g_glint_history_radiance;
+[[vk::binding(10, 0)]] Texture2D<float> g_glint_history_variance;
+[[vk::binding(11, 0)]] Texture2D<float> g_glint_history_length;
+[[vk::binding(12, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_clamped;
+[[vk::binding(13, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_reprojected;
+[[vk::binding(14, 0)]] GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float> g_glint_variance;
+[[vk::binding(15, 0)]] GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float> g_glint_length;
+[[vk::binding(16, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_guides;
+[[vk::binding(17, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_average;
+[[vk::binding(18, 0)]] RWStructuredBuffer<uint> g_glint_tile_mask;
+
+float4 GLINT_RD_LoadNoisy(int2 pixel) { return g_glint_noisy.Load(int3(pixel, 0)); }
+float2 GLINT_RD_LoadMotion(int2 pixel) { return g_glint_motion.Load(int3(pixel, 0)); }
+bool GLINT_RD_HistoryTileListed(uint2 tile) { return g_glint_history_tile_mask[tile.y * g_glint_rd.tiles.x + tile.x] != 0; }
+float4 GLINT_RD_LoadHistoryGuides(int2 pixel) { return g_glint_history_guides.Load(int3(pixel, 0)); }
+float3 GLINT_RD_LoadHistoryRadiance(int2 pixel) { return g_glint_history_radiance.Load(int3(pixel, 0)).rgb; }
+float GLINT_RD_LoadHistoryVariance(int2 pixel) { return g_glint_history_variance.Load(int3(pixel, 0)); }
+float GLINT_RD_LoadHistoryLength(int2 pixel) { return g_glint_history_length.Load(int3(pixel, 0)); }
+void GLINT_RD_StoreClamped(int2 pixel, float4 value) { g_glint_clamped[pixel] = value; }
+void GLINT_RD_StoreReprojected(int2 pixel, float4 value) { g_glint_reprojected[pixel] = value; }
+void GLINT_RD_StoreVariance(int2 pixel, float value) { g_glint_variance[pixel] = value; }
+void GLINT_RD_StoreHistoryLength(int2 pixel, float value) { g_glint_length[pixel] = value; }
+void GLINT_RD_StoreGuides(int2 pixel, float4 value) { g_glint_guides[pixel] = value; }
+void GLINT_RD_StoreAverage(uint2 tile, float4 value) { g_glint_average[tile] = value; }
+void GLINT_RD_MarkTile(uint2 tile) { g_glint_tile_mask[tile.y * g_glint_rd.tiles.x + tile.x] = 1u; }
+
+[numthreads(8, 8, 1)] void main(uint3 groupId : SV_GroupID, uint3 groupThreadId : SV_GroupThreadID)
+{
+    GLINT_RD_Reproject(g_glint_rd, groupId.x, groupThreadId.xy);
+}

@@ -1,0 +1,25 @@
+// Entry for the reflections denoiser's temporal resolve
+// (glint/reflections_denoiser/glint_reflections_denoiser_resolve.hlsli).
+#include "entry/reflections_denoiser/rd_common.hlsli"
+#include "entry/reflections_denoiser/rd_average.hlsli"
+#include "glint/reflections_denoiser/glint_reflections_denoiser_resolve.hlsli"
+
+[[vk::binding(7, 0)]] Texture2D<float4> g_glint_prefiltered;
+[[vk::binding(8, 0)]] Texture2D<float4> g_glint_reprojected;
+[[vk::binding(9, 0)]] Texture2D<float> g_glint_length;
+[[vk::binding(10, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_output;
+[[vk::binding(11, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_radiance_history;
+[[vk::binding(12, 0)]] GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float> g_glint_variance;
+
+float4 GLINT_RD_LoadPrefiltered(int2 pixel) { return g_glint_prefiltered.Load(int3(pixel, 0)); }
+float4 GLINT_RD_LoadReprojected(int2 pixel) { return g_glint_reprojected.Load(int3(pixel, 0)); }
+float GLINT_RD_LoadLength(int2 pixel) { return g_glint_length.Load(int3(pixel, 0)); }
+float4 GLINT_RD_LoadNoisy(int2 pixel) { return g_glint_output[pixel]; }
+void GLINT_RD_StoreOutput(int2 pixel, float4 value) { g_glint_output[pixel] = value; }
+void GLINT_RD_StoreRadianceHistory(int2 pixel, float3 value) { g_glint_radiance_history[pixel] = float4(value, 1.0); }
+void GLINT_RD_StoreVariance(int2 pixel, float value) { g_glint_variance[pixel] = value; }
+
+[numthreads(8, 8, 1)] void main(uint3 groupId : SV_GroupID, uint3 groupThreadId : SV_GroupThreadID)
+{
+    GLINT_RD_Resolve(g_glint_rd, groupId.x, groupThreadId.xy);
+}

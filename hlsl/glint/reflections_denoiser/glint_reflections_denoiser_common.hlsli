@@ -1,0 +1,173 @@
+// glint reflections denoiser: helpers shared by reproject, prefilter and resolve
+// (docs/reflections_denoiser.md). Defines no resources; the callbacks below are declared here
+// and defined by the entry files.
+//
+//   uint   GLINT_RD_LoadTile(uint index);          SSSR's tile list: the tile's top-left pixel, x | y << 16
+//   float  GLINT_RD_LoadDepth(int2 pixel);         device depth of an in-image pixel
+//   float3 GLINT_RD_LoadNormal(int2 pixel);        stored normal (unpacked with normalUnpack)
+//   float  GLINT_RD_LoadRoughness(int2 pixel);     GGX alpha (SSSR's "sssr_roughness")
+#ifndef GLINT_REFLECTIONS_DENOISER_COMMON_HLSLI
+#define GLINT_REFLECTIONS_DENOISER_COMMON_HLSLI
+
+#include "glint/common/glint_math.hlsli"
+#include "glint/reflections_denoiser/glint_reflections_denoiser_constants.h"
+
+uint GLINT_RD_LoadTile(uint index);
+float GLINT_RD_LoadDepth(int2 pixel);
+float3 GLINT_RD_LoadNormal(int2 pixel);
+float GLINT_RD_LoadRoughness(int2 pixel);
+
+// The pixel's surface as the denoiser sees it: a glossy pixel has a finite depth inside the
+// depth range, a usable normal and alpha below the threshold. Only glossy pixels are ever
+// used as neighbours, so pixels of tiles nobody listed (which hold stale data) are never read
+// as if they were valid (reference defects 6 and 9).
+struct GLINT_RD_Surface
+{
+    float3 normal;    // unit, world space
+    float viewDepth;  // > 0
+    float alpha;
+    bool glossy;
+};
+
+float GLINT_RD_Luma(float3 c)
+{
+    return dot(c, float3(0.2126, 0.7152, 0.0722));
+}
+
+float3 GLINT_RD_Finite3(float3 v)
+{
+    return float3(GLINT_FiniteOr(v.x, 0.0), GLINT_FiniteOr(v.y, 0.0), GLINT_FiniteOr(v.z, 0.0));
+}
+
+// Finite, non-negative and within the fp16 range: what every pass stores.
+float3 GLINT_RD_SanitizeRadiance(float3 v)
+{
+    return clamp(GLINT_RD_Finite3(v), 0.0, 65504.0);
+}
+
+float GLINT_RD_ViewDepth(GLINT_ReflectionsDenoiserConstants c, float depth)
+{
+    return c.viewDepth.x / (c.viewDepth.y + c.viewDepth.z * depth);
+}
+
+GLINT_RD_Surface GLINT_RD_LoadSurface(GLINT_ReflectionsDenoiserConstants c, int2 pixel)
+{
+    GLINT_RD_Surface s;
+    float depth = GLINT_RD_LoadDepth(pixel);
+    float3 n = GLINT_RD_LoadNormal(pixel) * c.normalUnpack.x + c.normalUnpack.y;
+    float lengthSquared = dot(n, n);
+    s.alpha = GLINT_FiniteOr(GLINT_RD_LoadRoughness(pixel), 1.0);
+    bool reversed = (c.flags & GLINT_RD_FLAG_REVERSED_DEPTH) != 0;
+    bool background = !GLINT_IsFinite(depth) || (reversed ? (depth <= 1e-6 || depth > 1.0) : (depth >= 1.0 - 1e-6 || depth < 0.0));
+    bool normalOk = GLINT_IsFinite(lengthSquared) && lengthSquared > 1e-12;
+    s.normal = normalOk ? n * rsqrt(lengthSquared) : float3(0.0, 0.0, 1.0);
+    s.viewDepth = background ? 1.0 : GLINT_RD_ViewDepth(c, depth);
+    s.glossy = !background && normalOk && s.alpha < c.roughnessThreshold && s.viewDepth > 0.0 &&
+               GLINT_IsFinite(s.viewDepth);
+    return s;
+}
+
+float4 GLINT_RD_Mul(float4 rows[4], float4 p)
+{
+    return float4(dot(rows[0], p), dot(rows[1], p), dot(rows[2], p), dot(rows[3], p));
+}
+
+// This frame's view-space position of pixel uv at device depth d.
+float3 GLINT_RD_ViewPosition(GLINT_ReflectionsDenoiserConstants c, float2 uv, float depth)
+{
+    float4 q = GLINT_RD_Mul(c.viewFromClip, float4(2.0 * uv.x - 1.0, c.ndcYSign * (2.0 * uv.y - 1.0), depth, 1.0));
+    return q.xyz / q.w;
+}
+
+// Last frame's uv of a view-space point of this frame, and its view depth there (clip w).
+float2 GLINT_RD_PreviousUv(GLINT_ReflectionsDenoiserConstants c, float3 viewPosition, out float previousViewDepth)
+{
+    float4 clip = GLINT_RD_Mul(c.previousClipFromView, float4(viewPosition, 1.0));
+    previousViewDepth = clip.w;
+    float2 ndc = clip.xy / clip.w;
+    return float2(0.5 * ndc.x + 0.5, 0.5 * c.ndcYSign * ndc.y + 0.5);
+}
+
+// The tile's 16x16 span (tile plus a 4-pixel apron) starts here; span texels outside the
+// image are clamped to its edge.
+int2 GLINT_RD_SpanPixel(GLINT_ReflectionsDenoiserConstants c, uint2 tileOrigin, uint spanIndex)
+{
+    int2 offset = int2(spanIndex % GLINT_RD_SPAN, spanIndex / GLINT_RD_SPAN) - GLINT_RD_APRON;
+    return clamp(int2(tileOrigin) + offset, int2(0, 0), int2(c.inputSize) - 1);
+}
+
+// Gaussian weights of the 9x9 neighbourhood statistics, exp(-3 i^2 / 25) for i in [-4, 4].
+float GLINT_RD_GaussianWeight(int i)
+{
+    return exp(-3.0 * float(i * i) / 25.0);
+}
+
+// Clip x toward the box centre m with half-extent e (Playdead): the point where the segment
+// from m to x leaves the box, or x inside it.
+float3 GLINT_RD_ClipToBox(float3 x, float3 m, float3 e)
+{
+    float3 v = x - m;
+    float3 a = abs(v / (e + 0.001));
+    float u = max(a.x, max(a.y, a.z));
+    return u > 1.0 ? m + v / u : x;
+}
+
+// The history length a pixel can use: near-mirrors keep 8 frames, alpha >~ 0.03 keeps the cap.
+float GLINT_RD_MaxHistoryLength(GLINT_ReflectionsDenoiserConstants c, float alpha)
+{
+    return max(8.0, float(c.maxHistoryLength) * (1.0 - exp(-100.0 * alpha)));
+}
+
+// Octahedral normal encoding for the guide history (conventions.md section 5).
+float2 GLINT_RD_EncodeNormal(float3 n)
+{
+    float2 p = n.xy / (abs(n.x) + abs(n.y) + abs(n.z));
+    if (n.z < 0.0)
+        p = (1.0 - abs(p.yx)) * float2(p.x >= 0.0 ? 1.0 : -1.0, p.y >= 0.0 ? 1.0 : -1.0);
+    return p;
+}
+
+float3 GLINT_RD_DecodeNormal(float2 p)
+{
+    float3 m = float3(p.x, p.y, 1.0 - abs(p.x) - abs(p.y));
+    float t = max(-m.z, 0.0);
+    m.x -= m.x >= 0.0 ? t : -t;
+    m.y -= m.y >= 0.0 ? t : -t;
+    return normalize(m);
+}
+
+#ifdef GLINT_RD_USES_AVERAGE
+// This frame's tile averages (prefilter and resolve, after reproject wrote them):
+//   float4 GLINT_RD_LoadAverage(uint2 tile);   rgb, a = weight sum
+//   bool   GLINT_RD_TileListed(uint2 tile);    this frame's tile mask
+float4 GLINT_RD_LoadAverage(uint2 tile);
+bool GLINT_RD_TileListed(uint2 tile);
+
+// Bilinear average at the pixel over the centres of the surrounding tiles, using only tiles
+// listed this frame (the others hold stale averages: reference defect 6). Tile centres are at
+// 8 i + 4, so the lookup is aligned at every image size (reference defect 3).
+float3 GLINT_RD_AverageAt(GLINT_ReflectionsDenoiserConstants c, uint2 pixel)
+{
+    float2 p = (float2(pixel) + 0.5) / float(GLINT_RD_TILE) - 0.5;
+    float2 base = floor(p);
+    float2 f = p - base;
+    float3 sum = float3(0.0, 0.0, 0.0);
+    float total = 0.0;
+    for (uint tap = 0; tap < 4; ++tap)
+    {
+        int2 offset = int2(tap & 1u, tap >> 1);
+        int2 tile = int2(base) + offset;
+        if (any(tile < 0) || any(tile >= int2(c.tiles)) || !GLINT_RD_TileListed(uint2(tile)))
+            continue;
+        float4 average = GLINT_RD_LoadAverage(uint2(tile));
+        if (!(average.a > 0.0))
+            continue;
+        float w = max((offset.x == 1 ? f.x : 1.0 - f.x) * (offset.y == 1 ? f.y : 1.0 - f.y), 1e-4);
+        sum += w * GLINT_RD_SanitizeRadiance(average.rgb);
+        total += w;
+    }
+    return total > 0.0 ? sum / total : float3(0.0, 0.0, 0.0);
+}
+#endif
+
+#endif // GLINT_REFLECTIONS_DENOISER_COMMON_HLSLI

@@ -1,0 +1,51 @@
+// Constants of the reflections denoiser passes (reproject, prefilter, resolve), compiled by
+// both C++ and HLSL. The host fills them in host/src/core/reflections_denoiser_passes.cpp.
+#ifndef GLINT_REFLECTIONS_DENOISER_CONSTANTS_H
+#define GLINT_REFLECTIONS_DENOISER_CONSTANTS_H
+
+#include "glint/common/glint_shared_types.h"
+
+// Every pass works on the 8x8 tiles SSSR's classification listed, one group per tile, with a
+// 4-pixel apron in groupshared memory (16 x 16 pixels).
+#define GLINT_RD_TILE 8
+#define GLINT_RD_APRON 4
+#define GLINT_RD_SPAN 16
+// The hit distance SSSR writes for misses ("infinite": rotation-only parallax).
+#define GLINT_RD_MISS_DISTANCE 65504.0
+
+#define GLINT_RD_FLAG_REVERSED_DEPTH 1u
+#define GLINT_RD_FLAG_RESET 2u // camera cut, resize or first frame: every history is ignored
+
+#ifdef __cplusplus
+namespace glint::shaders {
+GLINT_SHARED_USING;
+#endif
+
+// Matrices are column-vector (q = M p) and passed as four rows.
+GLINT_CONSTANTS_BEGIN(GLINT_ReflectionsDenoiserConstants)
+    uint2 inputSize;              // W x H
+    float2 inverseInputSize;
+    float4 viewFromClip[4];       // P^-1 of this frame
+    float4 previousClipFromView[4]; // VP_prev V^-1: this frame's view space -> last frame's clip
+    float4 viewDepth;             // (A, B, C, 0): view depth z = A / (B + C d), both frames
+    float2 normalUnpack;          // (mul, add)
+    float ndcYSign;               // y_n = ndcYSign (2 v - 1)
+    uint flags;                   // GLINT_RD_FLAG_*
+    float2 motionScale;           // uv_prev = uv + motionScale * mv
+    uint2 tiles;                  // ceil(W / 8) x ceil(H / 8)
+    float roughnessThreshold;     // alpha: glossy below (the value SSSR classified with)
+    float mirrorThreshold;        // alpha: no spatial filter below
+    float historyClipScale;       // scale of the resolve's clip box (FidelityFX "temporal stability", 0.7)
+    uint maxHistoryLength;        // cap of the per-pixel history length for rough pixels (32)
+GLINT_CONSTANTS_END(GLINT_ReflectionsDenoiserConstants);
+
+#ifdef __cplusplus
+static_assert(sizeof(GLINT_ReflectionsDenoiserConstants) == 208);
+static_assert(offsetof(GLINT_ReflectionsDenoiserConstants, viewFromClip) == 16);
+static_assert(offsetof(GLINT_ReflectionsDenoiserConstants, viewDepth) == 144);
+static_assert(offsetof(GLINT_ReflectionsDenoiserConstants, motionScale) == 176);
+static_assert(offsetof(GLINT_ReflectionsDenoiserConstants, roughnessThreshold) == 192);
+} // namespace glint::shaders
+#endif
+
+#endif // GLINT_REFLECTIONS_DENOISER_CONSTANTS_H

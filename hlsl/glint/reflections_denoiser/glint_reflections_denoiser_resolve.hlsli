@@ -1,0 +1,102 @@
+// glint reflections denoiser, pass 3: temporal resolve (docs/reflections_denoiser.md).
+// Neighbourhood statistics of the prefiltered radiance, history clipping toward them, and a
+// blend by history length. The result is written over SSSR's radiance in place (so that the
+// effect's output is defined in every tile: unlisted tiles keep classification's values) and
+// into this frame's radiance history; the variance feeds next frame and SSSR's TVGT.
+//
+// Integration: the callbacks of glint_reflections_denoiser_common.hlsli (with the average), and
+//
+//   float4 GLINT_RD_LoadPrefiltered(int2 pixel);    rgb, a = variance
+//   float4 GLINT_RD_LoadReprojected(int2 pixel);    history rgb, a = 1 when valid
+//   float  GLINT_RD_LoadLength(int2 pixel);         this frame's history length (reproject)
+//   float4 GLINT_RD_LoadNoisy(int2 pixel);          SSSR radiance (its alpha, the hit distance, is kept)
+//   void   GLINT_RD_StoreOutput(int2 pixel, float4 radianceAndHitDistance);
+//   void   GLINT_RD_StoreRadianceHistory(int2 pixel, float3 radiance);
+//   void   GLINT_RD_StoreVariance(int2 pixel, float variance);
+//
+// Dispatch: [numthreads(8, 8, 1)], indirect (tiles, 1, 1).
+#ifndef GLINT_REFLECTIONS_DENOISER_RESOLVE_HLSLI
+#define GLINT_REFLECTIONS_DENOISER_RESOLVE_HLSLI
+
+#define GLINT_RD_USES_AVERAGE 1
+#include "glint/reflections_denoiser/glint_reflections_denoiser_common.hlsli"
+
+float4 GLINT_RD_LoadPrefiltered(int2 pixel);
+float4 GLINT_RD_LoadReprojected(int2 pixel);
+float GLINT_RD_LoadLength(int2 pixel);
+float4 GLINT_RD_LoadNoisy(int2 pixel);
+void GLINT_RD_StoreOutput(int2 pixel, float4 radianceAndHitDistance);
+void GLINT_RD_StoreRadianceHistory(int2 pixel, float3 radiance);
+void GLINT_RD_StoreVariance(int2 pixel, float variance);
+
+// Prefiltered rgb of the span; a = 1 for glossy pixels, 0 otherwise.
+groupshared float4 g_glint_rd_resolve_radiance[GLINT_RD_SPAN * GLINT_RD_SPAN];
+
+void GLINT_RD_Resolve(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint2 local)
+{
+    uint entry = GLINT_RD_LoadTile(groupId);
+    uint2 tileOrigin = uint2(entry & 0xFFFFu, entry >> 16);
+    uint localIndex = local.y * GLINT_RD_TILE + local.x;
+    for (uint i = localIndex; i < GLINT_RD_SPAN * GLINT_RD_SPAN; i += GLINT_RD_TILE * GLINT_RD_TILE)
+    {
+        int2 pixel = GLINT_RD_SpanPixel(c, tileOrigin, i);
+        GLINT_RD_Surface s = GLINT_RD_LoadSurface(c, pixel);
+        float3 prefiltered = GLINT_RD_SanitizeRadiance(GLINT_RD_LoadPrefiltered(pixel).rgb);
+        g_glint_rd_resolve_radiance[i] = s.glossy ? float4(prefiltered, 1.0) : float4(0.0, 0.0, 0.0, 0.0);
+    }
+    GroupMemoryBarrierWithGroupSync();
+
+    uint2 pixel = tileOrigin + local;
+    if (any(pixel >= c.inputSize))
+        return;
+    int2 ipixel = int2(pixel);
+    uint centre = (local.y + GLINT_RD_APRON) * GLINT_RD_SPAN + local.x + GLINT_RD_APRON;
+    if (g_glint_rd_resolve_radiance[centre].a == 0.0)
+    {
+        // Not glossy: the output keeps classification's value; histories get defined zeros.
+        GLINT_RD_StoreRadianceHistory(ipixel, float3(0.0, 0.0, 0.0));
+        GLINT_RD_StoreVariance(ipixel, 0.0);
+        return;
+    }
+    float3 sum = float3(0.0, 0.0, 0.0);
+    float3 sumSquares = float3(0.0, 0.0, 0.0);
+    float weightSum = 0.0;
+    for (int y = -GLINT_RD_APRON; y <= GLINT_RD_APRON; ++y)
+        for (int x = -GLINT_RD_APRON; x <= GLINT_RD_APRON; ++x)
+        {
+            float4 q = g_glint_rd_resolve_radiance[centre + y * GLINT_RD_SPAN + x];
+            float w = q.a * GLINT_RD_GaussianWeight(x) * GLINT_RD_GaussianWeight(y);
+            sum += w * q.rgb;
+            sumSquares += w * q.rgb * q.rgb;
+            weightSum += w;
+        }
+    float3 mean = sum / weightSum;
+    float3 sigma = sqrt(abs(sumSquares / weightSum - mean * mean));
+    float3 average = GLINT_RD_AverageAt(c, pixel);
+    float4 prefiltered = GLINT_RD_LoadPrefiltered(ipixel);
+    float3 current = GLINT_RD_SanitizeRadiance(prefiltered.rgb);
+    float variance = clamp(GLINT_FiniteOr(prefiltered.a, 1.0), 0.0, 65504.0);
+    float4 reprojected = GLINT_RD_LoadReprojected(ipixel);
+    bool valid = reprojected.a > 0.5;
+    float historyLength = max(GLINT_FiniteOr(GLINT_RD_LoadLength(ipixel), 1.0), 1.0);
+
+    // The clip box: the neighbourhood's spread plus its distance from the tile average, scaled.
+    float3 extent = (sigma + abs(mean - average)) * c.historyClipScale * 1.4;
+    float3 boxCentre = lerp(mean, average, 0.2);
+    float3 history = valid ? GLINT_RD_ClipToBox(GLINT_RD_SanitizeRadiance(reprojected.rgb), boxCentre, extent) : current;
+    current = lerp(current, average, 1.0 / (historyLength + 1.0));
+    current = GLINT_RD_ClipToBox(current, average, extent);
+    float historyWeight = valid ? 1.0 - 1.0 / historyLength : 0.0;
+    float3 result = GLINT_RD_SanitizeRadiance(lerp(current, history, historyWeight));
+    float lumaResult = max(GLINT_RD_Luma(result), 0.001);
+    float lumaHistory = max(GLINT_RD_Luma(history), 0.001);
+    float difference = abs(lumaResult - lumaHistory) / max(max(lumaResult, lumaHistory), 0.5);
+    float resultVariance = lerp(difference * difference, variance, historyWeight);
+
+    float hitDistance = GLINT_RD_LoadNoisy(ipixel).a;
+    GLINT_RD_StoreOutput(ipixel, float4(result, GLINT_FiniteOr(hitDistance, GLINT_RD_MISS_DISTANCE)));
+    GLINT_RD_StoreRadianceHistory(ipixel, result);
+    GLINT_RD_StoreVariance(ipixel, clamp(GLINT_FiniteOr(resultVariance, 1.0), 0.0, 65504.0));
+}
+
+#endif // GLINT_REFLECTIONS_DENOISER_RESOLVE_HLSLI

@@ -1,0 +1,56 @@
+// glint public API: the reflections denoiser (docs/reflections_denoiser.md).
+//
+// Turns SSSR's one noisy sample per traced pixel into a stable reflection: reproject (surface
+// motion or reflection parallax, disocclusion, firefly clamp, history length, temporal
+// variance, tile averages), prefilter (edge-aware, variance-guided) and temporal resolve
+// (history clipping, blend by history length). Only the 8x8 tiles SSSR's classification
+// listed are processed, indirectly from SSSR's arguments at byte offset 12. The result is
+// written over "sssr_radiance" in place, so the effect's output is defined everywhere:
+// unlisted tiles keep classification's environment or 0.
+#pragma once
+
+#include "glint/glint_depth_pyramid.h"
+#include "glint/glint_pass.h"
+#include "glint/glint_types.h"
+
+#include <array>
+#include <string>
+
+namespace glint {
+
+struct ReflectionsDenoiserDesc {
+    Extent2D size; // 1..16384 each
+    // Camera, row-major 4x4 with column vectors (q = M p), unjittered, as in SssrDesc.
+    std::array<double, 16> projection{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};    // view -> clip
+    std::array<double, 16> viewFromWorld{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}; // this frame
+    std::array<double, 16> previousClipFromWorld{1, 0, 0, 0, 0, 1, 0, 0,
+                                                 0, 0, 1, 0, 0, 0, 0, 1}; // VP of last frame
+    DepthConvention depth = DepthConvention::Standard;
+    float nearPlane = 0.1f;
+    float farPlane = 1000.0f; // 0 = infinite (reversed depth only)
+    bool vulkanNdc = true;
+    float normalUnpackMul = 1.0f;
+    float normalUnpackAdd = 0.0f;
+    float motionScaleX = 1.0f, motionScaleY = 1.0f;
+    float roughnessThreshold = 0.2f; // alpha: must equal SSSR's
+    float mirrorThreshold = 1e-4f;   // alpha: no spatial filter below
+    float historyClipScale = 0.7f;   // scale of the resolve's clip box (FidelityFX's "temporal stability")
+    std::uint32_t maxHistoryLength = 32;
+    bool resetHistory = false;    // first frame, camera cut or resize: every history is ignored
+    std::uint32_t frameIndex = 0; // histories ping-pong on its parity
+};
+
+// Resources (inputs first): "sssr_radiance" (read and overwritten), "depth", "normals",
+// "sssr_roughness", "motion", "sssr_tile_list", "sssr_indirect_args" (from planSssr).
+// Owned: "rd_clamped", "rd_reprojected", "rd_prefiltered" (RGBA32F), "rd_radiance0/1"
+// (RGBA32F), "rd_variance0/1", "rd_length0/1" (R32F), "rd_guides0/1" (RGBA32F: octahedral
+// normal, view depth, alpha), "rd_average" (RGBA32F, one texel per tile) and
+// "rd_tile_mask0/1" (4 bytes per tile). Parity p = frameIndex & 1 is written, 1 - p read.
+// Every owned resource must start zeroed (a zero mask means "no history").
+Result planReflectionsDenoiser(const ReflectionsDenoiserDesc& desc, EffectPlan& plan, std::string* error);
+
+// The variance this frame's resolve wrote ("rd_variance0" or "rd_variance1"): next frame's
+// SSSR variance history for variance-guided tracing.
+std::string reflectionsDenoiserVariance(std::uint32_t frameIndex);
+
+} // namespace glint

@@ -1,0 +1,92 @@
+#include "reflections_denoiser/denoiser_scene.h"
+
+#include "capture/mat4.h"
+#include "replay/replay_sssr.h"
+#include "scene/scene_file.h"
+#include "scene/scene_simulate.h"
+#include "support/gpu_test_context.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace glint::test {
+
+DenoiserScene simulateDenoiserScene(const std::string& name, std::uint32_t width, std::uint32_t height,
+                                    std::uint32_t frames) {
+    scene::Scene scene =
+        scene::loadScene(std::string(GLINT_SOURCE_DIR) + "/harness/scenes/" + name + ".toml");
+    scene.width = width;
+    scene.height = height;
+    scene.frameCount = frames;
+    scene.reference.reflections = true;
+    scene::Simulation simulation = scene::simulate(testContext(), scene);
+    DenoiserScene out;
+    out.frames = std::move(simulation.frames);
+    out.environment = simulation.environment.value();
+    replay::sssrFromFrame(out.frames.at(0), out.environment, out.desc, out.inputs);
+    return out;
+}
+
+ReflectionsDenoiserDesc denoiserDescFor(const capture::Frame& frame, const SssrDesc& sssr,
+                                        std::uint32_t frameIndex, bool reset) {
+    ReflectionsDenoiserDesc d;
+    d.size = sssr.size;
+    d.projection = sssr.projection;
+    d.viewFromWorld = sssr.viewFromWorld;
+    d.previousClipFromWorld = frame.camera.prevViewProjection.m;
+    d.depth = sssr.depth;
+    d.nearPlane = sssr.nearPlane;
+    d.farPlane = sssr.farPlane;
+    d.vulkanNdc = sssr.vulkanNdc;
+    d.normalUnpackMul = sssr.normalUnpackMul;
+    d.normalUnpackAdd = sssr.normalUnpackAdd;
+    d.motionScaleX = sssr.motionScaleX;
+    d.motionScaleY = sssr.motionScaleY;
+    d.roughnessThreshold = sssr.roughnessThreshold;
+    d.mirrorThreshold = sssr.mirrorThreshold;
+    d.resetHistory = reset;
+    d.frameIndex = frameIndex;
+    return d;
+}
+
+double glossyError(const capture::Frame& frame, const std::vector<float>& radiance,
+                   float roughnessThreshold) {
+    const capture::Layer* reference = capture::findLayer(frame, "reference.reflection");
+    if (!reference) return -1.0;
+    std::vector<float> target(4 * std::size_t{frame.width} * frame.height, 0.0f);
+    const std::size_t stride = reference->channels.size();
+    for (std::size_t i = 0; i < target.size() / 4; ++i)
+        for (std::size_t c = 0; c < std::min<std::size_t>(3, stride); ++c)
+            target[4 * i + c] = reference->pixels[i * stride + c];
+    return glossyError(frame, radiance, target, roughnessThreshold);
+}
+
+double glossyError(const capture::Frame& frame, const std::vector<float>& radiance,
+                   const std::vector<float>& target, float roughnessThreshold) {
+    const capture::Layer* depth = capture::findLayer(frame, "depth");
+    const capture::Layer* roughness = capture::findLayer(frame, frame.roughness.layer);
+    if (!depth || !roughness) return -1.0;
+    const int channel = capture::channelIndex(roughness->channels, frame.roughness.channel);
+    const std::size_t roughStride = roughness->channels.size();
+    double sum = 0.0;
+    std::size_t count = 0;
+    const bool reversed = frame.camera.depth != capture::DepthConvention::Standard;
+    for (std::size_t i = 0; i < std::size_t{frame.width} * frame.height; ++i) {
+        const float d = depth->pixels[i];
+        if (!std::isfinite(d) || (reversed ? d <= 1e-6f : d >= 1.0f - 1e-6f)) continue;
+        float r = roughness->pixels[i * roughStride + static_cast<std::size_t>(channel)];
+        const float alpha = frame.roughness.perceptual ? r * r : r;
+        if (!(alpha < roughnessThreshold)) continue;
+        auto luma = [](const float* c) {
+            return 0.2126 * static_cast<double>(c[0]) + 0.7152 * static_cast<double>(c[1]) +
+                   0.0722 * static_cast<double>(c[2]);
+        };
+        const double expected = luma(&target[4 * i]);
+        const double value = luma(&radiance[4 * i]);
+        sum += std::abs(value - expected) / std::max(expected, 0.05);
+        ++count;
+    }
+    return count ? sum / static_cast<double>(count) : -1.0;
+}
+
+} // namespace glint::test

@@ -1,0 +1,41 @@
+// Shared by the reflections-denoiser GPU tests: a simulated scene's frame as SSSR inputs, the
+// denoiser desc for a frame, and the error of a radiance image against the capture's
+// reference over glossy pixels.
+#pragma once
+
+#include "capture/capture_frame.h"
+#include "capture/environment_io.h"
+#include "glint/glint_reflections_denoiser.h"
+#include "glint/glint_sssr.h"
+
+#include <gpu/gpu_sssr_runner.h>
+
+#include <string>
+#include <vector>
+
+namespace glint::test {
+
+struct DenoiserScene {
+    std::vector<capture::Frame> frames;
+    SssrDesc desc;               // frame 0's
+    gpu::SssrFrameInputs inputs; // frame 0's
+    capture::Environment environment;
+};
+
+// Simulates harness/scenes/<name>.toml at width x height for `frames` frames with references.
+DenoiserScene simulateDenoiserScene(const std::string& name, std::uint32_t width, std::uint32_t height,
+                                    std::uint32_t frames);
+
+ReflectionsDenoiserDesc denoiserDescFor(const capture::Frame& frame, const SssrDesc& sssr,
+                                        std::uint32_t frameIndex, bool reset);
+
+// Mean of |value - reference| / max(reference luma, 0.05) over pixels whose alpha is below the
+// threshold and whose depth is not background (luminance, Rec. 709).
+double glossyError(const capture::Frame& frame, const std::vector<float>& radianceRgba,
+                   float roughnessThreshold);
+// The same metric against another RGBA image (e.g. SSSR's own converged mean) instead of the
+// capture's reference.
+double glossyError(const capture::Frame& frame, const std::vector<float>& radianceRgba,
+                   const std::vector<float>& targetRgba, float roughnessThreshold);
+
+} // namespace glint::test

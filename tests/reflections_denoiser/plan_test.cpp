@@ -1,0 +1,91 @@
+// The reflections denoiser's plan without a GPU: passes, indirect dispatch over SSSR's tile
+// list, history parity, validation messages.
+#include "glint/glint_reflections_denoiser.h"
+
+#include <catch2/catch.hpp>
+
+#include <limits>
+#include <variant>
+
+using namespace glint;
+
+namespace {
+
+ReflectionsDenoiserDesc validDesc() {
+    ReflectionsDenoiserDesc desc;
+    desc.size = {1919, 1081};
+    desc.projection = {1.0, 0, 0, 0, 0, 1.7, 0, 0, 0, 0, -1.0001, -0.10001, 0, 0, -1, 0};
+    return desc;
+}
+
+bool uses(const Pass& pass, const std::string& binding, const std::string& resource) {
+    for (const ResourceUse& use : pass.uses)
+        if (use.binding == binding && use.resource == resource) return true;
+    return false;
+}
+
+} // namespace
+
+TEST_CASE("three passes over SSSR's listed tiles, histories on the frame's parity",
+          "[reflections_denoiser]") {
+    for (std::uint32_t frame : {0u, 1u, 6u, 7u}) {
+        INFO("frame " << frame);
+        ReflectionsDenoiserDesc desc = validDesc();
+        desc.frameIndex = frame;
+        EffectPlan plan;
+        REQUIRE(planReflectionsDenoiser(desc, plan, nullptr) == Result::Ok);
+        REQUIRE(plan.passes.size() == 3);
+        CHECK(plan.passes[0].name == "reproject");
+        CHECK(plan.passes[1].name == "prefilter");
+        CHECK(plan.passes[2].name == "resolve");
+        for (const Pass& pass : plan.passes) {
+            const auto& indirect = std::get<IndirectDispatch>(pass.dispatch);
+            CHECK(indirect.resource == "sssr_indirect_args");
+            CHECK(indirect.offset == 12);
+            CHECK(uses(pass, "g_glint_tile_list", "sssr_tile_list"));
+        }
+        const std::string now = frame % 2 ? "1" : "0", before = frame % 2 ? "0" : "1";
+        CHECK(uses(plan.passes[0], "g_glint_history_radiance", "rd_radiance" + before));
+        CHECK(uses(plan.passes[0], "g_glint_history_tile_mask", "rd_tile_mask" + before));
+        CHECK(uses(plan.passes[0], "g_glint_tile_mask", "rd_tile_mask" + now));
+        CHECK(plan.passes[0].zeroBuffers == std::vector<std::string>{"rd_tile_mask" + now});
+        CHECK(uses(plan.passes[2], "g_glint_radiance_history", "rd_radiance" + now));
+        CHECK(uses(plan.passes[2], "g_glint_output", "sssr_radiance"));
+        CHECK(reflectionsDenoiserVariance(frame) == "rd_variance" + now);
+    }
+    EffectPlan plan;
+    REQUIRE(planReflectionsDenoiser(validDesc(), plan, nullptr) == Result::Ok);
+    for (const ImageDesc& image : plan.images)
+        if (image.name == "rd_average") CHECK((image.width == 240 && image.height == 136));
+}
+
+TEST_CASE("invalid denoiser descs are refused with a message naming the field", "[reflections_denoiser]") {
+    struct Case {
+        const char* field;
+        void (*apply)(ReflectionsDenoiserDesc&);
+    };
+    const Case cases[] = {
+        {"size",
+         [](ReflectionsDenoiserDesc& d) {
+             d.size = {0, 4};
+         }},
+        {"historyClipScale", [](ReflectionsDenoiserDesc& d) { d.historyClipScale = 0.0f; }},
+        {"maxHistoryLength", [](ReflectionsDenoiserDesc& d) { d.maxHistoryLength = 2; }},
+        {"roughnessThreshold",
+         [](ReflectionsDenoiserDesc& d) { d.roughnessThreshold = std::numeric_limits<float>::quiet_NaN(); }},
+        {"camera matrices",
+         [](ReflectionsDenoiserDesc& d) {
+             d.previousClipFromWorld[0] = std::numeric_limits<double>::infinity();
+         }},
+        {"projection", [](ReflectionsDenoiserDesc& d) { d.projection.fill(0.0); }},
+    };
+    for (const Case& c : cases) {
+        ReflectionsDenoiserDesc desc = validDesc();
+        c.apply(desc);
+        EffectPlan plan;
+        std::string error;
+        CHECK(planReflectionsDenoiser(desc, plan, &error) == Result::InvalidArgument);
+        INFO(error);
+        CHECK(error.find(c.field) != std::string::npos);
+    }
+}

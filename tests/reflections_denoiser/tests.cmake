@@ -1,0 +1,11 @@
+# Reflections denoiser: the plan (unit) and SSSR + denoiser on simulated scenes (gpu).
+glint_add_test_suite(NAME reflections_denoiser LABELS gpu
+  SOURCES
+    reflections_denoiser/static_test.cpp
+    reflections_denoiser/non_finite_test.cpp
+    reflections_denoiser/denoiser_scene.cpp
+  LIBS glint_replay glint_scene glint_gpu_test_support glint_gpu)
+
+glint_add_test_suite(NAME reflections_denoiser_unit LABELS unit
+  SOURCES reflections_denoiser/plan_test.cpp
+  LIBS glint_core)
