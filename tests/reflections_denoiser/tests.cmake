@@ -3,6 +3,7 @@ glint_add_test_suite(NAME reflections_denoiser LABELS gpu
   SOURCES
     reflections_denoiser/static_test.cpp
     reflections_denoiser/non_finite_test.cpp
+    reflections_denoiser/ghosting_test.cpp
     reflections_denoiser/denoiser_scene.cpp
   LIBS glint_replay glint_scene glint_gpu_test_support glint_gpu)
 

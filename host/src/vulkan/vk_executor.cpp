@@ -270,7 +270,9 @@ Executor createExecutor(const Device& device) {
         VkSamplerCreateInfo samplerInfo{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
         samplerInfo.magFilter = VK_FILTER_LINEAR;
         samplerInfo.minFilter = VK_FILTER_LINEAR;
-        samplerInfo.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+        // Trilinear: a fractional LOD (SSSR's roughness-aware environment lookups) blends two
+        // levels instead of snapping between them.
+        samplerInfo.mipmapMode = VK_SAMPLER_MIPMAP_MODE_LINEAR;
         samplerInfo.addressModeU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
         samplerInfo.addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
         samplerInfo.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
@@ -278,6 +280,7 @@ Executor createExecutor(const Device& device) {
         GLINT_VK_CHECK(vkCreateSampler(device.device, &samplerInfo, nullptr, &executor.linearClampSampler));
         samplerInfo.magFilter = VK_FILTER_NEAREST;
         samplerInfo.minFilter = VK_FILTER_NEAREST;
+        samplerInfo.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
         GLINT_VK_CHECK(vkCreateSampler(device.device, &samplerInfo, nullptr, &executor.pointClampSampler));
 
         executor.constantRing =
