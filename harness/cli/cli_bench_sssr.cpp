@@ -93,6 +93,8 @@ void applySssrSetting(SssrDesc& desc, const std::string& assignment) {
         desc.previousFrameColor = parseBool(name, value);
     else if (name == "halfPrecisionStorage")
         desc.halfPrecisionStorage = parseBool(name, value);
+    else if (name == "denoise")
+        desc.denoise = parseBool(name, value);
     else if (name == "debugOutput")
         desc.debugOutput = parseBool(name, value);
     else
@@ -100,7 +102,7 @@ void applySssrSetting(SssrDesc& desc, const std::string& assignment) {
             "bench: unknown setting '" + name +
             "' (samplesPerQuad, maxTraversalIterations, mostDetailedMip, roughnessThreshold, "
             "occupancyExitFraction, importanceSampleBias, thickness, thicknessAware, "
-            "halfResolution, previousFrameColor, debugOutput, halfPrecisionStorage)");
+            "halfResolution, previousFrameColor, debugOutput, halfPrecisionStorage, denoise)");
 }
 
 int runBenchSssr(const BenchOptions& options, const gpu::Context& context) {
@@ -122,12 +124,34 @@ int runBenchSssr(const BenchOptions& options, const gpu::Context& context) {
         throw std::invalid_argument("bench: roughness must come from material channel 0");
     gpu::SssrRunner runner(context, desc, /*compactInputs=*/true);
     runner.upload(inputs);
-    const std::vector<std::string> passes = runner.passNames(desc);
+    const std::vector<std::string> passes = runner.passNames(desc, desc.denoise);
+    // With denoise: a static camera, so last frame's view-projection is this frame's.
+    ReflectionsDenoiserDesc denoiser;
+    denoiser.size = desc.size;
+    denoiser.projection = desc.projection;
+    denoiser.viewFromWorld = desc.viewFromWorld;
+    denoiser.depth = desc.depth;
+    denoiser.nearPlane = desc.nearPlane;
+    denoiser.farPlane = desc.farPlane;
+    denoiser.vulkanNdc = desc.vulkanNdc;
+    denoiser.normalUnpackMul = desc.normalUnpackMul;
+    denoiser.normalUnpackAdd = desc.normalUnpackAdd;
+    denoiser.roughnessThreshold = desc.roughnessThreshold;
+    denoiser.mirrorThreshold = desc.mirrorThreshold;
+    for (std::size_t r = 0; r < 4; ++r)
+        for (std::size_t c = 0; c < 4; ++c) {
+            double sum = 0.0;
+            for (std::size_t k = 0; k < 4; ++k)
+                sum += desc.projection[4 * r + k] * desc.viewFromWorld[4 * k + c];
+            denoiser.previousClipFromWorld[4 * r + c] = sum;
+        }
     std::vector<std::vector<double>> times(passes.size());
     for (std::uint32_t run = 0; run < std::min(options.runs, 10u) + options.runs; ++run) {
         desc.frameIndex = run;
+        denoiser.frameIndex = run;
+        denoiser.resetHistory = run == 0;
         std::vector<double> timing;
-        runner.run(desc, &timing);
+        runner.run(desc, &timing, desc.denoise ? &denoiser : nullptr);
         if (run < std::min(options.runs, 10u)) continue; // warm-up
         for (std::size_t pass = 0; pass < std::min(timing.size(), passes.size()); ++pass)
             times[pass].push_back(timing[pass]);
