@@ -62,3 +62,11 @@ glint_cli_test(NAME "bench with a malformed size is a usage error" LABELS unit E
 glint_cli_test(NAME "bench times every shadow denoiser pass under validation" LABELS gpu EXIT 0
   STDOUT "prepare.*classify.*filter0.*filter1.*filter2.*all passes"
   COMMAND --validate bench shadow_denoiser --size 41x23 --runs 2)
+glint_cli_test(NAME "bench times SSSR and the denoiser on a simulated scene under validation" LABELS gpu EXIT 0
+  STDOUT "traced pixels.*ray classes.*classify.*blue_noise_args.*intersect.*reproject.*prefilter.*resolve.*all passes"
+  COMMAND --validate bench sssr --size 64x36 --runs 2 --scene "${PROJECT_SOURCE_DIR}/harness/scenes/glossy_room.toml"
+          --set denoise=true --set debugOutput=true)
+glint_cli_test(NAME "bench sssr with an unknown setting is a usage error naming it" LABELS gpu EXIT 2
+  STDERR_ONE_LINE "unknown setting 'nosuch'"
+  COMMAND bench sssr --size 16x16 --runs 1 --scene "${PROJECT_SOURCE_DIR}/harness/scenes/glossy_room.toml"
+          --set nosuch=1)
