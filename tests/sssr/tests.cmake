@@ -11,6 +11,7 @@ glint_add_test_suite(NAME sssr LABELS gpu
     sssr/traversal_test.cpp
     sssr/hard_cases_test.cpp
     sssr/composite_test.cpp
+    sssr/previous_frame_test.cpp
     sssr/sssr_test_scene.cpp
     reference/sssr_reference.cpp
   LIBS glint_gpu_test_support glint_gpu)
