@@ -102,37 +102,6 @@ float GLINT_RD_GaussianWeight(int i)
     return exp(-3.0 * float(i * i) / 25.0);
 }
 
-// Separable 9x9 Gaussian statistics. A pass first writes, for each of the span's 16 rows and
-// the tile's 8 columns, the horizontal 9-tap sums (GLINT_RD_StoreRowSums), then after a
-// barrier each pixel sums its column's 9 rows (GLINT_RD_ColumnStatistics): 27 weighted taps a
-// pixel instead of 81, with the same result up to float rounding.
-groupshared float4 g_glint_rd_row_sum[GLINT_RD_SPAN * GLINT_RD_TILE];     // rgb x w, w
-groupshared float3 g_glint_rd_row_squares[GLINT_RD_SPAN * GLINT_RD_TILE]; // rgb^2 x w
-
-void GLINT_RD_StoreRowSums(uint row, uint column, float4 sum, float3 squares)
-{
-    g_glint_rd_row_sum[row * GLINT_RD_TILE + column] = sum;
-    g_glint_rd_row_squares[row * GLINT_RD_TILE + column] = squares;
-}
-
-// Mean and per-channel variance over the glossy pixels of the 9x9 around the tile pixel
-// `local`; false when none of them is glossy.
-bool GLINT_RD_ColumnStatistics(uint2 local, out float3 mean, out float3 variance)
-{
-    float4 sum = float4(0.0, 0.0, 0.0, 0.0);
-    float3 squares = float3(0.0, 0.0, 0.0);
-    for (int y = -GLINT_RD_APRON; y <= GLINT_RD_APRON; ++y)
-    {
-        uint index = (uint(int(local.y) + GLINT_RD_APRON + y)) * GLINT_RD_TILE + local.x;
-        float w = GLINT_RD_GaussianWeight(y);
-        sum += w * g_glint_rd_row_sum[index];
-        squares += w * g_glint_rd_row_squares[index];
-    }
-    mean = sum.a > 0.0 ? sum.rgb / sum.a : float3(0.0, 0.0, 0.0);
-    variance = sum.a > 0.0 ? abs(squares / sum.a - mean * mean) : float3(0.0, 0.0, 0.0);
-    return sum.a > 0.0;
-}
-
 // Clip x toward the box centre m with half-extent e (Playdead): the point where the segment
 // from m to x leaves the box, or x inside it.
 float3 GLINT_RD_ClipToBox(float3 x, float3 m, float3 e)

@@ -113,7 +113,6 @@ void GLINT_RD_Reproject(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint
     uint entry = GLINT_RD_LoadTile(groupId);
     uint2 tileOrigin = uint2(entry & 0xFFFFu, entry >> 16);
     uint localIndex = local.y * GLINT_RD_TILE + local.x;
-    g_glint_rd_average[localIndex] = float4(0.0, 0.0, 0.0, 0.0); // per-wave slots, see below
     for (uint i = localIndex; i < GLINT_RD_SPAN * GLINT_RD_SPAN; i += GLINT_RD_TILE * GLINT_RD_TILE)
     {
         int2 pixel = GLINT_RD_SpanPixel(c, tileOrigin, i);
@@ -133,37 +132,27 @@ void GLINT_RD_Reproject(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint
     uint centre = (local.y + GLINT_RD_APRON) * GLINT_RD_SPAN + local.x + GLINT_RD_APRON;
     float3 current = g_glint_rd_noisy[centre].rgb;
 
-    // Horizontal sums of the separable 9x9 statistics: two of the span's 16 x 8 row entries a
-    // thread (the span's rows, the tile's columns).
-    for (uint r = localIndex; r < GLINT_RD_SPAN * GLINT_RD_TILE; r += GLINT_RD_TILE * GLINT_RD_TILE)
-    {
-        uint row = r / GLINT_RD_TILE, column = r % GLINT_RD_TILE;
-        float4 rowSum = float4(0.0, 0.0, 0.0, 0.0);
-        float3 rowSquares = float3(0.0, 0.0, 0.0);
+    // 9x9 Gaussian statistics over glossy neighbours, and the nearest hit of the 3x3 (one noisy
+    // hit distance is a poor parallax estimate: reference defect 11).
+    float3 sum = float3(0.0, 0.0, 0.0);
+    float3 sumSquares = float3(0.0, 0.0, 0.0);
+    float weightSum = 0.0;
+    float hitDistance = GLINT_RD_MISS_DISTANCE;
+    for (int y = -GLINT_RD_APRON; y <= GLINT_RD_APRON; ++y)
         for (int x = -GLINT_RD_APRON; x <= GLINT_RD_APRON; ++x)
         {
-            float4 q = g_glint_rd_noisy[row * GLINT_RD_SPAN + uint(int(column) + GLINT_RD_APRON + x)];
-            float w = q.a < 0.0 ? 0.0 : GLINT_RD_GaussianWeight(x);
-            rowSum += w * float4(q.rgb, 1.0);
-            rowSquares += w * q.rgb * q.rgb;
+            float4 q = g_glint_rd_noisy[centre + y * GLINT_RD_SPAN + x];
+            if (q.a < 0.0)
+                continue;
+            float w = GLINT_RD_GaussianWeight(x) * GLINT_RD_GaussianWeight(y);
+            sum += w * q.rgb;
+            sumSquares += w * q.rgb * q.rgb;
+            weightSum += w;
+            if (abs(x) <= 1 && abs(y) <= 1)
+                hitDistance = min(hitDistance, q.a);
         }
-        GLINT_RD_StoreRowSums(row, column, rowSum, rowSquares);
-    }
-    // The nearest hit of the 3x3 (one noisy hit distance is a poor parallax estimate:
-    // reference defect 11).
-    float hitDistance = GLINT_RD_MISS_DISTANCE;
-    for (int y = -1; y <= 1; ++y)
-        for (int x = -1; x <= 1; ++x)
-        {
-            float q = g_glint_rd_noisy[centre + y * GLINT_RD_SPAN + x].a;
-            if (q >= 0.0)
-                hitDistance = min(hitDistance, q);
-        }
-    GroupMemoryBarrierWithGroupSync();
-    float3 mean;
-    float3 variance3;
-    if (!GLINT_RD_ColumnStatistics(local, mean, variance3))
-        mean = current;
+    float3 mean = weightSum > 0.0 ? sum / weightSum : current;
+    float3 variance3 = weightSum > 0.0 ? abs(sumSquares / weightSum - mean * mean) : float3(0.0, 0.0, 0.0);
     float3 sigma = sqrt(variance3);
     // Firefly clamp before any spatial reuse (reference defect 14).
     current = min(current, mean + 3.0 * sigma);
@@ -223,17 +212,16 @@ void GLINT_RD_Reproject(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint
 
     // The tile's luminance-weighted average (bright outliers weigh less).
     float weight = surface.glossy && inImage ? max(exp(-0.3 * GLINT_RD_Luma(contribution)), 0.01) : 0.0;
-    // One sum per wave (the slot is the wave's first lane, unique at any wave size), then one
-    // thread adds the slots: two barriers instead of a six-step tree.
-    float4 waveSum = WaveActiveSum(float4(contribution * weight, weight));
-    if (WaveIsFirstLane())
-        g_glint_rd_average[localIndex] = waveSum;
+    g_glint_rd_average[localIndex] = float4(contribution * weight, weight);
     GroupMemoryBarrierWithGroupSync();
-    if (localIndex == 0)
-        for (uint slot = 1; slot < GLINT_RD_TILE * GLINT_RD_TILE; ++slot)
-            g_glint_rd_average[0] += g_glint_rd_average[slot];
+    for (uint stride = GLINT_RD_TILE * GLINT_RD_TILE / 2; stride > 0; stride >>= 1)
+    {
+        if (localIndex < stride)
+            g_glint_rd_average[localIndex] += g_glint_rd_average[localIndex + stride];
+        GroupMemoryBarrierWithGroupSync();
+    }
     uint2 tile = tileOrigin / GLINT_RD_TILE;
-    if (localIndex == 0) // the thread that added the slots
+    if (localIndex == 0)
     {
         float4 total = g_glint_rd_average[0];
         GLINT_RD_StoreAverage(tile, float4(GLINT_RD_SanitizeRadiance(total.rgb / max(total.a, 1e-3)), total.a));

@@ -46,22 +46,6 @@ void GLINT_RD_Resolve(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint2 
     }
     GroupMemoryBarrierWithGroupSync();
 
-    for (uint r = localIndex; r < GLINT_RD_SPAN * GLINT_RD_TILE; r += GLINT_RD_TILE * GLINT_RD_TILE)
-    {
-        uint row = r / GLINT_RD_TILE, column = r % GLINT_RD_TILE;
-        float4 rowSum = float4(0.0, 0.0, 0.0, 0.0);
-        float3 rowSquares = float3(0.0, 0.0, 0.0);
-        for (int x = -GLINT_RD_APRON; x <= GLINT_RD_APRON; ++x)
-        {
-            float4 q = g_glint_rd_resolve_radiance[row * GLINT_RD_SPAN + uint(int(column) + GLINT_RD_APRON + x)];
-            float w = q.a * GLINT_RD_GaussianWeight(x);
-            rowSum += w * float4(q.rgb, 1.0);
-            rowSquares += w * q.rgb * q.rgb;
-        }
-        GLINT_RD_StoreRowSums(row, column, rowSum, rowSquares);
-    }
-    GroupMemoryBarrierWithGroupSync();
-
     uint2 pixel = tileOrigin + local;
     if (any(pixel >= c.inputSize))
         return;
@@ -74,10 +58,20 @@ void GLINT_RD_Resolve(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint2 
         GLINT_RD_StoreVariance(ipixel, 0.0);
         return;
     }
-    float3 mean;
-    float3 variance3;
-    GLINT_RD_ColumnStatistics(local, mean, variance3); // the centre itself is glossy
-    float3 sigma = sqrt(variance3);
+    float3 sum = float3(0.0, 0.0, 0.0);
+    float3 sumSquares = float3(0.0, 0.0, 0.0);
+    float weightSum = 0.0;
+    for (int y = -GLINT_RD_APRON; y <= GLINT_RD_APRON; ++y)
+        for (int x = -GLINT_RD_APRON; x <= GLINT_RD_APRON; ++x)
+        {
+            float4 q = g_glint_rd_resolve_radiance[centre + y * GLINT_RD_SPAN + x];
+            float w = q.a * GLINT_RD_GaussianWeight(x) * GLINT_RD_GaussianWeight(y);
+            sum += w * q.rgb;
+            sumSquares += w * q.rgb * q.rgb;
+            weightSum += w;
+        }
+    float3 mean = sum / weightSum;
+    float3 sigma = sqrt(abs(sumSquares / weightSum - mean * mean));
     float3 average = GLINT_RD_AverageAt(c, pixel);
     float4 prefiltered = GLINT_RD_LoadPrefiltered(ipixel);
     float3 current = GLINT_RD_SanitizeRadiance(prefiltered.rgb);
