@@ -138,6 +138,7 @@ int runBenchSssr(const BenchOptions& options, const gpu::Context& context) {
     denoiser.normalUnpackAdd = desc.normalUnpackAdd;
     denoiser.roughnessThreshold = desc.roughnessThreshold;
     denoiser.mirrorThreshold = desc.mirrorThreshold;
+    denoiser.halfPrecisionStorage = desc.halfPrecisionStorage;
     for (std::size_t r = 0; r < 4; ++r)
         for (std::size_t c = 0; c < 4; ++c) {
             double sum = 0.0;

@@ -17,55 +17,63 @@ TEST_CASE("non-finite histories and inputs never reach the next frame's output",
           "[reflections_denoiser][hard]") {
     test::DenoiserScene scene = test::simulateDenoiserScene("glossy_room", 96, 54, 1);
     const capture::Frame& frame = scene.frames.at(0);
-    SssrDesc desc = scene.desc;
-    desc.denoise = true;
-    gpu::Context& context = test::testContext();
-    gpu::SssrRunner runner(context, desc);
-    runner.upload(scene.inputs);
-    const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
-    for (std::uint32_t index = 0; index < 4; ++index) {
-        INFO("frame " << index);
-        desc.frameIndex = index;
-        if (index == 1 || index == 2) {
-            // Every history this frame reads, poisoned (NaN on frame 1, Inf on frame 2).
-            const float value = index == 1 ? nan : inf;
-            const char* parity = (index & 1u) != 0 ? "0" : "1";
+    for (const bool half : {false, true}) {
+        INFO((half ? "16-bit storage" : "32-bit storage"));
+        SssrDesc desc = scene.desc;
+        desc.denoise = true;
+        desc.halfPrecisionStorage = half;
+        gpu::Context& context = test::testContext();
+        gpu::SssrRunner runner(context, desc);
+        runner.upload(scene.inputs);
+        const float nan = std::numeric_limits<float>::quiet_NaN(),
+                    inf = std::numeric_limits<float>::infinity();
+        for (std::uint32_t index = 0; index < 4; ++index) {
+            INFO("frame " << index);
+            desc.frameIndex = index;
+            if (index == 1 || index == 2) {
+                // Every history this frame reads, poisoned (NaN on frame 1, Inf on frame 2).
+                const float value = index == 1 ? nan : inf;
+                const char* parity = (index & 1u) != 0 ? "0" : "1";
+                for (const char* name : {"rd_radiance", "rd_variance", "rd_length", "rd_guides"}) {
+                    VkClearColorValue fill{};
+                    for (float& channel : fill.float32) channel = value;
+                    gpu::clearImage(context, runner.ownedImage(std::string(name) + parity), fill);
+                }
+                // And scattered inputs.
+                gpu::SssrFrameInputs bad = scene.inputs;
+                for (std::size_t i = 0; i < bad.depth.size(); i += 7) {
+                    bad.color[4 * i] = value;
+                    bad.normals[4 * i + (i % 3)] = value;
+                    if (i % 21 == 0) bad.depth[i] = value;
+                    if (i % 35 == 0) bad.motion[2 * i] = value;
+                    if (i % 49 == 0) bad.material[4 * i] = value;
+                }
+                runner.upload(bad);
+            } else {
+                runner.upload(scene.inputs);
+            }
+            ReflectionsDenoiserDesc denoiser = test::denoiserDescFor(frame, desc, index, index == 0);
+            denoiser.halfPrecisionStorage = half;
+            runner.run(desc, nullptr, &denoiser);
+            const gpu::SssrFrameOutputs out = runner.readback();
+            for (float value : out.radiance) REQUIRE(std::isfinite(value));
+            // The histories this frame wrote, over the tiles it listed (the only texels the
+            // denoiser writes, and the only ones next frame reads: the tile mask guards the rest).
+            const char* written = (index & 1u) != 0 ? "1" : "0";
             for (const char* name : {"rd_radiance", "rd_variance", "rd_length", "rd_guides"}) {
-                VkClearColorValue fill{};
-                for (float& channel : fill.float32) channel = value;
-                gpu::clearImage(context, runner.ownedImage(std::string(name) + parity), fill);
+                const std::vector<float> texels =
+                    gpu::readbackImage(context, runner.ownedImage(std::string(name) + written));
+                const std::size_t channels = texels.size() / (std::size_t{out.width} * out.height);
+                for (std::uint32_t tile : out.tileList)
+                    for (std::uint32_t y = tile >> 16; y < std::min(out.height, (tile >> 16) + 8); ++y)
+                        for (std::uint32_t x = tile & 0xFFFFu; x < std::min(out.width, (tile & 0xFFFFu) + 8);
+                             ++x)
+                            for (std::size_t c = 0; c < channels; ++c)
+                                REQUIRE(
+                                    std::isfinite(texels[(std::size_t{y} * out.width + x) * channels + c]));
             }
-            // And scattered inputs.
-            gpu::SssrFrameInputs bad = scene.inputs;
-            for (std::size_t i = 0; i < bad.depth.size(); i += 7) {
-                bad.color[4 * i] = value;
-                bad.normals[4 * i + (i % 3)] = value;
-                if (i % 21 == 0) bad.depth[i] = value;
-                if (i % 35 == 0) bad.motion[2 * i] = value;
-                if (i % 49 == 0) bad.material[4 * i] = value;
-            }
-            runner.upload(bad);
-        } else {
-            runner.upload(scene.inputs);
+            REQUIRE(!out.tileList.empty());
         }
-        const ReflectionsDenoiserDesc denoiser = test::denoiserDescFor(frame, desc, index, index == 0);
-        runner.run(desc, nullptr, &denoiser);
-        const gpu::SssrFrameOutputs out = runner.readback();
-        for (float value : out.radiance) REQUIRE(std::isfinite(value));
-        // The histories this frame wrote, over the tiles it listed (the only texels the
-        // denoiser writes, and the only ones next frame reads: the tile mask guards the rest).
-        const char* written = (index & 1u) != 0 ? "1" : "0";
-        for (const char* name : {"rd_radiance", "rd_variance", "rd_length", "rd_guides"}) {
-            const std::vector<float> texels =
-                gpu::readbackImage(context, runner.ownedImage(std::string(name) + written));
-            const std::size_t channels = texels.size() / (std::size_t{out.width} * out.height);
-            for (std::uint32_t tile : out.tileList)
-                for (std::uint32_t y = tile >> 16; y < std::min(out.height, (tile >> 16) + 8); ++y)
-                    for (std::uint32_t x = tile & 0xFFFFu; x < std::min(out.width, (tile & 0xFFFFu) + 8); ++x)
-                        for (std::size_t c = 0; c < channels; ++c)
-                            REQUIRE(std::isfinite(texels[(std::size_t{y} * out.width + x) * channels + c]));
-        }
-        REQUIRE(!out.tileList.empty());
     }
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }

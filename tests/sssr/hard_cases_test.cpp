@@ -78,6 +78,7 @@ TEST_CASE("non-finite and extreme inputs give finite, in-range outputs at every 
             view.desc.composite = true;
             view.desc.samplesPerQuad = 1 + static_cast<std::uint32_t>(reversed) * 3;
             view.desc.previousFrameColor = reversed;
+            view.desc.halfPrecisionStorage = !reversed;
             requireFiniteOutputs(runOnce(view), std::size_t{w} * h);
         }
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
@@ -100,6 +101,7 @@ TEST_CASE("every option permutation stays finite on a poisoned frame", "[sssr][h
         d.occupancyExitFraction = variant == 5 ? 0.25f : 0.0f;
         d.maxTraversalIterations = variant == 5 ? 3 : 128;
         d.debugOutput = variant % 2 == 0;
+        d.halfPrecisionStorage = variant % 3 == 0; // every storage image must match its format
         d.frameIndex = 0xFFFFFFFFu - static_cast<std::uint32_t>(variant);
         const gpu::SssrFrameOutputs out = runOnce(view);
         requireFiniteOutputs(out, 45 * 29);

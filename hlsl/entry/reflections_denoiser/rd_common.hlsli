@@ -1,3 +1,7 @@
+// Permutation GLINT_RD_HALF_STORAGE=1 (used with SSSR's halfPrecisionStorage): radiance,
+// variance and history length stored in 16-bit float. Every pass clamps what it stores to the
+// fp16 range first and computes in 32 bits; the guides and tile averages stay 32-bit.
+//
 // Bindings and callbacks every reflections-denoiser entry shares: constants, the tile list and
 // the current guides. Included by the entry files before the pass header.
 #ifndef RD_ENTRY_COMMON_HLSLI

@@ -6,7 +6,11 @@
 
 [[vk::binding(7, 0)]] Texture2D<float4> g_glint_clamped;
 [[vk::binding(8, 0)]] Texture2D<float> g_glint_variance;
+#if GLINT_RD_HALF_STORAGE
+[[vk::binding(9, 0)]] GLINT_IMAGE_FORMAT(rgba16f) RWTexture2D<float4> g_glint_prefiltered;
+#else
 [[vk::binding(9, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_prefiltered;
+#endif
 
 float4 GLINT_RD_LoadClamped(int2 pixel) { return g_glint_clamped.Load(int3(pixel, 0)); }
 float GLINT_RD_LoadVariance(int2 pixel) { return g_glint_variance.Load(int3(pixel, 0)); }

@@ -10,10 +10,26 @@
 [[vk::binding(9, 0)]] Texture2D<float4> g_glint_history_radiance;
 [[vk::binding(10, 0)]] Texture2D<float> g_glint_history_variance;
 [[vk::binding(11, 0)]] Texture2D<float> g_glint_history_length;
+#if GLINT_RD_HALF_STORAGE
+[[vk::binding(12, 0)]] GLINT_IMAGE_FORMAT(rgba16f) RWTexture2D<float4> g_glint_clamped;
+#else
 [[vk::binding(12, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_clamped;
+#endif
+#if GLINT_RD_HALF_STORAGE
+[[vk::binding(13, 0)]] GLINT_IMAGE_FORMAT(rgba16f) RWTexture2D<float4> g_glint_reprojected;
+#else
 [[vk::binding(13, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_reprojected;
+#endif
+#if GLINT_RD_HALF_STORAGE
+[[vk::binding(14, 0)]] GLINT_IMAGE_FORMAT(r16f) RWTexture2D<float> g_glint_variance;
+#else
 [[vk::binding(14, 0)]] GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float> g_glint_variance;
+#endif
+#if GLINT_RD_HALF_STORAGE
+[[vk::binding(15, 0)]] GLINT_IMAGE_FORMAT(r16f) RWTexture2D<float> g_glint_length;
+#else
 [[vk::binding(15, 0)]] GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float> g_glint_length;
+#endif
 [[vk::binding(16, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_guides;
 [[vk::binding(17, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_average;
 [[vk::binding(18, 0)]] RWStructuredBuffer<uint> g_glint_tile_mask;

@@ -7,9 +7,21 @@
 [[vk::binding(7, 0)]] Texture2D<float4> g_glint_prefiltered;
 [[vk::binding(8, 0)]] Texture2D<float4> g_glint_reprojected;
 [[vk::binding(9, 0)]] Texture2D<float> g_glint_length;
+#if GLINT_RD_HALF_STORAGE
+[[vk::binding(10, 0)]] GLINT_IMAGE_FORMAT(rgba16f) RWTexture2D<float4> g_glint_output;
+#else
 [[vk::binding(10, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_output;
+#endif
+#if GLINT_RD_HALF_STORAGE
+[[vk::binding(11, 0)]] GLINT_IMAGE_FORMAT(rgba16f) RWTexture2D<float4> g_glint_radiance_history;
+#else
 [[vk::binding(11, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_radiance_history;
+#endif
+#if GLINT_RD_HALF_STORAGE
+[[vk::binding(12, 0)]] GLINT_IMAGE_FORMAT(r16f) RWTexture2D<float> g_glint_variance;
+#else
 [[vk::binding(12, 0)]] GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float> g_glint_variance;
+#endif
 
 float4 GLINT_RD_LoadPrefiltered(int2 pixel) { return g_glint_prefiltered.Load(int3(pixel, 0)); }
 float4 GLINT_RD_LoadReprojected(int2 pixel) { return g_glint_reprojected.Load(int3(pixel, 0)); }

@@ -36,8 +36,9 @@ struct ReflectionsDenoiserDesc {
     float mirrorThreshold = 1e-4f;   // alpha: no spatial filter below
     float historyClipScale = 0.7f;   // scale of the resolve's clip box (FidelityFX's "temporal stability")
     std::uint32_t maxHistoryLength = 32;
-    bool resetHistory = false;    // first frame, camera cut or resize: every history is ignored
-    std::uint32_t frameIndex = 0; // histories ping-pong on its parity
+    bool halfPrecisionStorage = false; // 16-bit radiance, variance and length; must match SSSR's
+    bool resetHistory = false;         // first frame, camera cut or resize: every history is ignored
+    std::uint32_t frameIndex = 0;      // histories ping-pong on its parity
 };
 
 // Resources (inputs first): "sssr_radiance" (read and overwritten), "depth", "normals",

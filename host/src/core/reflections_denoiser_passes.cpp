@@ -100,18 +100,21 @@ Result planReflectionsDenoiser(const ReflectionsDenoiserDesc& desc, EffectPlan& 
     const std::uint32_t w = desc.size.width, h = desc.size.height;
     plan = EffectPlan{};
     plan.effect = "reflections_denoiser";
-    for (const char* name : {"rd_clamped", "rd_reprojected", "rd_prefiltered", "rd_radiance0", "rd_radiance1",
-                             "rd_guides0", "rd_guides1"})
+    const bool half = desc.halfPrecisionStorage;
+    for (const char* name :
+         {"rd_clamped", "rd_reprojected", "rd_prefiltered", "rd_radiance0", "rd_radiance1"})
+        plan.images.push_back({name, w, h, 1, half ? Format::RGBA16Float : Format::RGBA32Float});
+    for (const char* name : {"rd_guides0", "rd_guides1"})
         plan.images.push_back({name, w, h, 1, Format::RGBA32Float});
     for (const char* name : {"rd_variance0", "rd_variance1", "rd_length0", "rd_length1"})
-        plan.images.push_back({name, w, h, 1, Format::R32Float});
+        plan.images.push_back({name, w, h, 1, half ? Format::R16Float : Format::R32Float});
     plan.images.push_back({"rd_average", tilesX, tilesY, 1, Format::RGBA32Float});
     plan.buffers.push_back({"rd_tile_mask0", std::uint64_t{tilesX} * tilesY * 4u, false});
     plan.buffers.push_back({"rd_tile_mask1", std::uint64_t{tilesX} * tilesY * 4u, false});
 
     const bool odd = (desc.frameIndex & 1u) != 0;
     const std::string now = odd ? "1" : "0", before = odd ? "0" : "1";
-    Pass reproject = tilePass("reproject", "rd_reproject", constants);
+    Pass reproject = tilePass("reproject", half ? "rd_reproject.half" : "rd_reproject", constants);
     reproject.uses.insert(reproject.uses.end(),
                           {{"g_glint_noisy", "sssr_radiance", Access::Read},
                            {"g_glint_motion", "motion", Access::Read},
@@ -128,13 +131,13 @@ Result planReflectionsDenoiser(const ReflectionsDenoiserDesc& desc, EffectPlan& 
                            {"g_glint_average", "rd_average", Access::Write},
                            {"g_glint_tile_mask", "rd_tile_mask" + now, Access::ReadWrite}});
     reproject.zeroBuffers = {"rd_tile_mask" + now};
-    Pass prefilter = tilePass("prefilter", "rd_prefilter", constants);
+    Pass prefilter = tilePass("prefilter", half ? "rd_prefilter.half" : "rd_prefilter", constants);
     prefilter.uses.insert(prefilter.uses.end(), {{"g_glint_average", "rd_average", Access::Read},
                                                  {"g_glint_tile_mask", "rd_tile_mask" + now, Access::Read},
                                                  {"g_glint_clamped", "rd_clamped", Access::Read},
                                                  {"g_glint_variance", "rd_variance" + now, Access::Read},
                                                  {"g_glint_prefiltered", "rd_prefiltered", Access::Write}});
-    Pass resolve = tilePass("resolve", "rd_resolve", constants);
+    Pass resolve = tilePass("resolve", half ? "rd_resolve.half" : "rd_resolve", constants);
     resolve.uses.insert(resolve.uses.end(), {{"g_glint_average", "rd_average", Access::Read},
                                              {"g_glint_tile_mask", "rd_tile_mask" + now, Access::Read},
                                              {"g_glint_prefiltered", "rd_prefiltered", Access::Read},

@@ -144,10 +144,11 @@ Pass blueNoisePass(const std::vector<std::byte>& constants) {
 }
 
 Pass intersectPass(const SssrDesc& desc, const std::vector<std::byte>& constants) {
-    const char* pipeline = desc.thicknessAware
-                               ? (desc.debugOutput ? "sssr_intersect.thick_debug" : "sssr_intersect.thick")
-                               : (desc.debugOutput ? "sssr_intersect.debug" : "sssr_intersect");
-    Pass pass = sssrPass("intersect", pipeline, GLINT_SSSR_RAYS_PER_GROUP, 1, constants);
+    const std::string suffix = std::string(desc.thicknessAware ? "_thick" : "") +
+                               (desc.debugOutput ? "_debug" : "") +
+                               (desc.halfPrecisionStorage ? "_half" : "");
+    const std::string pipeline = suffix.empty() ? "sssr_intersect" : "sssr_intersect." + suffix.substr(1);
+    Pass pass = sssrPass("intersect", pipeline.c_str(), GLINT_SSSR_RAYS_PER_GROUP, 1, constants);
     pass.dispatch = IndirectDispatch{"sssr_indirect_args", 0};
     pass.uses = {{"g_glint_depth", "depth", Access::Read},
                  {"g_glint_depth_pyramid", "depth_pyramid", Access::Read},

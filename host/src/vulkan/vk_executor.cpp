@@ -229,6 +229,13 @@ VkDescriptorSet writeDescriptors(Executor& executor, const ComputePipeline& pipe
             const auto image = resources.images.find(use->resource);
             if (image == resources.images.end())
                 fail(pass, "image '" + use->resource + "' is not in the resource table");
+            // A storage image must be written in its real format (reference defect: GLSL ports
+            // declared rgba32f on RGBA16F images, a source of GPU-specific corruption).
+            if (binding.type == VK_DESCRIPTOR_TYPE_STORAGE_IMAGE &&
+                binding.imageFormat != VK_FORMAT_UNDEFINED && binding.imageFormat != image->second->format)
+                fail(pass, "'" + binding.name + "' declares VkFormat " + std::to_string(binding.imageFormat) +
+                               " but image '" + use->resource + "' is VkFormat " +
+                               std::to_string(image->second->format));
             const std::size_t first = imageInfos.size();
             addImageInfos(executor, binding, *image->second, imageInfos);
             write.pImageInfo = &imageInfos[first];

@@ -8,6 +8,32 @@
 namespace glint::vk {
 namespace {
 
+// The formats entry files declare on storage images (GLINT_IMAGE_FORMAT).
+VkFormat toVkFormat(spv::ImageFormat format) {
+    switch (format) {
+    case spv::ImageFormatRgba32f:
+        return VK_FORMAT_R32G32B32A32_SFLOAT;
+    case spv::ImageFormatRgba16f:
+        return VK_FORMAT_R16G16B16A16_SFLOAT;
+    case spv::ImageFormatRg32f:
+        return VK_FORMAT_R32G32_SFLOAT;
+    case spv::ImageFormatRg16f:
+        return VK_FORMAT_R16G16_SFLOAT;
+    case spv::ImageFormatR32f:
+        return VK_FORMAT_R32_SFLOAT;
+    case spv::ImageFormatR16f:
+        return VK_FORMAT_R16_SFLOAT;
+    case spv::ImageFormatRgba8:
+        return VK_FORMAT_R8G8B8A8_UNORM;
+    case spv::ImageFormatR8:
+        return VK_FORMAT_R8_UNORM;
+    case spv::ImageFormatR32ui:
+        return VK_FORMAT_R32_UINT;
+    default:
+        return VK_FORMAT_UNDEFINED;
+    }
+}
+
 void addBindings(const spirv_cross::Compiler& compiler,
                  const spirv_cross::SmallVector<spirv_cross::Resource>& resources, VkDescriptorType type,
                  const std::string& moduleName, ReflectedShader& out) {
@@ -26,6 +52,8 @@ void addBindings(const spirv_cross::Compiler& compiler,
         for (uint32_t dimension : spirType.array) binding.count *= std::max(dimension, 1u);
         const spirv_cross::Bitset decorations = compiler.get_decoration_bitset(resource.id);
         binding.writable = !decorations.get(spv::DecorationNonWritable);
+        if (type == VK_DESCRIPTOR_TYPE_STORAGE_IMAGE)
+            binding.imageFormat = toVkFormat(compiler.get_type(resource.base_type_id).image.format);
         if (type == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER) {
             const spirv_cross::SPIRType& block = compiler.get_type(resource.base_type_id);
             binding.blockSize = static_cast<uint32_t>(compiler.get_declared_struct_size(block));

@@ -21,10 +21,11 @@ struct ReflectedBinding {
     std::string name; // the shader variable's name, which passes bind resources by
     uint32_t binding = 0;
     VkDescriptorType type = VK_DESCRIPTOR_TYPE_MAX_ENUM;
-    uint32_t count = 1;               // array size (arrays of storage images, e.g. per mip)
-    bool writable = true;             // storage resources not decorated NonWritable
-    uint32_t blockSize = 0;           // uniform buffers: declared size in bytes
-    std::vector<BlockMember> members; // uniform buffers: top-level members
+    uint32_t count = 1;                         // array size (arrays of storage images, e.g. per mip)
+    bool writable = true;                       // storage resources not decorated NonWritable
+    uint32_t blockSize = 0;                     // uniform buffers: declared size in bytes
+    VkFormat imageFormat = VK_FORMAT_UNDEFINED; // storage images: the declared format (UNDEFINED: unknown)
+    std::vector<BlockMember> members;           // uniform buffers: top-level members
 };
 
 struct ReflectedShader {

@@ -89,6 +89,7 @@ Result createSssr(const Device& device, const SssrDesc& desc, SssrEffect& effect
         if (planned.denoise) { // the denoiser's resources, allocated now like every other
             ReflectionsDenoiserDesc denoiser;
             denoiser.size = planned.size;
+            denoiser.halfPrecisionStorage = planned.halfPrecisionStorage;
             EffectPlan denoiserPlan;
             if (const Result result = planReflectionsDenoiser(denoiser, denoiserPlan, error);
                 result != Result::Ok)
@@ -166,6 +167,8 @@ Result dispatchSssr(SssrEffect& effect, Executor& executor, VkCommandBuffer cmd,
         if (!desc.denoise) return fail(error, "the effect was created without denoise");
         if (denoiser->size.width != desc.size.width || denoiser->size.height != desc.size.height)
             return fail(error, "the denoiser's size differs from the effect's");
+        if (denoiser->halfPrecisionStorage != desc.halfPrecisionStorage)
+            return fail(error, "the denoiser's halfPrecisionStorage must equal the effect's");
         EffectPlan denoiserPlan;
         if (const Result result = planReflectionsDenoiser(*denoiser, denoiserPlan, error);
             result != Result::Ok)
