@@ -118,7 +118,7 @@ const vk::Image& SssrRunner::ownedImage(const std::string& name) const {
 }
 
 void SssrRunner::run(const SssrDesc& frame, std::vector<double>* timings,
-                     const ReflectionsDenoiserDesc* denoiser) {
+                     const ReflectionsDenoiserDesc* denoiser, const vk::PassHooks* extraHooks) {
     if (images_.empty() || images_[kEnvironment].image == VK_NULL_HANDLE)
         throw std::runtime_error("sssr runner: upload the inputs (with an environment) before running");
     vk::SssrInputs inputs;
@@ -134,14 +134,14 @@ void SssrRunner::run(const SssrDesc& frame, std::vector<double>* timings,
     TimestampPool pool;
     if (timed) pool = createTimestampPool(context_.device, static_cast<std::uint32_t>(2 * passCount));
     vk::PassHooks hooks;
-    if (timed) {
-        hooks.beforeDispatch = [&](VkCommandBuffer cmd, std::size_t) {
-            writeTimestamp(cmd, pool, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
-        };
-        hooks.afterDispatch = [&](VkCommandBuffer cmd, std::size_t) {
-            writeTimestamp(cmd, pool, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT);
-        };
-    }
+    hooks.beforeDispatch = [&](VkCommandBuffer cmd, std::size_t index) {
+        if (extraHooks && extraHooks->beforeDispatch) extraHooks->beforeDispatch(cmd, index);
+        if (timed) writeTimestamp(cmd, pool, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
+    };
+    hooks.afterDispatch = [&](VkCommandBuffer cmd, std::size_t index) {
+        if (timed) writeTimestamp(cmd, pool, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT);
+        if (extraHooks && extraHooks->afterDispatch) extraHooks->afterDispatch(cmd, index);
+    };
     vk::resetExecutor(executor_);
     std::string error;
     Result result = Result::Ok;

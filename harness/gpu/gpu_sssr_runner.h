@@ -54,9 +54,10 @@ class SssrRunner {
     void upload(const SssrFrameInputs& inputs);
     // Records and submits one frame; with `timings`, per-pass GPU times (ms) in plan order.
     // With `denoiser` (the runner's desc has denoise), the reflections denoiser runs too and
-    // readback().radiance is its output.
+    // readback().radiance is its output. `extraHooks` are recorded around every dispatch, outside
+    // the timed span, e.g. for a test to copy an intermediate that a later pass overwrites.
     void run(const SssrDesc& frame, std::vector<double>* timings = nullptr,
-             const ReflectionsDenoiserDesc* denoiser = nullptr);
+             const ReflectionsDenoiserDesc* denoiser = nullptr, const vk::PassHooks* extraHooks = nullptr);
     SssrFrameOutputs readback() const;
     std::vector<std::string> passNames(const SssrDesc& frame, bool denoised = false) const;
     // An owned image by name (e.g. "rd_radiance0"), for tests that poison histories.

@@ -23,7 +23,9 @@ void GLINT_RD_StorePrefiltered(int2 pixel, float4 radianceAndVariance);
 groupshared float4 g_glint_rd_prefilter_radiance[GLINT_RD_SPAN * GLINT_RD_SPAN]; // rgb, variance
 groupshared float4 g_glint_rd_prefilter_geometry[GLINT_RD_SPAN * GLINT_RD_SPAN]; // normal, view depth (-1: not glossy)
 
-// The first 15 Halton(2, 3) points stretched to [-3, 3], centre excluded.
+// The 15 fixed taps within 3 pixels of reference/reflections_denoiser.md. They are described
+// there as Halton(2, 3) points, but the first one, (0, 1), is not: trunc(8h - 4) of Halton
+// index 1 gives (0, -1). The table is kept as specified; the CPU reference uses the same one.
 static const int2 g_glint_rd_prefilter_taps[15] = {
     int2(0, 1), int2(-2, 1), int2(2, -3), int2(-3, 0), int2(1, 2), int2(-1, -2), int2(3, 0), int2(-3, 3),
     int2(0, -3), int2(-1, -1), int2(2, 1), int2(-2, -2), int2(1, 0), int2(0, 2), int2(3, -1)};

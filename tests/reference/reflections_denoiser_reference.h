@@ -1,0 +1,103 @@
+// CPU references of the deterministic parts of the reflections denoiser
+// (docs/reflections_denoiser.md): the reproject pass's tile average, the prefilter pass, and
+// the resolve pass's clip and blend for one pixel. Written from the documented rules, in
+// double precision, independent of the shaders.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace glint::reference {
+
+using Rgb = std::array<double, 3>;
+
+// The denoiser's 8x8 tiles.
+inline constexpr std::uint32_t kDenoiserTileSize = 8;
+
+// A pixel offset (prefilter taps).
+struct PixelOffset {
+    int x = 0, y = 0;
+    friend bool operator==(const PixelOffset&, const PixelOffset&) = default;
+};
+
+// The prefilter's 15 fixed taps: the first 15 Halton(2, 3) points (indices 1..15) mapped to
+// whole pixels in [-3, 3] by trunc(8 h - 4), with the published table's one exception (see
+// the .cpp).
+std::array<PixelOffset, 15> prefilterTaps();
+
+// Per-tile data of one frame: the reproject pass's average and weight sum, and whether
+// SSSR's classification listed the tile this frame.
+struct TileGrid {
+    std::uint32_t tilesX = 0, tilesY = 0;
+    std::vector<Rgb> average;   // per tile
+    std::vector<double> weight; // per tile: weight sum (0: the tile has no glossy pixel)
+    std::vector<std::uint8_t> listed;
+};
+
+// The tile-average reduction of the reproject pass for every listed tile (others get 0):
+// each glossy pixel's contribution weighted by max(exp(-0.3 luma), 0.01), luma Rec. 709.
+// `contribution` holds rgb per pixel, `glossy` a flag per pixel, `listed` a flag per tile.
+TileGrid tileAverages(std::uint32_t width, std::uint32_t height, const std::vector<Rgb>& contribution,
+                      const std::vector<std::uint8_t>& glossy, const std::vector<std::uint8_t>& listed);
+
+// The tile average at a pixel: bilinear between the centres (8 i + 4) of the 2x2 surrounding
+// tiles, renormalized over those that are listed and have a weight; 0 when none has.
+Rgb averageAt(const TileGrid& tiles, std::uint32_t x, std::uint32_t y);
+
+// The per-pixel surface the passes share.
+struct DenoiserSurface {
+    std::uint32_t width = 0, height = 0;
+    std::vector<std::uint8_t> glossy;
+    std::vector<Rgb> normal;       // unit
+    std::vector<double> viewDepth; // > 0 where glossy
+    std::vector<double> alpha;     // GGX alpha
+};
+
+struct RadianceVariance {
+    Rgb rgb{};
+    double variance = 0.0;
+};
+
+struct PrefilterInputs {
+    const DenoiserSurface* surface = nullptr;
+    std::vector<Rgb> radiance;    // reproject's clamped sample per pixel
+    std::vector<double> variance; // reproject's temporal variance per pixel
+    const TileGrid* tiles = nullptr;
+    double mirrorThreshold = 1e-4;
+};
+
+// The prefilter pass for one frame: writes `out` (one entry per pixel) for every in-image
+// pixel of a listed tile and leaves the others untouched.
+void prefilter(const PrefilterInputs& inputs, std::vector<RadianceVariance>& out);
+
+// One glossy pixel of the resolve pass.
+struct ResolveInputs {
+    // The prefiltered radiance of the 9x9 neighbourhood (offsets -4..4, row-major, the centre
+    // at index 40), neighbour coordinates clamped to the image, and whether each is glossy.
+    std::array<Rgb, 81> prefiltered{};
+    std::array<bool, 81> glossy{};
+    double variance = 0.0; // the centre's prefiltered variance
+    Rgb average{};         // averageAt for the pixel
+    Rgb history{};         // reprojected history
+    bool historyValid = false;
+    double historyLength = 1.0;
+    double historyClipScale = 0.7;
+    // Added to the neighbourhood's sigma (clamped at 0): 0 for the pass itself; a test probes
+    // how much a rounding error in sigma can move the result with it.
+    Rgb sigmaOffset{};
+};
+
+// Resolve step 1: the Gaussian-weighted (exp(-3 i^2 / 25) per axis) mean, mean square and
+// standard deviation of the glossy neighbours, and the clip box's half-extent.
+struct NeighbourhoodStatistics {
+    Rgb mean{}, meanSquare{}, sigma{}, extent{};
+};
+NeighbourhoodStatistics resolveStatistics(const ResolveInputs& inputs);
+
+// The resolved radiance and the variance the pass stores for next frame.
+RadianceVariance resolvePixel(const ResolveInputs& inputs);
+
+double luma(const Rgb& c);
+
+} // namespace glint::reference
