@@ -10,6 +10,7 @@
 #include <gpu/gpu_plan_runner.h>
 #include <gpu/gpu_transfer.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <numbers>
@@ -58,6 +59,29 @@ ResourceUse write(const char* binding, const char* resource) {
     return {binding, resource, Access::Write};
 }
 
+// Samples per reference dispatch. llvmpipe stops any invocation after 65535 loop iterations
+// in all, which silently truncated the references at 64 spp and more (every ray's BVH walk is
+// a loop; a reflection sample also shades its hit with 16 shadow rays). Chunks keep each
+// invocation far below that; the shaders accumulate across chunks in the output image.
+constexpr std::uint32_t kReflectionChunk = 4;
+constexpr std::uint32_t kShadowChunk = 16;
+
+// A reference pass as ceil(total / chunk) dispatches, "name", "name#2", ...: the first writes
+// the image, the later ones read and update it; their times add up under "name".
+void addChunkedPasses(EffectPlan& plan, const char* name, const char* pipeline, std::vector<ResourceUse> uses,
+                      GLINT_SceneConstants constants, std::uint32_t total, std::uint32_t chunk,
+                      std::uint32_t width, std::uint32_t height) {
+    constants.sampleTotal = total;
+    for (std::uint32_t start = 0; start < total; start += chunk) {
+        constants.sampleStart = start;
+        constants.samples = std::min(chunk, total - start);
+        if (start > 0) uses.back().access = Access::ReadWrite;
+        Pass pass = makePass(name, pipeline, uses, constants, width, height);
+        if (start > 0) pass.name += "#" + std::to_string(start / chunk + 1);
+        plan.passes.push_back(std::move(pass));
+    }
+}
+
 // The passes of one frame and the images they write. Which passes exist depends only on
 // the declared effects and reference settings, never on the frame.
 EffectPlan planFrame(const Scene& scene, const GLINT_SceneConstants& base,
@@ -92,11 +116,11 @@ EffectPlan planFrame(const Scene& scene, const GLINT_SceneConstants& base,
         outputs.push_back({"color", "color", Format::RGBA32Float, {"R", "G", "B"}});
         if (scene.reference.reflections) {
             GLINT_SceneConstants c = base;
-            c.samples = scene.reference.samplesPerPixel;
             c.passSalt = 0x52454631u;
             uses = shading;
             uses.push_back(write("g_reflection", "reference.reflection"));
-            plan.passes.push_back(makePass("reference.reflection", "scene_reflection", uses, c, w, h));
+            addChunkedPasses(plan, "reference.reflection", "scene_reflection", uses, c,
+                             scene.reference.samplesPerPixel, kReflectionChunk, w, h);
             outputs.push_back(
                 {"reference.reflection", "reference.reflection", Format::RGBA32Float, {"R", "G", "B"}});
         }
@@ -112,11 +136,11 @@ EffectPlan planFrame(const Scene& scene, const GLINT_SceneConstants& base,
         plan.passes.push_back(makePass("shadow", "scene_shadow", uses, c, w, h));
         outputs.push_back({"shadow", "shadow", Format::R32Float, {"Y"}});
         if (scene.reference.shadows) {
-            c.samples = scene.reference.samplesPerPixel;
             c.passSalt = 0x53484432u;
             uses = common;
             uses.push_back(write("g_visibility", "reference.shadow"));
-            plan.passes.push_back(makePass("reference.shadow", "scene_shadow", uses, c, w, h));
+            addChunkedPasses(plan, "reference.shadow", "scene_shadow", uses, c,
+                             scene.reference.samplesPerPixel, kShadowChunk, w, h);
             outputs.push_back({"reference.shadow", "reference.shadow", Format::R32Float, {"Y"}});
         }
     }
@@ -227,6 +251,7 @@ Simulation simulate(const gpu::Context& context, const Scene& scene) {
     res.buffers = {materials, lights};
 
     std::vector<OutputImage> outputs;
+    std::vector<std::size_t> passSlot; // plan pass -> sim.passes entry (chunks share one)
     for (std::uint32_t frame = 0; frame < scene.frameCount; ++frame) {
         const FrameCamera cam = cameraAt(scene, frame);
         FrameGeometry geometry = buildGeometry(scene, meshes, frame);
@@ -254,7 +279,18 @@ Simulation simulate(const gpu::Context& context, const Scene& scene) {
         const EffectPlan plan = planFrame(scene, c, outputs);
         if (frame == 0) {
             res.owned = gpu::createPlanResources(context, plan);
-            for (const Pass& pass : plan.passes) sim.passes.push_back({pass.name, 0.0});
+            for (const Pass& pass : plan.passes) {
+                // Chunks of a reference pass ("name#k") share the entry of "name".
+                const std::string name = pass.name.substr(0, pass.name.find('#'));
+                auto entry = std::find_if(sim.passes.begin(), sim.passes.end(),
+                                          [&](const PassTime& t) { return t.pass == name; });
+                if (entry == sim.passes.end()) {
+                    passSlot.push_back(sim.passes.size());
+                    sim.passes.push_back({name, 0.0});
+                } else {
+                    passSlot.push_back(static_cast<std::size_t>(entry - sim.passes.begin()));
+                }
+            }
             for (const OutputImage& out : outputs) sim.layers.push_back(out.layer);
         }
 
@@ -272,10 +308,10 @@ Simulation simulate(const gpu::Context& context, const Scene& scene) {
         table.buffers["g_scene_lights"] = &lights;
 
         const gpu::PlanTimings timings = gpu::executePlan(context, res.executor, plan, table, 1);
-        for (std::size_t p = 0; p < sim.passes.size(); ++p) {
+        for (std::size_t p = 0; p < passSlot.size(); ++p) {
             const double ms = timings.times.empty() ? -1.0 : timings.times[0].at(p);
-            sim.passes[p].milliseconds =
-                ms < 0.0 || sim.passes[p].milliseconds < 0.0 ? -1.0 : sim.passes[p].milliseconds + ms;
+            PassTime& entry = sim.passes[passSlot[p]];
+            entry.milliseconds = ms < 0.0 || entry.milliseconds < 0.0 ? -1.0 : entry.milliseconds + ms;
         }
 
         capture::Frame f;

@@ -95,6 +95,12 @@ GLINT_CONSTANTS_BEGIN(GLINT_SceneConstants)
     uint ndcYDown;       // 1: Vulkan-style NDC (+y down)
     float environmentIntensity;
     uint passSalt;       // decorrelates the random numbers of different passes
+    // References run in chunks of `samples` (llvmpipe stops an invocation after 65535 loop
+    // iterations in all, which silently truncated references at high spp): this chunk covers
+    // samples [sampleStart, sampleStart + samples) of sampleTotal and accumulates into the image.
+    uint sampleStart;
+    uint sampleTotal;
+    uint2 padding;
 GLINT_CONSTANTS_END(GLINT_SceneConstants);
 
 #ifdef __cplusplus
@@ -105,7 +111,7 @@ static_assert(sizeof(SceneObject) == 48);
 static_assert(sizeof(SceneLight) == 32);
 static_assert(offsetof(GLINT_SceneConstants, eye) == 192);
 static_assert(offsetof(GLINT_SceneConstants, size) == 208);
-static_assert(sizeof(GLINT_SceneConstants) == 256);
+static_assert(sizeof(GLINT_SceneConstants) == 272);
 } // namespace glint::shaders
 #endif
 

@@ -55,18 +55,27 @@ float SceneVisibilityAlong(float3 position, float3 normal, float3 dir, float max
     return h.t > 0.0 ? 0.0 : 1.0;
 }
 
-// Mean visibility of `count` cone samples; stratified in cos(theta), golden-ratio in phi.
-float SceneVisibility(float3 position, float3 normal, SceneLightCone c, uint count, inout uint rng)
+// Visible count of cone samples [start, start + count) of a `total`-sample stratification
+// (stratified in cos(theta), golden-ratio in phi). The first two random numbers place the
+// whole stratification, so every chunk of one pixel must start from the same rng state.
+float SceneVisibilitySum(float3 position, float3 normal, SceneLightCone c, uint start, uint count, uint total,
+                         inout uint rng)
 {
     float visible = 0.0;
     float offset = SceneRandom(rng);
     float jitter = SceneRandom(rng);
-    for (uint i = 0; i < count; ++i) {
-        float u1 = (float(i) + jitter) / float(count);
+    for (uint i = start; i < start + count; ++i) {
+        float u1 = (float(i) + jitter) / float(max(total, 1u));
         float u2 = frac(offset + 0.618034 * float(i));
         visible += SceneVisibilityAlong(position, normal, SceneSampleCone(c, u1, u2), c.maxT);
     }
-    return visible / float(max(count, 1u));
+    return visible;
+}
+
+// Mean visibility of `count` cone samples.
+float SceneVisibility(float3 position, float3 normal, SceneLightCone c, uint count, inout uint rng)
+{
+    return SceneVisibilitySum(position, normal, c, 0, count, count, rng) / float(max(count, 1u));
 }
 
 #endif // GLINT_SCENE_LIGHT_HLSLI

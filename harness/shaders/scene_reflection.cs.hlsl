@@ -55,9 +55,12 @@ float3 SceneSampleVndf(float3 ve, float alpha, float u1, float u2)
         float3 ve = normalize(float3(dot(v, tx), dot(v, ty), max(dot(v, n), 1e-4)));
         float alpha = max(s.perceptualRoughness * s.perceptualRoughness, 1e-4);
         float3 start = SceneOffsetOrigin(s.position, n);
-        uint rng = SceneSeed(id.xy, g_scene.frameIndex, g_scene.passSalt);
-        float3 sum = 0.0;
-        uint used = 0;
+        // Each chunk of samples (sampleStart) draws its own random numbers.
+        uint rng = SceneSeed(id.xy, g_scene.frameIndex, g_scene.passSalt + g_scene.sampleStart * 0x9E3779B9u);
+        // The image holds (sum, used) of the earlier chunks until the last one normalizes.
+        float4 earlier = g_scene.sampleStart == 0 ? float4(0.0, 0.0, 0.0, 0.0) : g_reflection[id.xy];
+        float3 sum = earlier.rgb;
+        uint used = uint(earlier.a);
         for (uint i = 0; i < g_scene.samples; ++i) {
             float u1 = SceneRandom(rng);
             float u2 = SceneRandom(rng);
@@ -67,6 +70,10 @@ float3 SceneSampleVndf(float3 ve, float alpha, float u1, float u2)
             if (dot(n, l) <= 0.0) continue;
             sum += SceneFinite(SceneRadianceAlong(start, l));
             ++used;
+        }
+        if (g_scene.sampleStart + g_scene.samples < g_scene.sampleTotal) {
+            g_reflection[id.xy] = float4(sum, float(used));
+            return;
         }
         result = used > 0 ? sum / float(used) : SceneFinite(SceneRadianceAlong(start, reflect(-v, n)));
     }

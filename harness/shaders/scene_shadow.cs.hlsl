@@ -1,6 +1,7 @@
 // Visibility of light g_scene.shadowLight from the primary hit, averaged over g_scene.samples
 // cone samples toward the light's disc: 1 sample = the noisy `shadow` layer, many = the
-// `reference.shadow` layer. New random numbers every frame (frameIndex seeds them).
+// `reference.shadow` layer, run in chunks (sampleStart, sampleTotal) that accumulate a running
+// mean in the image. New random numbers every frame (frameIndex seeds them).
 // Background pixels are lit (1).
 #include "entry/common/glint_entry_common.hlsli"
 #include "../harness/shaders/scene_constants.h"
@@ -25,7 +26,11 @@
         float3 position = origin + dir * hit.t;
         float3 normal = SceneHitNormal(hit, origin, dir);
         uint rng = SceneSeed(id.xy, g_scene.frameIndex, g_scene.passSalt);
-        visibility = SceneVisibility(position, normal, SceneLightConeAt(g_scene.shadowLight, position), g_scene.samples, rng);
+        float sum = SceneVisibilitySum(position, normal, SceneLightConeAt(g_scene.shadowLight, position),
+                                       g_scene.sampleStart, g_scene.samples, g_scene.sampleTotal, rng);
+        // Running mean over the chunks so far (the image holds the previous chunks' mean).
+        float previous = g_scene.sampleStart == 0 ? 0.0 : g_visibility[id.xy] * float(g_scene.sampleStart);
+        visibility = (previous + sum) / float(max(g_scene.sampleStart + g_scene.samples, 1u));
     }
     g_visibility[id.xy] = visibility;
 }
