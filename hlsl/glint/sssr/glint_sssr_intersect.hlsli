@@ -232,6 +232,25 @@ GLINT_SSSR_Ray GLINT_SSSR_SetupRay(GLINT_SssrConstants c, uint2 pixel, float dep
     return ray;
 }
 
+// The depth slope per pixel along `axis` when the texel lies on a plane along it: device depth
+// is affine in screen space on a plane, so both one-sided differences agree (within 5 %). 0 at
+// depth edges, curvature, the image border and next to the background. An earlier version took
+// the smaller one-sided difference everywhere and accepted wrong hits at silhouettes.
+float GLINT_SSSR_ConsistentSlope(GLINT_SssrConstants c, int2 texel, int2 axis, float centre)
+{
+    int2 last = int2(c.inputSize) - 1;
+    if (any(texel + axis > last) || any(texel - axis < 0))
+        return 0.0;
+    float after = GLINT_SSSR_LoadDepth(texel + axis, 0);
+    float before = GLINT_SSSR_LoadDepth(texel - axis, 0);
+    bool reversed = GLINT_SSSR_Reversed(c);
+    if (GLINT_SSSR_IsBackground(after, reversed) || GLINT_SSSR_IsBackground(before, reversed))
+        return 0.0;
+    float forward = after - centre;
+    float backward = centre - before;
+    return abs(forward - backward) <= 0.05 * max(abs(forward), abs(backward)) ? 0.5 * (forward + backward) : 0.0;
+}
+
 float GLINT_SSSR_Vignette(GLINT_SssrConstants c, float2 uv)
 {
     float2 fade = 0.05 * float2(float(c.inputSize.y) * c.inverseInputSize.x, 1.0);
@@ -378,14 +397,20 @@ void GLINT_SSSR_Intersect(GLINT_SssrConstants c, uint groupIndex, uint rayIndex)
             state.rayClass = GLINT_SSSR_RAY_BEHIND;
         else
         {
-            // The gap between the ray and the depth texel taken as a flat box at its depth
-            // (the traversal's own model). Known limit: a correct hit that enters a texel of a
-            // wall seen at a grazing angle through its side is half a texel of depth slope away
-            // and loses confidence (stripes on the mirror corridor's walls). Measuring against
-            // the texel's tangent plane as well fixed those but accepted more wrong hits, and
-            // raised the glossy room's overall error (docs/sssr.md).
+            // The gap between the ray and the surface, under two models of the depth texel,
+            // keeping the smaller: a flat box at the texel's depth (the traversal's own model,
+            // exact for hits on a cell's closest plane), and the texel's plane where the depth is
+            // planar across it. With the box alone, a correct hit that enters a texel of a wall
+            // seen at a grazing angle through its side is half a texel of depth slope away and
+            // loses confidence (stripes on the mirror corridor's walls).
             float surface = GLINT_SSSR_ViewDepth(c, hitDepth);
-            float gap = GLINT_FiniteOr(abs(GLINT_SSSR_ViewDepth(c, hit.z) - surface), 3.0e38);
+            float rayDepth = GLINT_SSSR_ViewDepth(c, hit.z);
+            float gap = abs(rayDepth - surface);
+            float2 slope = float2(GLINT_SSSR_ConsistentSlope(c, hitPixel, int2(1, 0), hitDepth),
+                                  GLINT_SSSR_ConsistentSlope(c, hitPixel, int2(0, 1), hitDepth));
+            float planeDepth = hitDepth + dot(slope, hit.xy - (float2(hitPixel) + 0.5));
+            gap = min(gap, abs(rayDepth - GLINT_SSSR_ViewDepth(c, planeDepth)));
+            gap = GLINT_FiniteOr(gap, 3.0e38);
             float fit = 1.0 - smoothstep(0.0, GLINT_SSSR_Thickness(c, surface), gap);
             float vignette = GLINT_SSSR_Vignette(c, hitUv);
             if ((c.flags & GLINT_SSSR_FLAG_PREVIOUS_FRAME_COLOR) != 0)
