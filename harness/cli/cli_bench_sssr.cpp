@@ -3,6 +3,7 @@
 // Settings come from --set name=value, so the same runs can sweep options.
 #include "cli_bench_sssr.h"
 
+#include "core/camera.h"
 #include "replay/replay_sssr.h"
 #include "scene/scene_file.h"
 #include "scene/scene_simulate.h"
@@ -139,13 +140,7 @@ int runBenchSssr(const BenchOptions& options, const gpu::Context& context) {
     denoiser.roughnessThreshold = desc.roughnessThreshold;
     denoiser.mirrorThreshold = desc.mirrorThreshold;
     denoiser.halfPrecisionStorage = desc.halfPrecisionStorage;
-    for (std::size_t r = 0; r < 4; ++r)
-        for (std::size_t c = 0; c < 4; ++c) {
-            double sum = 0.0;
-            for (std::size_t k = 0; k < 4; ++k)
-                sum += desc.projection[4 * r + k] * desc.viewFromWorld[4 * k + c];
-            denoiser.previousClipFromWorld[4 * r + c] = sum;
-        }
+    denoiser.previousClipFromWorld = core::multiply(desc.projection, desc.viewFromWorld);
     std::vector<std::vector<double>> times(passes.size());
     for (std::uint32_t run = 0; run < std::min(options.runs, 10u) + options.runs; ++run) {
         desc.frameIndex = run;

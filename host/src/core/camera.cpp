@@ -14,6 +14,14 @@ shared::float4 viewDepthCoefficients(bool reversed, double n, double f) {
     return {static_cast<float>(a), static_cast<float>(n / (f - n)), 1.0f, 0.0f}; // z = n f / (n + d (f - n))
 }
 
+Matrix4 multiply(const Matrix4& a, const Matrix4& b) {
+    Matrix4 out{};
+    for (std::size_t r = 0; r < 4; ++r)
+        for (std::size_t c = 0; c < 4; ++c)
+            for (std::size_t k = 0; k < 4; ++k) out[4 * r + c] += a[4 * r + k] * b[4 * k + c];
+    return out;
+}
+
 bool isFinite(const Matrix4& matrix) {
     for (double value : matrix)
         if (!std::isfinite(value)) return false;

@@ -20,6 +20,9 @@ bool invert(const Matrix4& matrix, Matrix4& inverse);
 
 bool isFinite(const Matrix4& matrix);
 
+// a b (b applied first), in double.
+Matrix4 multiply(const Matrix4& a, const Matrix4& b);
+
 // Row i of the matrix as float4 (the layout the constants headers use).
 void storeRows(const Matrix4& matrix, shared::float4 rows[4]);
 

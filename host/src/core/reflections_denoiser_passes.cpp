@@ -15,14 +15,6 @@ Result invalid(std::string* error, const std::string& message) {
     return core::invalidArgument(error, "reflections denoiser", message);
 }
 
-core::Matrix4 multiply(const core::Matrix4& a, const core::Matrix4& b) {
-    core::Matrix4 out{};
-    for (std::size_t r = 0; r < 4; ++r)
-        for (std::size_t c = 0; c < 4; ++c)
-            for (std::size_t k = 0; k < 4; ++k) out[4 * r + c] += a[4 * r + k] * b[4 * k + c];
-    return out;
-}
-
 std::string checkDesc(const ReflectionsDenoiserDesc& desc) {
     if (!core::validExtent(desc.size)) return "size must be 1..16384 in each dimension";
     if (!(std::isfinite(desc.nearPlane) && desc.nearPlane > 0.0f))
@@ -81,7 +73,7 @@ Result planReflectionsDenoiser(const ReflectionsDenoiserDesc& desc, EffectPlan& 
     c.inverseInputSize = {1.0f / static_cast<float>(desc.size.width),
                           1.0f / static_cast<float>(desc.size.height)};
     core::storeRows(viewFromClip, c.viewFromClip);
-    core::storeRows(multiply(desc.previousClipFromWorld, worldFromView), c.previousClipFromView);
+    core::storeRows(core::multiply(desc.previousClipFromWorld, worldFromView), c.previousClipFromView);
     const bool reversed = desc.depth == DepthConvention::Reversed;
     c.viewDepth = core::viewDepthCoefficients(reversed, desc.nearPlane, desc.farPlane);
     c.normalUnpack = {desc.normalUnpackMul, desc.normalUnpackAdd};
