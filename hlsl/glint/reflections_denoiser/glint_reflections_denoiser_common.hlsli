@@ -25,6 +25,7 @@ struct GLINT_RD_Surface
 {
     float3 normal;    // unit, world space
     float viewDepth;  // > 0
+    float depth;      // the device depth it came from
     float alpha;
     bool glossy;
 };
@@ -54,6 +55,7 @@ GLINT_RD_Surface GLINT_RD_LoadSurface(GLINT_ReflectionsDenoiserConstants c, int2
 {
     GLINT_RD_Surface s;
     float depth = GLINT_RD_LoadDepth(pixel);
+    s.depth = depth;
     float3 n = GLINT_RD_LoadNormal(pixel) * c.normalUnpack.x + c.normalUnpack.y;
     float lengthSquared = dot(n, n);
     s.alpha = GLINT_FiniteOr(GLINT_RD_LoadRoughness(pixel), 1.0);

@@ -160,7 +160,7 @@ void GLINT_RD_Reproject(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint
     float2 uv = (float2(ipixel) + 0.5) * c.inverseInputSize;
     GLINT_RD_History history = (GLINT_RD_History)0;
     history.valid = false;
-    float3 viewPosition = GLINT_RD_ViewPosition(c, uv, GLINT_RD_LoadDepth(ipixel));
+    float3 viewPosition = GLINT_RD_ViewPosition(c, uv, surface.depth);
     if (surface.glossy)
     {
         float expectedViewDepth;

@@ -84,14 +84,8 @@ Pass classifyPass(const ShadowDenoiserDesc& desc, Extent2D tiles) {
     shaders::GLINT_ShadowDenoiserClassifyConstants constants{};
     constants.inputSize = {desc.size.width, desc.size.height};
     constants.maskTiles = {tiles.width, tiles.height};
-    for (std::size_t row = 0; row < 4; ++row) {
-        const double* r = &desc.reprojection[4 * row];
-        const double* v = &desc.inverseViewProjection[4 * row];
-        constants.reproject[row] = {static_cast<float>(r[0]), static_cast<float>(r[1]),
-                                    static_cast<float>(r[2]), static_cast<float>(r[3])};
-        constants.inverseViewProj[row] = {static_cast<float>(v[0]), static_cast<float>(v[1]),
-                                          static_cast<float>(v[2]), static_cast<float>(v[3])};
-    }
+    core::storeRows(desc.reprojection, constants.reproject);
+    core::storeRows(desc.inverseViewProjection, constants.inverseViewProj);
     constants.eyePosition = {desc.eyePosition[0], desc.eyePosition[1], desc.eyePosition[2], 0.0f};
     constants.viewDepth = viewDepthCoefficients(desc);
     constants.normalUnpack = {desc.normalUnpackMul, desc.normalUnpackAdd};
