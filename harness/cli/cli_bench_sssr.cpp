@@ -4,6 +4,7 @@
 #include "cli_bench_sssr.h"
 
 #include "core/camera.h"
+#include "replay/replay_settings.h"
 #include "replay/replay_sssr.h"
 #include "scene/scene_file.h"
 #include "scene/scene_simulate.h"
@@ -16,29 +17,6 @@
 
 namespace glint::cli {
 namespace {
-
-float parseFloat(const std::string& name, const std::string& value) {
-    try {
-        std::size_t used = 0;
-        const float parsed = std::stof(value, &used);
-        if (used == value.size()) return parsed;
-    } catch (const std::exception&) {
-    }
-    throw std::invalid_argument("bench: --set " + name + " needs a number, got '" + value + "'");
-}
-
-bool parseBool(const std::string& name, const std::string& value) {
-    if (value == "1" || value == "true" || value == "on") return true;
-    if (value == "0" || value == "false" || value == "off") return false;
-    throw std::invalid_argument("bench: --set " + name + " needs true or false, got '" + value + "'");
-}
-
-std::uint32_t parseUint(const std::string& name, const std::string& value) {
-    const float parsed = parseFloat(name, value);
-    if (parsed < 0.0f || parsed != static_cast<float>(static_cast<std::uint32_t>(parsed)))
-        throw std::invalid_argument("bench: --set " + name + " needs a whole number, got '" + value + "'");
-    return static_cast<std::uint32_t>(parsed);
-}
 
 // With debugOutput: how the traced rays ended and how many iterations they took.
 void printRayClasses(const gpu::SssrFrameOutputs& out) {
@@ -67,45 +45,6 @@ void printRayClasses(const gpu::SssrFrameOutputs& out) {
 
 } // namespace
 
-void applySssrSetting(SssrDesc& desc, const std::string& assignment) {
-    const std::size_t equals = assignment.find('=');
-    if (equals == std::string::npos)
-        throw std::invalid_argument("bench: --set wants name=value, got '" + assignment + "'");
-    const std::string name = assignment.substr(0, equals), value = assignment.substr(equals + 1);
-    if (name == "samplesPerQuad")
-        desc.samplesPerQuad = parseUint(name, value);
-    else if (name == "maxTraversalIterations")
-        desc.maxTraversalIterations = parseUint(name, value);
-    else if (name == "mostDetailedMip")
-        desc.mostDetailedMip = parseUint(name, value);
-    else if (name == "roughnessThreshold")
-        desc.roughnessThreshold = parseFloat(name, value);
-    else if (name == "occupancyExitFraction")
-        desc.occupancyExitFraction = parseFloat(name, value);
-    else if (name == "importanceSampleBias")
-        desc.importanceSampleBias = parseFloat(name, value);
-    else if (name == "thickness")
-        desc.thickness = parseFloat(name, value);
-    else if (name == "thicknessAware")
-        desc.thicknessAware = parseBool(name, value);
-    else if (name == "halfResolution")
-        desc.halfResolution = parseBool(name, value);
-    else if (name == "previousFrameColor")
-        desc.previousFrameColor = parseBool(name, value);
-    else if (name == "halfPrecisionStorage")
-        desc.halfPrecisionStorage = parseBool(name, value);
-    else if (name == "denoise")
-        desc.denoise = parseBool(name, value);
-    else if (name == "debugOutput")
-        desc.debugOutput = parseBool(name, value);
-    else
-        throw std::invalid_argument(
-            "bench: unknown setting '" + name +
-            "' (samplesPerQuad, maxTraversalIterations, mostDetailedMip, roughnessThreshold, "
-            "occupancyExitFraction, importanceSampleBias, thickness, thicknessAware, "
-            "halfResolution, previousFrameColor, debugOutput, halfPrecisionStorage, denoise)");
-}
-
 int runBenchSssr(const BenchOptions& options, const gpu::Context& context) {
     scene::Scene scene =
         scene::loadScene(options.scene.empty() ? "harness/scenes/glossy_room.toml" : options.scene);
@@ -120,7 +59,7 @@ int runBenchSssr(const BenchOptions& options, const gpu::Context& context) {
     SssrDesc desc;
     gpu::SssrFrameInputs inputs;
     replay::sssrFromFrame(simulation.frames.at(0), simulation.environment.value(), desc, inputs);
-    for (const std::string& setting : options.settings) applySssrSetting(desc, setting);
+    replay::copySssrTunables(replay::parseSettings(options.settings).sssr, desc);
     if (desc.materialChannel != 0)
         throw std::invalid_argument("bench: roughness must come from material channel 0");
     gpu::SssrRunner runner(context, desc, /*compactInputs=*/true);

@@ -11,9 +11,6 @@
 
 namespace glint::cli {
 
-// Applies one "name=value" setting to the desc; throws std::invalid_argument naming it.
-void applySssrSetting(SssrDesc& desc, const std::string& assignment);
-
 int runBenchSssr(const BenchOptions& options, const gpu::Context& context);
 
 } // namespace glint::cli

@@ -26,6 +26,12 @@ struct BenchOptions {
     std::string scene;                 // sssr: the scene to simulate (default the glossy room)
     std::vector<std::string> settings; // sssr: "name=value" desc overrides
     bool validate = false;
+    // Captures (cli_bench_capture.cpp): frame .exr files, sequence folders or scene .toml files
+    // named instead of a synthetic effect.
+    std::vector<std::string> captures;
+    std::vector<std::string> effects; // --effects; empty: the capture's declared effects
+    std::string json;                 // --json FILE, "-" for stdout (the table then goes to stderr)
+    bool sizeGiven = false;           // --size/--resolution named: captures must match it
 };
 
 struct SimulateOptions {
@@ -38,7 +44,54 @@ struct SimulateOptions {
     bool validate = false;
 };
 
+// glint run / dump / check: a capture replayed through its effects (docs/replay.md).
+struct ReplayOptions {
+    std::string capture;                 // frame .exr, sequence folder, or foreign EXR(s) with mapPath
+    std::string mapPath;                 // --map: channel map of a foreign capture
+    std::string outDir;                  // run, dump
+    std::string expectedDir;             // check
+    std::vector<std::string> effects;    // empty: the capture's declared effects
+    std::vector<std::string> settings;   // "name=value"
+    std::string frames;                  // run: "a..b"; dump/check: the frame to look at ("" = last)
+    std::string pass = "all";            // dump/check: a pass name, "effect/pass" or "all"
+    std::vector<std::string> tolerances; // check: "pass=abs,rel[,fraction]"
+    bool json = false;                   // run: also print the summary as JSON on stdout
+    bool validate = false;
+};
+
+// glint study (cli_study.cpp): settings swept per effect on simulated scenes with references,
+// GPU time and error of each point; with `scaling`, time against resolution and against the
+// fraction of pixels the effect works on (docs/accuracy-vs-time.md).
+struct StudyOptions {
+    std::string outDir;
+    std::string effect = "all";      // reflections | shadows | all
+    std::vector<std::string> scenes; // empty: three bundled scenes per effect
+    uint32_t width = 0, height = 0;  // 0: 1920x1080 (--quick: tiny)
+    uint32_t frames = 0;             // 0: 16 (--quick: 3)
+    uint32_t spp = 0;                // 0: per-effect default reference samples per pixel
+    uint32_t runs = 0;               // 0: 50 timed runs per point (--quick: 2)
+    bool quick = false;
+    bool scaling = false;
+    bool validate = false;
+};
+
+// True for the names `glint bench` times on synthetic inputs (depth_pyramid, roughness, ...).
+bool isSyntheticBenchEffect(const std::string& name);
+int runBenchCaptures(const BenchOptions& options);
+int runStudy(const StudyOptions& options);
+
+// glint report: an HTML page from folders written by glint run.
+struct ReportOptions {
+    std::vector<std::string> runs;
+    std::string outPath;
+    std::string title = "glint report";
+};
+
 int runDevices(bool validate);
+int runReport(const ReportOptions& options);
+int runRun(const ReplayOptions& options);
+int runDump(const ReplayOptions& options);
+int runCheck(const ReplayOptions& options);
 int runSimulate(const SimulateOptions& options);
 int runBench(const BenchOptions& options);
 int runInfo(const std::string& path, bool loadPixels);

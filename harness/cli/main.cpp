@@ -29,9 +29,15 @@ int main(int argc, char** argv) {
     std::string benchSize = "1920x1080";
     CLI::App* benchCommand =
         app.add_subcommand("bench", "GPU time of one effect (median of timestamped runs)");
-    benchCommand->add_option("effect", bench.effect, "depth_pyramid | roughness | shadow_denoiser | sssr")
+    // One synthetic effect name, or one or more captures (cli_bench_capture.cpp).
+    std::vector<std::string> benchTargets;
+    benchCommand
+        ->add_option("effect", benchTargets,
+                     "depth_pyramid | roughness | shadow_denoiser | sssr, or captures: frame .exr, "
+                     "sequence folders, scene .toml")
         ->required();
-    benchCommand->add_option("--size", benchSize, "render size WxH")->capture_default_str();
+    CLI::Option* benchSizeOption =
+        benchCommand->add_option("--size,--resolution", benchSize, "render size WxH")->capture_default_str();
     benchCommand->add_option("--runs", bench.runs, "measured runs")->capture_default_str();
     benchCommand->add_option("--levels", bench.levels, "depth pyramid levels (0 = full chain)");
     benchCommand->add_flag("--reversed", bench.reversed, "reversed depth (closest = max)");
@@ -41,6 +47,30 @@ int main(int argc, char** argv) {
     benchCommand->add_option("--scene", bench.scene,
                              "sssr: scene file to simulate (default: the glossy room)");
     benchCommand->add_option("--set", bench.settings, "sssr: a setting, name=value (repeatable)");
+    benchCommand
+        ->add_option("--effects", bench.effects,
+                     "captures: depth_pyramid, reflections, shadows (default: declared)")
+        ->delimiter(',');
+    benchCommand->add_option("--json", bench.json,
+                             "captures: also write the results as JSON to FILE ('-': stdout)");
+
+    glint::cli::StudyOptions study;
+    std::string studySize;
+    CLI::App* studyCommand = app.add_subcommand(
+        "study", "Sweep effect settings on scenes with references: GPU time and error per setting");
+    studyCommand->add_option("--out", study.outDir, "output folder (study.csv, study.json, images/)")
+        ->required();
+    studyCommand->add_option("--effect", study.effect, "reflections | shadows | all")->capture_default_str();
+    studyCommand
+        ->add_option("--scenes", study.scenes, "scene files (default: three bundled scenes per effect)")
+        ->delimiter(',');
+    studyCommand->add_option("--size", studySize, "resolution WxH (default 1920x1080)");
+    studyCommand->add_option("--frames", study.frames, "frames per point; the last is measured (default 16)");
+    studyCommand->add_option("--spp", study.spp, "reference samples per pixel");
+    studyCommand->add_option("--runs", study.runs, "timed runs per point (default 50)");
+    studyCommand->add_flag("--quick", study.quick, "tiny sizes, few frames and points (smoke test)");
+    studyCommand->add_flag("--scaling", study.scaling,
+                           "time against resolution and against the fraction of affected pixels");
 
     glint::cli::SimulateOptions simulate;
     std::string simulateSize;
@@ -56,6 +86,49 @@ int main(int argc, char** argv) {
     simulateCommand->add_option("--spp", simulate.spp, "override the reference samples per pixel");
     CLI::Option* seedOption =
         simulateCommand->add_option("--seed", simulateSeed, "override the scene's seed");
+
+    // run, dump and check share the capture, map, effect and setting options.
+    glint::cli::ReplayOptions run, dump, check;
+    auto replayOptions = [](CLI::App* command, glint::cli::ReplayOptions& options) {
+        command
+            ->add_option("capture", options.capture,
+                         "frame .exr, sequence folder, or foreign EXR(s) with --map")
+            ->required();
+        command->add_option("--map", options.mapPath, "channel map of a foreign capture (docs/replay.md)");
+        command
+            ->add_option("--effects", options.effects,
+                         "depth_pyramid, reflections, shadows (default: declared)")
+            ->delimiter(',');
+        command->add_option("--set", options.settings, "a setting, name=value (repeatable)");
+    };
+    CLI::App* runCommand =
+        app.add_subcommand("run", "Replay a capture through its effects; write outputs and a summary");
+    replayOptions(runCommand, run);
+    runCommand->add_option("--out", run.outDir, "output folder")->required();
+    runCommand->add_option("--frames", run.frames, "frames a..b (inclusive), a.. or a");
+    runCommand->add_flag("--json", run.json, "also print the summary as JSON");
+    CLI::App* dumpCommand =
+        app.add_subcommand("dump", "Write every intermediate of the named passes of one frame");
+    replayOptions(dumpCommand, dump);
+    dumpCommand->add_option("--out", dump.outDir, "output folder")->required();
+    dumpCommand->add_option("--pass", dump.pass, "pass name, effect/pass, input or all")
+        ->capture_default_str();
+    dumpCommand->add_option("--frame", dump.frames, "the frame to dump (default: the last)");
+    CLI::App* checkCommand = app.add_subcommand(
+        "check", "Compare each pass's outputs with expected ones laid out like glint dump's");
+    replayOptions(checkCommand, check);
+    checkCommand->add_option("--expected", check.expectedDir, "folder laid out as glint dump writes")
+        ->required();
+    checkCommand->add_option("--pass", check.pass, "pass name, effect/pass or all")->capture_default_str();
+    checkCommand->add_option("--frame", check.frames, "the frame to compare (default: the last)");
+    checkCommand->add_option("--tolerance", check.tolerances, "effect/pass=abs,rel[,fraction] (repeatable)");
+
+    glint::cli::ReportOptions report;
+    CLI::App* reportCommand =
+        app.add_subcommand("report", "Write one HTML page from folders written by glint run");
+    reportCommand->add_option("runs", report.runs, "folders written by glint run")->required();
+    reportCommand->add_option("--out", report.outPath, "the HTML file")->required();
+    reportCommand->add_option("--title", report.title, "page title")->capture_default_str();
 
     try {
         app.parse(argc, argv);
@@ -76,11 +149,37 @@ int main(int argc, char** argv) {
             simulate.validate = validate;
             return glint::cli::runSimulate(simulate);
         }
+        if (*reportCommand) return glint::cli::runReport(report);
+        if (*runCommand) {
+            run.validate = validate;
+            return glint::cli::runRun(run);
+        }
+        if (*dumpCommand) {
+            dump.validate = validate;
+            return glint::cli::runDump(dump);
+        }
+        if (*checkCommand) {
+            check.validate = validate;
+            return glint::cli::runCheck(check);
+        }
         if (*benchCommand) {
             if (std::sscanf(benchSize.c_str(), "%ux%u", &bench.width, &bench.height) != 2)
                 throw std::invalid_argument("bench: --size must read WxH, e.g. 1920x1080");
             bench.validate = validate;
+            bench.sizeGiven = benchSizeOption->count() > 0;
+            if (benchTargets.size() == 1 && glint::cli::isSyntheticBenchEffect(benchTargets.front()))
+                bench.effect = benchTargets.front();
+            else
+                bench.captures = benchTargets;
+            if (!bench.captures.empty()) return glint::cli::runBenchCaptures(bench);
             return glint::cli::runBench(bench);
+        }
+        if (*studyCommand) {
+            if (!studySize.empty() &&
+                std::sscanf(studySize.c_str(), "%ux%u", &study.width, &study.height) != 2)
+                throw std::invalid_argument("study: --size must read WxH, e.g. 1920x1080");
+            study.validate = validate;
+            return glint::cli::runStudy(study);
         }
     } catch (const std::exception& error) {
         std::fprintf(stderr, "glint: %s\n", error.what());

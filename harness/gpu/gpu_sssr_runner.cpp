@@ -108,8 +108,10 @@ std::vector<std::string> SssrRunner::passNames(const SssrDesc& frame, bool denoi
     std::vector<std::string> names;
     if (planSssr(frame, plan, nullptr) == Result::Ok)
         for (const Pass& pass : plan.passes) names.push_back(pass.name);
-    if (denoised)
-        for (const char* name : {"reproject", "prefilter", "resolve"}) names.push_back(name);
+    if (denoised) { // dispatched between the intersection and the composite (vk_sssr.cpp)
+        const auto composite = std::find(names.begin(), names.end(), "composite");
+        names.insert(composite, {"reproject", "prefilter", "resolve"});
+    }
     return names;
 }
 

@@ -39,6 +39,48 @@ std::vector<float> layerChannels(const capture::Frame& frame, const std::string&
     return out;
 }
 
+std::vector<float> decodedNormals(const capture::Frame& frame) {
+    std::vector<float> normals = layerChannels(frame, "normal", 4);
+    if (frame.normalEncoding == capture::NormalEncoding::Octahedral)
+        for (std::size_t i = 0; i < normals.size() / 4; ++i)
+            decodeOctahedral(normals[4 * i], normals[4 * i + 1], &normals[4 * i]);
+    return normals;
+}
+
+std::vector<float> motionConventionA(const capture::Frame& frame) {
+    std::vector<float> motion = layerChannels(frame, "motion", 2);
+    for (std::size_t i = 0; i < motion.size() / 2; ++i) {
+        const capture::Float2 a = capture::toConventionA({motion[2 * i], motion[2 * i + 1]}, frame.motion,
+                                                         frame.width, frame.height, frame.camera.ndcYDown);
+        motion[2 * i] = a.x;
+        motion[2 * i + 1] = a.y;
+    }
+    return motion;
+}
+
+ReflectionsDenoiserDesc denoiserFromFrame(const capture::Frame& frame, const SssrDesc& sssr,
+                                          std::uint32_t frameIndex, bool reset) {
+    ReflectionsDenoiserDesc d;
+    d.size = sssr.size;
+    d.projection = sssr.projection;
+    d.viewFromWorld = sssr.viewFromWorld;
+    d.previousClipFromWorld = frame.camera.prevViewProjection.m;
+    d.depth = sssr.depth;
+    d.nearPlane = sssr.nearPlane;
+    d.farPlane = sssr.farPlane;
+    d.vulkanNdc = sssr.vulkanNdc;
+    d.normalUnpackMul = sssr.normalUnpackMul;
+    d.normalUnpackAdd = sssr.normalUnpackAdd;
+    d.motionScaleX = sssr.motionScaleX;
+    d.motionScaleY = sssr.motionScaleY;
+    d.roughnessThreshold = sssr.roughnessThreshold;
+    d.mirrorThreshold = sssr.mirrorThreshold;
+    d.halfPrecisionStorage = sssr.halfPrecisionStorage;
+    d.resetHistory = reset;
+    d.frameIndex = frameIndex;
+    return d;
+}
+
 void sssrFromFrame(const capture::Frame& frame, const capture::Environment& environment, SssrDesc& desc,
                    gpu::SssrFrameInputs& inputs) {
     const capture::Camera& camera = frame.camera;
@@ -56,15 +98,11 @@ void sssrFromFrame(const capture::Frame& frame, const capture::Environment& envi
 
     inputs.depth = layerChannels(frame, "depth", 1);
     const std::size_t count = std::size_t{frame.width} * frame.height;
-    std::vector<float> normals = layerChannels(frame, "normal", 4);
     if (frame.normalEncoding == capture::NormalEncoding::WorldUnorm) {
         desc.normalUnpackMul = 2.0f;
         desc.normalUnpackAdd = -1.0f;
-    } else if (frame.normalEncoding == capture::NormalEncoding::Octahedral) {
-        for (std::size_t i = 0; i < count; ++i)
-            decodeOctahedral(normals[4 * i], normals[4 * i + 1], &normals[4 * i]);
     }
-    inputs.normals = std::move(normals);
+    inputs.normals = decodedNormals(frame);
 
     const capture::RoughnessSource& source = frame.roughness;
     if (source.layer.empty()) throw std::runtime_error("capture declares no roughness source");
@@ -83,14 +121,7 @@ void sssrFromFrame(const capture::Frame& frame, const capture::Environment& envi
     desc.roughnessIsPerceptual = source.perceptual;
 
     inputs.color = layerChannels(frame, "color", 4);
-    inputs.motion = layerChannels(frame, "motion", 2);
-    for (std::size_t i = 0; i < count; ++i) {
-        const capture::Float2 a =
-            capture::toConventionA({inputs.motion[2 * i], inputs.motion[2 * i + 1]}, frame.motion,
-                                   frame.width, frame.height, camera.ndcYDown);
-        inputs.motion[2 * i] = a.x;
-        inputs.motion[2 * i + 1] = a.y;
-    }
+    inputs.motion = motionConventionA(frame);
     desc.motionScaleX = 1.0f;
     desc.motionScaleY = 1.0f;
     if (capture::findLayer(frame, "material")) inputs.baseColorMetallic = layerChannels(frame, "material", 4);

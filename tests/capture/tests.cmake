@@ -2,6 +2,7 @@
 glint_add_test_suite(NAME capture LABELS unit
   SOURCES
     capture/capture_test_support.cpp
+    capture/channel_map_test.cpp
     capture/describe_test.cpp
     capture/environment_test.cpp
     capture/malformed_file_test.cpp

@@ -70,3 +70,32 @@ glint_cli_test(NAME "bench sssr with an unknown setting is a usage error naming 
   STDERR_ONE_LINE "unknown setting 'nosuch'"
   COMMAND bench sssr --size 16x16 --runs 1 --scene "${PROJECT_SOURCE_DIR}/harness/scenes/glossy_room.toml"
           --set nosuch=1)
+
+# glint bench on captures and glint study (docs/accuracy-vs-time.md).
+glint_cli_test(NAME "bench on a sample capture prints per-pass medians as JSON under validation" LABELS gpu EXIT 0
+  STDOUT "^[{].*passes.*medianUs.*reflections/intersect.*subgroupSize.*[}] *$"
+  COMMAND --validate bench "${GLINT_CLI_SAMPLE_DIR}/sample" --runs 2 --json -)
+glint_cli_test(NAME "bench simulates a scene file at the requested resolution and times its passes" LABELS gpu EXIT 0
+  STDOUT "subgroup [0-9]+.*courtyard_penumbra.toml: 40x24.*shadows/filter2.*total"
+  COMMAND --validate bench "${PROJECT_SOURCE_DIR}/harness/scenes/courtyard_penumbra.toml" --resolution 40x24
+          --runs 2)
+glint_cli_test(NAME "bench on a missing capture prints one line and exits 2" LABELS unit EXIT 2
+  STDERR_ONE_LINE "does_not_exist.exr: no such file"
+  COMMAND bench "${GLINT_CLI_SAMPLE_DIR}/does_not_exist.exr" --runs 1)
+glint_cli_test(NAME "bench of a capture at another resolution prints one line and exits 2" LABELS unit EXIT 2
+  STDERR_ONE_LINE "is 64x48, not the --resolution 32x32"
+  COMMAND bench "${GLINT_CLI_SAMPLE_DIR}/sample" --resolution 32x32 --runs 1)
+
+# The lavapipe-sized study as a smoke test; run from the source root, where its scenes are.
+set(GLINT_STUDY_DIR "${PROJECT_BINARY_DIR}/test-output/study")
+add_test(NAME "cli: study --quick and its scaling runs write finite results under validation"
+  COMMAND "${CMAKE_COMMAND}" "-DGLINT=$<TARGET_FILE:glint>" "-DOUT=${GLINT_STUDY_DIR}"
+          -P "${CMAKE_CURRENT_SOURCE_DIR}/cli/study_quick.cmake")
+set_tests_properties("cli: study --quick and its scaling runs write finite results under validation"
+  PROPERTIES LABELS gpu WORKING_DIRECTORY "${PROJECT_SOURCE_DIR}" FIXTURES_SETUP study_quick)
+add_test(NAME "cli: study.py adds FLIP and Pareto fronts to the quick study and plots it"
+  COMMAND "${CMAKE_COMMAND}" "-DPYTHON=${PROJECT_SOURCE_DIR}/build/venv/bin/python"
+          "-DSCRIPT=${PROJECT_SOURCE_DIR}/scripts/study.py" "-DOUT=${GLINT_STUDY_DIR}"
+          -P "${CMAKE_CURRENT_SOURCE_DIR}/cli/study_python.cmake")
+set_tests_properties("cli: study.py adds FLIP and Pareto fronts to the quick study and plots it"
+  PROPERTIES LABELS gpu FIXTURES_REQUIRED study_quick SKIP_REGULAR_EXPRESSION "SKIP:")

@@ -27,28 +27,6 @@ DenoiserScene simulateDenoiserScene(const std::string& name, std::uint32_t width
     return out;
 }
 
-ReflectionsDenoiserDesc denoiserDescFor(const capture::Frame& frame, const SssrDesc& sssr,
-                                        std::uint32_t frameIndex, bool reset) {
-    ReflectionsDenoiserDesc d;
-    d.size = sssr.size;
-    d.projection = sssr.projection;
-    d.viewFromWorld = sssr.viewFromWorld;
-    d.previousClipFromWorld = frame.camera.prevViewProjection.m;
-    d.depth = sssr.depth;
-    d.nearPlane = sssr.nearPlane;
-    d.farPlane = sssr.farPlane;
-    d.vulkanNdc = sssr.vulkanNdc;
-    d.normalUnpackMul = sssr.normalUnpackMul;
-    d.normalUnpackAdd = sssr.normalUnpackAdd;
-    d.motionScaleX = sssr.motionScaleX;
-    d.motionScaleY = sssr.motionScaleY;
-    d.roughnessThreshold = sssr.roughnessThreshold;
-    d.mirrorThreshold = sssr.mirrorThreshold;
-    d.resetHistory = reset;
-    d.frameIndex = frameIndex;
-    return d;
-}
-
 double glossyError(const capture::Frame& frame, const std::vector<float>& radiance,
                    float roughnessThreshold) {
     const capture::Layer* reference = capture::findLayer(frame, "reference.reflection");

@@ -26,9 +26,6 @@ struct DenoiserScene {
 DenoiserScene simulateDenoiserScene(const std::string& name, std::uint32_t width, std::uint32_t height,
                                     std::uint32_t frames);
 
-ReflectionsDenoiserDesc denoiserDescFor(const capture::Frame& frame, const SssrDesc& sssr,
-                                        std::uint32_t frameIndex, bool reset);
-
 // Mean of |value - reference| / max(reference luma, 0.05) over pixels whose alpha is below the
 // threshold and whose depth is not background (luminance, Rec. 709).
 double glossyError(const capture::Frame& frame, const std::vector<float>& radianceRgba,

@@ -29,7 +29,8 @@ std::vector<double> denoisedErrors(const test::DenoiserScene& scene,
         frameDesc.denoise = true;
         frameDesc.frameIndex = index;
         runner.upload(inputs);
-        const ReflectionsDenoiserDesc denoiser = test::denoiserDescFor(frame, frameDesc, index, index == 0);
+        const ReflectionsDenoiserDesc denoiser =
+            replay::denoiserFromFrame(frame, frameDesc, index, index == 0);
         runner.run(frameDesc, nullptr, &denoiser);
         const gpu::SssrFrameOutputs out = runner.readback();
         for (float value : out.radiance) REQUIRE(std::isfinite(value));

@@ -1,6 +1,7 @@
 // NaN and Inf injected into every history and into the inputs never survive to the next
 // frame's output: every output and every history the frame writes is finite.
 #include "reflections_denoiser/denoiser_scene.h"
+#include "replay/replay_sssr.h"
 #include "support/gpu_test_context.h"
 
 #include <gpu/gpu_transfer.h>
@@ -52,7 +53,7 @@ TEST_CASE("non-finite histories and inputs never reach the next frame's output",
             } else {
                 runner.upload(scene.inputs);
             }
-            ReflectionsDenoiserDesc denoiser = test::denoiserDescFor(frame, desc, index, index == 0);
+            ReflectionsDenoiserDesc denoiser = replay::denoiserFromFrame(frame, desc, index, index == 0);
             denoiser.halfPrecisionStorage = half;
             runner.run(desc, nullptr, &denoiser);
             const gpu::SssrFrameOutputs out = runner.readback();

@@ -5,8 +5,10 @@
 // a few frames so that histories exist; every frame is checked, the first one with a reset.
 #include "reference/reflections_denoiser_reference.h"
 #include "reflections_denoiser/denoiser_scene.h"
+#include "replay/replay_sssr.h"
 #include "support/gpu_test_context.h"
 
+#include <gpu/gpu_snapshot.h>
 #include <gpu/gpu_transfer.h>
 
 #include <catch2/catch.hpp>
@@ -59,38 +61,6 @@ Rgb decodeOctahedral(double px, double py) {
     return {x / length, y / length, z / length};
 }
 
-// Copies one R32F image right after one pass of the frame: resolve overwrites the variance
-// the prefilter read ("rd_variance<p>") in place.
-struct Snapshot {
-    const gpu::Context& context;
-    vk::Image image;
-    Snapshot(const gpu::Context& c, std::uint32_t width, std::uint32_t height) : context(c) {
-        image = vk::createImage2D(context.device, width, height, VK_FORMAT_R32_SFLOAT);
-        gpu::clearImage(context, image, VkClearColorValue{});
-    }
-    ~Snapshot() { vk::destroyImage(context.device, image); }
-    Snapshot(const Snapshot&) = delete;
-    Snapshot& operator=(const Snapshot&) = delete;
-
-    void record(VkCommandBuffer cmd, const vk::Image& source) const {
-        VkMemoryBarrier before{VK_STRUCTURE_TYPE_MEMORY_BARRIER, nullptr, VK_ACCESS_SHADER_WRITE_BIT,
-                               VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_TRANSFER_WRITE_BIT};
-        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1,
-                             &before, 0, nullptr, 0, nullptr);
-        VkImageCopy region{};
-        region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-        region.dstSubresource = region.srcSubresource;
-        region.extent = {image.width, image.height, 1};
-        vkCmdCopyImage(cmd, source.image, VK_IMAGE_LAYOUT_GENERAL, image.image, VK_IMAGE_LAYOUT_GENERAL, 1,
-                       &region);
-        VkMemoryBarrier after{VK_STRUCTURE_TYPE_MEMORY_BARRIER, nullptr,
-                              VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_TRANSFER_WRITE_BIT,
-                              VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT};
-        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1,
-                             &after, 0, nullptr, 0, nullptr);
-    }
-};
-
 } // namespace
 
 TEST_CASE("the denoiser's tile averages, prefilter and resolve match their CPU references on the GPU's own "
@@ -114,7 +84,7 @@ TEST_CASE("the denoiser's tile averages, prefilter and resolve match their CPU r
     const std::size_t prefilterPass =
         static_cast<std::size_t>(std::find(passes.begin(), passes.end(), "prefilter") - passes.begin());
     REQUIRE(prefilterPass < passes.size());
-    Snapshot prefilterVariance(context, w, h);
+    gpu::Snapshot prefilterVariance(context, w, h, VK_FORMAT_R32_SFLOAT);
 
     // The G-buffer as the denoiser reads it, in double: which pixels are glossy (finite,
     // in-range depth, a usable normal, alpha below the threshold) and their unit normals.
@@ -143,7 +113,7 @@ TEST_CASE("the denoiser's tile averages, prefilter and resolve match their CPU r
         INFO("frame " << index);
         desc.frameIndex = index;
         const bool reset = index == 0;
-        const ReflectionsDenoiserDesc denoiser = test::denoiserDescFor(frame, desc, index, reset);
+        const ReflectionsDenoiserDesc denoiser = replay::denoiserFromFrame(frame, desc, index, reset);
         const std::string parity = (index & 1u) != 0 ? "1" : "0";
         vk::PassHooks hooks;
         hooks.afterDispatch = [&](VkCommandBuffer cmd, std::size_t pass) {

@@ -2,6 +2,7 @@
 // reference.reflection over glossy pixels. The error must fall over the frames and end below
 // the raw single-frame error and below a stated bound.
 #include "reflections_denoiser/denoiser_scene.h"
+#include "replay/replay_sssr.h"
 #include "support/gpu_test_context.h"
 
 #include <catch2/catch.hpp>
@@ -45,7 +46,7 @@ TEST_CASE("static glossy room: the denoised error falls over frames and ends far
     std::vector<double> errors, noise;
     for (std::uint32_t index = 0; index < kFrames; ++index) {
         desc.frameIndex = index;
-        const ReflectionsDenoiserDesc denoiser = test::denoiserDescFor(frame, desc, index, index == 0);
+        const ReflectionsDenoiserDesc denoiser = replay::denoiserFromFrame(frame, desc, index, index == 0);
         runner.run(desc, nullptr, &denoiser);
         const gpu::SssrFrameOutputs out = runner.readback();
         for (float value : out.radiance) REQUIRE(std::isfinite(value));

@@ -4,8 +4,7 @@
 #include "shadow_denoiser/shadow_runner.h"
 #include "support/gpu_test_context.h"
 
-#include "capture/mat4.h"
-#include "capture/motion_convention.h"
+#include "replay/replay_shadow.h"
 #include "scene/scene_file.h"
 #include "scene/scene_simulate.h"
 
@@ -33,28 +32,6 @@ std::vector<float> channels(const capture::Frame& frame, const char* name, std::
     return out;
 }
 
-ShadowDenoiserDesc describeFrame(const capture::Frame& frame, std::uint32_t index) {
-    ShadowDenoiserDesc desc;
-    desc.size = {frame.width, frame.height};
-    const capture::Camera& camera = frame.camera;
-    desc.depth = camera.depth == capture::DepthConvention::Standard ? ShadowDenoiserDepth::Standard
-                                                                    : ShadowDenoiserDepth::Reversed;
-    desc.nearPlane = static_cast<float>(camera.nearZ);
-    desc.farPlane =
-        camera.depth == capture::DepthConvention::ReversedInfinite ? 0.0f : static_cast<float>(camera.farZ);
-    const capture::Mat4 viewProjection = capture::multiply(camera.projection, camera.view);
-    const capture::Mat4 inverseViewProjection = capture::inverse(viewProjection).value();
-    desc.inverseViewProjection = inverseViewProjection.m;
-    desc.reprojection = capture::multiply(camera.prevViewProjection, inverseViewProjection).m;
-    const capture::Mat4 inverseView = capture::inverse(camera.view).value();
-    desc.eyePosition = {static_cast<float>(inverseView.m[3]), static_cast<float>(inverseView.m[7]),
-                        static_cast<float>(inverseView.m[11])};
-    desc.vulkanNdc = camera.ndcYDown;
-    desc.resetHistory = index == 0;
-    desc.frameIndex = index;
-    return desc;
-}
-
 // Mean absolute error over penumbra receivers (reference strictly between 0.05 and 0.95).
 double penumbraError(const std::vector<float>& value, std::size_t stride,
                      const std::vector<float>& reference) {
@@ -78,7 +55,6 @@ TEST_CASE("static courtyard: the penumbra error stays within the measured bound"
     scene.reference.samplesPerPixel = 64;
     scene::Simulation sim = scene::simulate(test::testContext(), scene);
     REQUIRE(sim.frames.size() == kFrames);
-    for (capture::Frame& frame : sim.frames) capture::convertMotionToConventionA(frame);
 
     std::optional<test::ShadowRunner> runner;
     std::vector<float> previousDepth;
@@ -86,14 +62,10 @@ TEST_CASE("static courtyard: the penumbra error stays within the measured bound"
     double first = 0.0, last = 0.0, averaged = 0.0, worst = 0.0;
     for (std::uint32_t index = 0; index < kFrames; ++index) {
         const capture::Frame& frame = sim.frames[index];
-        const ShadowDenoiserDesc desc = describeFrame(frame, index);
+        ShadowDenoiserDesc desc;
+        replay::shadowDescFromFrame(frame, index, index == 0, desc);
         if (!runner) runner.emplace(desc);
-        test::ShadowInputs inputs;
-        inputs.visibility = channels(frame, "shadow", 1);
-        inputs.depth = channels(frame, "depth", 1);
-        inputs.previousDepth = previousDepth.empty() ? inputs.depth : previousDepth;
-        inputs.normals = channels(frame, "normal", 4);
-        inputs.motion = channels(frame, "motion", 2);
+        const test::ShadowInputs inputs = replay::shadowInputsFromFrame(frame, previousDepth);
         const test::ShadowOutputs outputs = runner->run(desc, inputs);
         const std::vector<float> reference = channels(frame, "reference.shadow", 1);
         const double error = penumbraError(outputs.filtered, 2, reference);

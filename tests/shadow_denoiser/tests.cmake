@@ -21,4 +21,4 @@ glint_add_test_suite(NAME shadow_denoiser_scene LABELS gpu
   SOURCES
     shadow_denoiser/convergence_test.cpp
     shadow_denoiser/shadow_runner.cpp
-  LIBS glint_scene glint_gpu_test_support glint_gpu)
+  LIBS glint_replay glint_scene glint_gpu_test_support glint_gpu)

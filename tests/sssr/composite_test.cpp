@@ -1,6 +1,8 @@
 // The composite against the split-sum formula evaluated on the CPU, L = L_lit + R (F0 A + B),
 // with (A, B) interpolated bilinearly from glint::sssrBrdfLut() at (N.V, r) and V the pixel's
 // own view vector: a tilted plane seen by a perspective camera, so N.V varies over the image.
+#include "core/camera.h"
+#include "glint/glint_reflections_denoiser.h"
 #include "glint/glint_sssr_tables.h"
 #include "sssr/sssr_test_scene.h"
 #include "support/gpu_test_context.h"
@@ -38,6 +40,11 @@ TEST_CASE("the composite applies the reflection with split-sum specular per pixe
     const std::uint32_t w = 48, h = 32;
     test::SssrTestView view = test::makeSssrTestView(w, h, false);
     view.desc.composite = true;
+    // With the denoiser, the composite must apply the denoised reflection (out.radiance is the
+    // denoiser's output then), so the denoiser has to run before it.
+    const bool denoise = GENERATE(false, true);
+    INFO((denoise ? "with the denoiser" : "without the denoiser"));
+    view.desc.denoise = denoise;
     view.desc.roughnessThreshold = 1.0f; // every pixel glossy: the composite sees each one's alpha
     // A plane y = -1 (normal +y) in front of the camera covers the lower half; the rest is sky.
     for (std::uint32_t y = h / 2 + 1; y < h; ++y)
@@ -58,7 +65,18 @@ TEST_CASE("the composite applies the reflection with split-sum specular per pixe
         }
     gpu::SssrRunner runner(test::testContext(), view.desc);
     runner.upload(view.inputs);
-    runner.run(view.desc);
+    ReflectionsDenoiserDesc denoiser;
+    denoiser.size = view.desc.size;
+    denoiser.projection = view.desc.projection;
+    denoiser.viewFromWorld = view.desc.viewFromWorld;
+    denoiser.previousClipFromWorld = core::multiply(view.desc.projection, view.desc.viewFromWorld);
+    denoiser.depth = view.desc.depth;
+    denoiser.nearPlane = view.desc.nearPlane;
+    denoiser.farPlane = view.desc.farPlane;
+    denoiser.vulkanNdc = view.desc.vulkanNdc;
+    denoiser.roughnessThreshold = view.desc.roughnessThreshold;
+    denoiser.resetHistory = true;
+    runner.run(view.desc, nullptr, denoise ? &denoiser : nullptr);
     const gpu::SssrFrameOutputs out = runner.readback();
     const std::vector<float> lut = sssrBrdfLut(kSssrBrdfLutSize);
     std::size_t checked = 0;

@@ -3,6 +3,7 @@
 
 #include "glint/glint_sssr_tables.h"
 
+#include <algorithm>
 #include <cstring>
 #include <exception>
 #include <vector>
@@ -173,7 +174,11 @@ Result dispatchSssr(SssrEffect& effect, Executor& executor, VkCommandBuffer cmd,
         if (const Result result = planReflectionsDenoiser(*denoiser, denoiserPlan, error);
             result != Result::Ok)
             return result;
-        plan.passes.insert(plan.passes.end(), denoiserPlan.passes.begin(), denoiserPlan.passes.end());
+        // The denoiser goes right after the intersection, before the composite, so that the
+        // composite applies the denoised reflection it overwrites "sssr_radiance" with.
+        const auto composite = std::find_if(plan.passes.begin(), plan.passes.end(),
+                                            [](const Pass& pass) { return pass.name == "composite"; });
+        plan.passes.insert(composite, denoiserPlan.passes.begin(), denoiserPlan.passes.end());
         plan.images.insert(plan.images.end(), denoiserPlan.images.begin(), denoiserPlan.images.end());
         plan.buffers.insert(plan.buffers.end(), denoiserPlan.buffers.begin(), denoiserPlan.buffers.end());
     }

@@ -1,0 +1,227 @@
+// glint bench <captures...>: per-pass GPU times of the effects a capture declares (or
+// --effects), replayed through replay::Session with readback off: warm-up runs, then --runs
+// measured runs cycling through the capture's frames; median, min and max per pass, with the
+// device, driver and subgroup size, as a table and (--json) as JSON. A capture is a frame .exr,
+// a sequence folder or a scene .toml, which is simulated in memory at --size without references.
+#include "cli_bench_capture.h"
+#include "cli_capture.h"
+#include "cli_commands.h"
+
+#include "scene/scene_file.h"
+#include "scene/scene_simulate.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <stdexcept>
+
+namespace glint::cli {
+namespace {
+
+// Frames held in memory for the round-robin: re-reading EXRs between runs would make a long
+// benchmark slow without changing what the GPU does.
+constexpr std::size_t kMaxFrames = 32;
+
+PassStats statsOf(const std::string& pass, std::vector<double> microseconds) {
+    std::sort(microseconds.begin(), microseconds.end());
+    return {pass, microseconds[microseconds.size() / 2], microseconds.front(), microseconds.back()};
+}
+
+std::string sizeText(std::uint32_t width, std::uint32_t height) {
+    return std::to_string(width) + "x" + std::to_string(height);
+}
+
+struct Target {
+    std::string path;
+    std::string kind; // "frame", "sequence" or "scene"
+    std::vector<capture::Frame> frames;
+    capture::Environment environment;
+    std::optional<scene::Scene> scene; // simulated once the device is up
+};
+
+// Everything that can be wrong with a target is found here, before a device is created.
+Target openTarget(const std::string& path, const BenchOptions& options) {
+    Target target;
+    target.path = path;
+    const std::filesystem::path file(path);
+    if (!std::filesystem::exists(file)) {
+        // A bare word is more likely a mistyped effect than a missing capture.
+        if (path.find_first_of("/.") == std::string::npos)
+            throw std::invalid_argument("bench: unknown effect '" + path +
+                                        "' (depth_pyramid, roughness, shadow_denoiser, sssr) and no "
+                                        "capture of that name");
+        throw std::invalid_argument("bench: " + path + ": no such file or folder");
+    }
+    if (file.extension() == ".toml") {
+        scene::Scene scene = scene::loadScene(file);
+        scene.width = options.width;
+        scene.height = options.height;
+        scene.reference = {}; // only the inputs are timed
+        target.kind = "scene";
+        target.scene = std::move(scene);
+        return target;
+    }
+    const CaptureSource source(path);
+    target.kind = source.frameCount() > 1 || std::filesystem::is_directory(file) ? "sequence" : "frame";
+    target.environment = source.environment();
+    for (std::size_t index = 0; index < std::min(source.frameCount(), kMaxFrames); ++index)
+        target.frames.push_back(source.frame(index));
+    const capture::Frame& first = target.frames.front();
+    if (options.sizeGiven && (first.width != options.width || first.height != options.height))
+        throw std::invalid_argument("bench: " + path + " is " + sizeText(first.width, first.height) +
+                                    ", not the --resolution " + sizeText(options.width, options.height) +
+                                    " asked for (captures are timed at their own size)");
+    try {
+        replay::effectsToRun(first, options.effects);
+    } catch (const std::invalid_argument& error) {
+        throw std::invalid_argument("bench: " + path + ": " + error.what());
+    }
+    return target;
+}
+
+void printCounters(std::FILE* out, const std::vector<replay::Counter>& counters) {
+    for (const replay::Counter& counter : counters)
+        std::fprintf(out, "  %-34s %12.4g\n", counter.name.c_str(), counter.value);
+}
+
+} // namespace
+
+capture::Environment blackEnvironment() {
+    capture::Environment environment;
+    environment.width = 16;
+    environment.height = 8;
+    environment.rgb.assign(16 * 8 * 3, 0.0f);
+    return environment;
+}
+
+Measurement measureFrames(const gpu::Context& context, const std::vector<capture::Frame>& frames,
+                          const capture::Environment& environment, replay::SessionOptions options,
+                          std::uint32_t runs) {
+    if (frames.empty() || runs == 0) throw std::invalid_argument("nothing to time: no frames or no runs");
+    options.readback = false;
+    replay::Session session(context, frames.front(), environment, options);
+    Measurement measurement;
+    measurement.runs = runs;
+    measurement.warmup = std::min(runs, 10u);
+    std::vector<std::string> order;
+    std::map<std::string, std::vector<double>> times;
+    std::vector<double> totals;
+    const std::uint32_t all = measurement.warmup + runs;
+    for (std::uint32_t run = 0; run < all; ++run) {
+        const replay::FrameResult result = session.run(frames[run % frames.size()]);
+        if (run + 1 == all) measurement.counters = result.counters;
+        if (run < measurement.warmup || result.timings.empty()) continue;
+        double total = 0.0;
+        for (const replay::PassTime& time : result.timings) {
+            if (!times.contains(time.pass)) order.push_back(time.pass);
+            times[time.pass].push_back(1000.0 * time.milliseconds);
+            total += 1000.0 * time.milliseconds;
+        }
+        totals.push_back(total);
+    }
+    for (const std::string& pass : order) measurement.passes.push_back(statsOf(pass, times[pass]));
+    if (!totals.empty()) measurement.total = statsOf("total", totals);
+    return measurement;
+}
+
+nlohmann::json deviceJson(const gpu::Context& context) {
+    return {{"name", context.info.name},
+            {"driver", context.info.driverName + " " + context.info.driverInfo},
+            {"subgroupSize", context.device.subgroupSize}};
+}
+
+nlohmann::json measurementJson(const Measurement& measurement) {
+    auto stats = [](const PassStats& s) {
+        return nlohmann::json{
+            {"pass", s.pass}, {"medianUs", s.medianUs}, {"minUs", s.minUs}, {"maxUs", s.maxUs}};
+    };
+    nlohmann::json json{{"warmup", measurement.warmup},
+                        {"runs", measurement.runs},
+                        {"passes", nlohmann::json::array()},
+                        {"total", stats(measurement.total)},
+                        {"counters", nlohmann::json::object()}};
+    for (const PassStats& pass : measurement.passes) json["passes"].push_back(stats(pass));
+    for (const replay::Counter& counter : measurement.counters)
+        json["counters"][counter.name] = counter.value;
+    return json;
+}
+
+void printMeasurement(std::FILE* out, const Measurement& measurement) {
+    if (measurement.passes.empty()) {
+        std::fprintf(out, "  (no timestamps on this queue)\n");
+        return;
+    }
+    std::fprintf(out, "  %-34s %12s %12s %12s\n", "pass", "median us", "min us", "max us");
+    for (const PassStats& pass : measurement.passes)
+        std::fprintf(out, "  %-34s %12.2f %12.2f %12.2f\n", pass.pass.c_str(), pass.medianUs, pass.minUs,
+                     pass.maxUs);
+    const PassStats& total = measurement.total;
+    std::fprintf(out, "  %-34s %12.2f %12.2f %12.2f\n", "total (sum of a run's passes)", total.medianUs,
+                 total.minUs, total.maxUs);
+}
+
+bool isSyntheticBenchEffect(const std::string& name) {
+    return name == "depth_pyramid" || name == "roughness" || name == "shadow_denoiser" || name == "sssr";
+}
+
+int runBenchCaptures(const BenchOptions& options) {
+    if (options.width == 0 || options.height == 0 || options.runs == 0)
+        throw std::invalid_argument("bench: size and runs must be positive");
+    replay::SessionOptions sessionOptions;
+    sessionOptions.effects = options.effects;
+    sessionOptions.settings = replay::parseSettings(options.settings);
+    std::vector<Target> targets;
+    for (const std::string& path : options.captures) targets.push_back(openTarget(path, options));
+    // With the JSON on stdout, the table goes to stderr so that stdout parses.
+    std::FILE* out = options.json == "-" ? stderr : stdout;
+
+    return withContext(options.validate, [&](const gpu::Context& context) {
+        nlohmann::json report{{"device", deviceJson(context)},
+                              {"settings", options.settings},
+                              {"captures", nlohmann::json::array()}};
+        std::fprintf(out, "device: %s, driver %s %s, subgroup %u\n", context.info.name.c_str(),
+                     context.info.driverName.c_str(), context.info.driverInfo.c_str(),
+                     context.device.subgroupSize);
+        for (const std::string& setting : options.settings) std::fprintf(out, "  set %s\n", setting.c_str());
+        for (Target& target : targets) {
+            if (target.scene) {
+                target.scene->frameCount =
+                    std::min<std::uint32_t>(target.scene->frameCount, static_cast<std::uint32_t>(kMaxFrames));
+                scene::Simulation simulation = scene::simulate(context, *target.scene);
+                target.frames = std::move(simulation.frames);
+                target.environment = simulation.environment.value_or(blackEnvironment());
+            }
+            const capture::Frame& first = target.frames.front();
+            const std::vector<std::string> effects = replay::effectsToRun(first, options.effects);
+            const Measurement measurement =
+                measureFrames(context, target.frames, target.environment, sessionOptions, options.runs);
+            std::fprintf(out, "%s %s: %ux%u, %zu frame(s), effects:", target.kind.c_str(),
+                         target.path.c_str(), first.width, first.height, target.frames.size());
+            for (const std::string& effect : effects) std::fprintf(out, " %s", effect.c_str());
+            std::fprintf(out, "; %u warm-up + %u measured runs\n", measurement.warmup, measurement.runs);
+            printMeasurement(out, measurement);
+            printCounters(out, measurement.counters);
+            nlohmann::json entry = measurementJson(measurement);
+            entry["capture"] = target.path;
+            entry["kind"] = target.kind;
+            entry["width"] = first.width;
+            entry["height"] = first.height;
+            entry["frames"] = target.frames.size();
+            entry["effects"] = effects;
+            report["captures"].push_back(entry);
+        }
+        if (options.json == "-") {
+            std::printf("%s\n", report.dump(2).c_str());
+        } else if (!options.json.empty()) {
+            std::ofstream file(options.json);
+            if (!(file << report.dump(2) << "\n"))
+                throw std::runtime_error("bench: " + options.json + ": cannot write");
+            std::fprintf(out, "wrote %s\n", options.json.c_str());
+        }
+        return kExitOk;
+    });
+}
+
+} // namespace glint::cli

@@ -1,0 +1,68 @@
+// What run, dump, check and bench share: opening a capture (a frame file, a sequence folder,
+// or foreign EXRs through a channel map), choosing its frames, and a Vulkan context whose
+// validation errors turn into exit code 1.
+#pragma once
+
+#include "capture/capture_frame.h"
+#include "capture/environment_io.h"
+#include "replay/replay_session.h"
+
+#include <gpu/gpu_context.h>
+
+#include <cstddef>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace glint::cli {
+
+class CaptureSource {
+  public:
+    // `path`: a frame .exr, a sequence folder or its manifest.json; with `mapPath`, a foreign
+    // EXR or a folder of them read through that channel map (docs/replay.md). Throws with one
+    // line naming what is wrong.
+    CaptureSource(const std::string& path, const std::string& mapPath = {});
+    ~CaptureSource();
+
+    std::size_t frameCount() const;
+    capture::Frame frame(std::size_t index) const;
+    // The capture's environment, or a black 16x8 lat-long one when it has none (reflection rays
+    // that miss then return black, a defined result).
+    const capture::Environment& environment() const { return environment_; }
+    const std::string& description() const { return description_; }
+
+  private:
+    struct Impl;
+    Impl* impl_ = nullptr;
+    capture::Environment environment_;
+    std::string description_;
+};
+
+// "a..b" (inclusive), "a.." (to the end), "a" (one frame) or "" (all) -> [first, last] indices
+// within `count` frames. Throws std::invalid_argument naming the range.
+struct FrameRange {
+    std::size_t first = 0, last = 0;
+};
+FrameRange parseFrames(const std::string& text, std::size_t count);
+
+// Creates a context (with validation when asked), runs `body`, destroys the context. Returns
+// body's exit code, or kExitCheckFailed when the validation layer reported errors.
+int withContext(bool validate, const std::function<int(const gpu::Context&)>& body);
+
+// Replays frames 0..frame (histories build up as in `glint run`) with every intermediate and
+// returns the last frame's result. `frameText` "" means the capture's last frame.
+replay::FrameResult replayUntil(const gpu::Context& context, const CaptureSource& source,
+                                const std::string& frameText, replay::SessionOptions options,
+                                std::size_t* frameIndex = nullptr);
+
+// Whether `pass` ("reflections/intersect") is selected by "all", "intersect" or "reflections/intersect".
+bool passSelected(const std::string& selection, const std::string& pass);
+
+// Where glint dump writes an image and glint check looks for it: <effect>/<pass>/<image>.
+std::filesystem::path dumpPath(const replay::NamedImage& image);
+
+// "reflections/denoised" -> "reflections_denoised".
+std::string fileStem(const std::string& imageName);
+
+} // namespace glint::cli

@@ -1,0 +1,76 @@
+#include "cli_images.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace glint::cli {
+namespace {
+
+bool endsWith(const std::string& text, const std::string& suffix) {
+    return text.size() >= suffix.size() &&
+           text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+// The range of the finite samples (for depth and pyramid levels, whose interesting span is
+// narrow); [0, 1] when there are none or they are all equal.
+report::Linear finiteRange(const report::Image& image) {
+    float low = INFINITY, high = -INFINITY;
+    for (float v : image.pixels)
+        if (std::isfinite(v)) {
+            low = std::min(low, v);
+            high = std::max(high, v);
+        }
+    if (!(low < high)) return {0.0f, 1.0f};
+    return {low, high};
+}
+
+// The 99th percentile of the finite samples, so that a few outliers do not flatten a heat map.
+float percentile99(const report::Image& image) {
+    std::vector<float> values;
+    for (float v : image.pixels)
+        if (std::isfinite(v)) values.push_back(std::abs(v));
+    if (values.empty()) return 1.0f;
+    std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(values.size() * 99 / 100),
+                     values.end());
+    const float value = values[values.size() * 99 / 100];
+    return value > 0.0f ? value : 1.0f;
+}
+
+} // namespace
+
+report::PngMapping previewMapping(const std::string& name, const report::Image& image) {
+    for (const char* categorical : {"ray_class", "tile_class", "ray_list", "tile_list", "/mask"})
+        if (endsWith(name, categorical)) return report::Categories{};
+    if (endsWith(name, "error")) return report::Heat{name.rfind("shadows", 0) == 0 ? 0.5f : 1.0f};
+    if (endsWith(name, "iterations") || endsWith(name, "variance") || endsWith(name, "hit_distance"))
+        return report::Heat{percentile99(image)};
+    if (name.find("mip") != std::string::npos || endsWith(name, "roughness")) return finiteRange(image);
+    if (image.channels >= 3) return report::Tonemap{1.0f};
+    return report::Linear{0.0f, 1.0f};
+}
+
+std::vector<std::string> exrChannels(const report::Image& image) {
+    switch (image.channels) {
+    case 1:
+        return {"Y"};
+    case 2:
+        return {"X", "Y"};
+    case 3:
+        return {"R", "G", "B"};
+    default:
+        return {"R", "G", "B", "A"};
+    }
+}
+
+std::filesystem::path writeImageFiles(const std::filesystem::path& dir, const std::string& stem,
+                                      const std::string& name, const report::Image& image, bool png) {
+    std::filesystem::create_directories(dir);
+    report::writeExr((dir / (stem + ".exr")).string(), image, exrChannels(image));
+    if (!png) return {};
+    const std::filesystem::path path = dir / (stem + ".png");
+    report::writePng(path.string(), image, previewMapping(name, image));
+    return path;
+}
+
+} // namespace glint::cli

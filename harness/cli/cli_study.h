@@ -1,0 +1,57 @@
+// What glint study's settings sweeps (cli_study.cpp) and its scaling runs
+// (cli_study_scaling.cpp) share: the resolved options, simulated scenes and table output.
+#pragma once
+
+#include "cli_bench_capture.h"
+#include "cli_commands.h"
+
+#include "capture/capture_frame.h"
+#include "capture/environment_io.h"
+
+#include <gpu/gpu_context.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace glint::cli::study {
+
+// StudyOptions with every default filled in.
+struct Plan {
+    std::filesystem::path out;
+    std::vector<std::string> effects; // "reflections", "shadows"
+    std::vector<std::string> scenes;  // --scenes; empty: the bundled ones per effect
+    std::uint32_t width = 0, height = 0, frames = 0, runs = 0;
+    std::uint32_t spp = 0; // 0: per-effect default
+    bool quick = false;
+};
+
+struct SimulatedScene {
+    std::string name; // the file's stem, "glossy_room"
+    std::vector<capture::Frame> frames;
+    capture::Environment environment;
+};
+
+// The scene at `path` with `effect` as its only effect (so that a reflections scene can serve
+// the shadow study too), at width x height for `frames` frames; with referenceSpp > 0 the
+// effect's reference at that many samples per pixel.
+SimulatedScene simulateFor(const gpu::Context& context, const std::string& path, const std::string& effect,
+                           std::uint32_t width, std::uint32_t height, std::uint32_t frames,
+                           std::uint32_t referenceSpp);
+
+// The settings every point of an effect starts from: the effect as an engine runs it.
+std::vector<std::string> baseSettings(const std::string& effect);
+
+// "a;b;c": lists inside one CSV field.
+std::string joined(const std::vector<std::string>& items, const char* separator = ";");
+std::string passesField(const Measurement& measurement); // "reflections/classify:12.3;..."
+std::string counterValue(const Measurement& measurement, const std::string& name); // "" when absent
+// Quotes a CSV field that holds a comma or a quote.
+std::string csvField(const std::string& text);
+
+void writeText(const std::filesystem::path& file, const std::string& text);
+
+int runScaling(const Plan& plan, const gpu::Context& context);
+
+} // namespace glint::cli::study

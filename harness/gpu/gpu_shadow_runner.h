@@ -1,0 +1,59 @@
+// Runs the shadow denoiser plan (glint_shadow_denoiser.h) on the harness context from CPU
+// arrays: uploads the application's inputs, records one frame, reads the outputs back. The
+// plan's own resources (histories, masks) persist across frames. Shared by the tests,
+// `glint run`, `glint dump` and `glint bench`.
+#pragma once
+
+#include <gpu/gpu_context.h>
+#include <gpu/gpu_plan_runner.h>
+
+#include "glint/glint_shadow_denoiser.h"
+#include "vulkan/vk_executor.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace glint::gpu {
+
+struct ShadowInputs {
+    std::vector<float> visibility;    // W x H
+    std::vector<float> depth;         // W x H device depth
+    std::vector<float> previousDepth; // W x H
+    std::vector<float> normals;       // RGBA per pixel
+    std::vector<float> motion;        // RG per pixel
+    std::vector<float> meanVariance;  // RG per pixel (the filter's input without classification)
+};
+
+struct ShadowOutputs {
+    std::vector<std::uint32_t> mask;
+    std::vector<std::uint32_t> metadata; // with classification
+    std::vector<float> classified;       // RG of scratch 0 after classification (no filter)
+    std::vector<float> moments;          // RGBA written this frame
+    std::vector<float> filtered;         // RG of "shadow_output" (with the filter)
+    std::uint32_t filteredTiles = 0;     // "shadow_filter_work" when tiles are skipped
+};
+
+class ShadowRunner {
+  public:
+    // Throws std::invalid_argument with the planner's message when `desc` is not valid.
+    ShadowRunner(const Context& context, const ShadowDenoiserDesc& desc);
+    ~ShadowRunner();
+    ShadowRunner(const ShadowRunner&) = delete;
+    ShadowRunner& operator=(const ShadowRunner&) = delete;
+
+    // Plans `desc` (same size and flags as the constructor's), uploads the non-empty inputs,
+    // runs, reads back. With `timings`, the pass names and GPU milliseconds of this frame.
+    ShadowOutputs run(const ShadowDenoiserDesc& desc, const ShadowInputs& inputs,
+                      PlanTimings* timings = nullptr);
+    // Overwrites the moments history (read this frame with frameIndex) and scratch 1.
+    void setHistory(std::uint32_t frameIndex, const std::vector<float>& moments,
+                    const std::vector<float>& shadow);
+
+  private:
+    const Context& context_;
+    std::vector<vk::Image> inputs_;
+    PlanResources owned_;
+    vk::Executor executor_;
+};
+
+} // namespace glint::gpu

@@ -1,0 +1,118 @@
+#include "replay/replay_error.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace glint::replay {
+namespace {
+
+float luminance(const float* rgb, std::uint32_t channels) {
+    if (channels < 3) return rgb[0];
+    return 0.2126f * rgb[0] + 0.7152f * rgb[1] + 0.0722f * rgb[2];
+}
+
+bool finitePixel(const float* p, std::uint32_t channels) {
+    for (std::uint32_t c = 0; c < channels; ++c)
+        if (!std::isfinite(p[c])) return false;
+    return true;
+}
+
+// Pixels with a surface (finite depth short of the background value).
+std::vector<std::uint8_t> surfaceMask(const capture::Frame& frame) {
+    const capture::Layer* depth = capture::findLayer(frame, "depth");
+    std::vector<std::uint8_t> mask(std::size_t{frame.width} * frame.height, 0);
+    if (!depth) return mask;
+    const bool reversed = frame.camera.depth != capture::DepthConvention::Standard;
+    for (std::size_t i = 0; i < mask.size(); ++i) {
+        const float d = depth->pixels[i];
+        mask[i] = std::isfinite(d) && (reversed ? d > 1e-6f : d < 1.0f - 1e-6f);
+    }
+    return mask;
+}
+
+std::vector<std::uint8_t> glossyMask(const capture::Frame& frame, float roughnessThreshold) {
+    std::vector<std::uint8_t> mask = surfaceMask(frame);
+    const capture::Layer* layer = capture::findLayer(frame, frame.roughness.layer);
+    const int channel = layer ? capture::channelIndex(layer->channels, frame.roughness.channel) : -1;
+    if (channel < 0) return std::vector<std::uint8_t>(mask.size(), 0);
+    const std::size_t stride = layer->channels.size();
+    for (std::size_t i = 0; i < mask.size(); ++i) {
+        const float r = layer->pixels[i * stride + static_cast<std::size_t>(channel)];
+        const float alpha = frame.roughness.perceptual ? r * r : r;
+        mask[i] = mask[i] && alpha < roughnessThreshold;
+    }
+    return mask;
+}
+
+ReferenceError compare(const std::string& effect, const NamedImage& output, const report::Image& reference,
+                       const std::vector<std::uint8_t>& mask, bool relative) {
+    ReferenceError error;
+    error.effect = effect;
+    error.image = output.name;
+    const report::Image& out = output.image;
+    const std::uint32_t channels = std::min(out.channels, reference.channels);
+    error.map = report::Image{out.width, out.height, 1,
+                              std::vector<float>(std::size_t{out.width} * out.height, 0.0f)};
+    double sum = 0.0, squares = 0.0, penumbraSum = 0.0;
+    std::size_t penumbraCount = 0, nonFinite = 0;
+    for (std::size_t i = 0; i < mask.size(); ++i) {
+        const float* a = &out.pixels[i * out.channels];
+        const float* b = &reference.pixels[i * reference.channels];
+        const bool finite = finitePixel(a, channels);
+        if (!finite) ++nonFinite;
+        if (!mask[i] || !finitePixel(b, channels)) continue;
+        float difference[3] = {};
+        double pixelSquares = 0.0;
+        for (std::uint32_t c = 0; c < std::min(channels, 3u); ++c) {
+            difference[c] = finite ? std::abs(a[c] - b[c]) : 0.0f;
+            pixelSquares += double{difference[c]} * double{difference[c]};
+        }
+        float value = luminance(difference, std::min(channels, 3u));
+        if (relative) value /= std::max(luminance(b, std::min(channels, 3u)), 0.05f);
+        if (!finite) value = 1.0f;
+        error.map.pixels[i] = value;
+        sum += double{value};
+        squares += pixelSquares / std::min(channels, 3u);
+        ++error.pixels;
+        if (!relative && b[0] > 0.05f && b[0] < 0.95f) {
+            penumbraSum += double{value};
+            ++penumbraCount;
+        }
+    }
+    if (error.pixels > 0) {
+        error.mean = sum / static_cast<double>(error.pixels);
+        error.rmse = std::sqrt(squares / static_cast<double>(error.pixels));
+    }
+    if (penumbraCount > 0) error.penumbra = penumbraSum / static_cast<double>(penumbraCount);
+    error.nonFinite =
+        static_cast<double>(nonFinite) / static_cast<double>(std::max<std::size_t>(1, mask.size()));
+    return error;
+}
+
+} // namespace
+
+std::vector<ReferenceError> referenceErrors(const capture::Frame& frame, const FrameResult& result,
+                                            float roughnessThreshold) {
+    std::vector<ReferenceError> errors;
+    if (const NamedImage* reference = result.find("reflections/reference")) {
+        const NamedImage* output = result.find("reflections/denoised");
+        if (!output) output = result.find("reflections/noisy");
+        const NamedImage* noisy = result.find("reflections/noisy");
+        const std::vector<std::uint8_t> mask = glossyMask(frame, roughnessThreshold);
+        if (output) {
+            errors.push_back(compare("reflections", *output, reference->image, mask, true));
+            if (noisy && noisy != output)
+                errors.back().noisyMean = compare("reflections", *noisy, reference->image, mask, true).mean;
+        }
+    }
+    if (const NamedImage* reference = result.find("shadows/reference"))
+        if (const NamedImage* output = result.find("shadows/denoised")) {
+            const std::vector<std::uint8_t> mask = surfaceMask(frame);
+            errors.push_back(compare("shadows", *output, reference->image, mask, false));
+            if (const NamedImage* noisy = result.find("shadows/noisy"))
+                errors.back().noisyMean = compare("shadows", *noisy, reference->image, mask, false).mean;
+        }
+    return errors;
+}
+
+} // namespace glint::replay

@@ -1,0 +1,37 @@
+// "name=value" settings for the effects, shared by `glint bench`, `glint run`, `glint dump`
+// and `glint study`, so that one spelling sweeps the same option everywhere.
+//   reflections: samplesPerQuad, maxTraversalIterations, mostDetailedMip, roughnessThreshold,
+//                occupancyExitFraction, importanceSampleBias, thickness, thicknessAware,
+//                halfResolution, previousFrameColor, halfPrecisionStorage, denoise, debugOutput,
+//                composite, varianceGuided, varianceThreshold
+//                (also accepted with a "reflections." prefix)
+//   reflections denoiser: denoiser.historyClipScale, denoiser.maxHistoryLength
+//   shadows: shadows.filter, shadows.classify, shadows.skipClearedTiles, shadows.depthSigma,
+//            shadows.normalPower
+#pragma once
+
+#include "glint/glint_reflections_denoiser.h"
+#include "glint/glint_shadow_denoiser.h"
+#include "glint/glint_sssr.h"
+
+#include <string>
+#include <vector>
+
+namespace glint::replay {
+
+struct EffectSettings {
+    SssrDesc sssr;                        // only the tunables are read from it
+    ReflectionsDenoiserDesc denoiser;     // historyClipScale, maxHistoryLength
+    ShadowDenoiserDesc shadows;           // filter, classify, skipClearedTiles, depthSigma, normalPower
+    std::vector<std::string> assignments; // as given, for reports
+};
+
+// Applies one "name=value"; throws std::invalid_argument naming the setting and listing the
+// known ones.
+void applySetting(EffectSettings& settings, const std::string& assignment);
+EffectSettings parseSettings(const std::vector<std::string>& assignments);
+
+// Copies the tunables (not the camera, size or decoding) of `from` onto `to`.
+void copySssrTunables(const SssrDesc& from, SssrDesc& to);
+
+} // namespace glint::replay

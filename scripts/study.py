@@ -1,0 +1,171 @@
+#!/usr/bin/env python3
+"""FLIP, Pareto fronts, plots and tables for a `glint study` folder (docs/accuracy-vs-time.md).
+
+    python3 scripts/study.py DIR [MORE_DIRS...]
+
+DIR is what `glint study --out DIR` (and `glint study --scaling --out DIR`) wrote, on this
+machine or another: the image paths inside study.json are relative to DIR. Studies split over
+several runs (e.g. one per effect) are combined by naming every folder; the results go to the
+first. Adds the columns `flip` and `pareto` to each folder's study.csv and writes
+DIR/<effect>.png (error against time, one colour per scene, each scene's Pareto front
+connected), DIR/scaling_resolution.png and DIR/scaling_fraction.png (from the first folder
+with a scaling.json) and DIR/study.md (the tables).
+
+FLIP is NVIDIA's perceptual difference (flip-evaluator): HDR-FLIP for reflection radiance,
+LDR-FLIP for shadow visibility shown as a grey image. The images are zeroed outside the pixels
+the error is measured over (mask.exr), and FLIP is averaged over those pixels only.
+"""
+import csv
+import json
+import pathlib
+import sys
+
+import flip_evaluator as flip
+import matplotlib
+
+matplotlib.use("Agg")  # files only, no display
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+
+def load_rgb(path):
+    image = np.asarray(flip.load(str(path)), dtype=np.float32)[..., :3]
+    return np.nan_to_num(image, nan=0.0, posinf=0.0, neginf=0.0)  # non-finite is reported apart
+
+
+def mean_flip(directory, row):
+    reference = load_rgb(directory / row["reference"])
+    output = load_rgb(directory / row["output"])
+    mask = load_rgb(directory / row["mask"])[..., 0] > 0.5
+    if row["effect"] == "reflections":
+        error, _, _ = flip.evaluate(np.maximum(reference, 0), np.maximum(output, 0), "HDR", applyMagma=False)
+    else:
+        error, _, _ = flip.evaluate(np.clip(reference, 0, 1), np.clip(output, 0, 1), "LDR", applyMagma=False)
+    error = np.asarray(error).reshape(mask.shape)
+    return float(error[mask].mean()) if mask.any() else 0.0
+
+
+def mark_pareto(rows):
+    """pareto = 1 where no other point of the same scene and effect is as fast and as accurate."""
+    for row in rows:
+        rivals = [r for r in rows if (r["scene"], r["effect"]) == (row["scene"], row["effect"]) and r is not row]
+        row["pareto"] = int(not any(
+            r["time_us"] <= row["time_us"] and r["flip"] <= row["flip"]
+            and (r["time_us"] < row["time_us"] or r["flip"] < row["flip"]) for r in rivals))
+
+
+def plot_effect(rows, effect, title, path):
+    figure, axes = plt.subplots(figsize=(8, 5.5))
+    scenes = sorted({r["scene"] for r in rows if r["effect"] == effect})
+    for colour, scene in zip(plt.cm.tab10.colors, scenes):
+        points = sorted((r for r in rows if (r["effect"], r["scene"]) == (effect, scene)), key=lambda r: r["time_us"])
+        axes.scatter([p["time_us"] for p in points], [p["flip"] for p in points], color=colour, label=scene)
+        front = [p for p in points if p["pareto"]]
+        axes.plot([p["time_us"] for p in front], [p["flip"] for p in front], color=colour, linewidth=1)
+        for p in points:
+            axes.annotate(p["label"], (p["time_us"], p["flip"]), fontsize=6, xytext=(3, 2), textcoords="offset points")
+    axes.set(xlabel="GPU time of the effect (µs, median)", ylabel="mean FLIP over the measured pixels",
+             title=f"{effect}: {title}")
+    axes.legend(fontsize=8)
+    axes.grid(alpha=0.3)
+    figure.tight_layout()
+    figure.savefig(path, dpi=130)
+    plt.close(figure)
+
+
+def plot_scaling(rows, sweep, x_of, xlabel, title, path):
+    figure, axes = plt.subplots(figsize=(6.5, 4.5))
+    for effect in sorted({r["effect"] for r in rows}):
+        points = sorted((r for r in rows if (r["effect"], r["sweep"]) == (effect, sweep)), key=x_of)
+        axes.plot([x_of(p) for p in points], [p["time_us"] for p in points], marker="o", label=effect)
+    axes.set(xlabel=xlabel, ylabel="GPU time (µs, median)", title=title)
+    axes.set_ylim(bottom=0)
+    axes.legend()
+    axes.grid(alpha=0.3)
+    figure.tight_layout()
+    figure.savefig(path, dpi=130)
+    plt.close(figure)
+
+
+def study_tables(rows):
+    lines = []
+    for effect in sorted({r["effect"] for r in rows}):
+        shadows = effect == "shadows"  # the penumbra error is where a shadow denoiser shows
+        lines += [f"### {effect}", "",
+                  "| scene | point | settings | time (µs) | FLIP | mean error | RMSE |"
+                  + (" penumbra |" if shadows else "") + " non-finite | Pareto |",
+                  "|---|---|---|---|---|---|---|" + ("---|" if shadows else "") + "---|---|"]
+        for r in (r for r in rows if r["effect"] == effect):
+            penumbra = f" {r['penumbra']:.4f} |" if shadows else ""
+            lines.append(f"| {r['scene']} | {r['label']} | `{' '.join(r['settings']) or '-'}` | {r['time_us']:.1f} "
+                         f"| {r['flip']:.4f} | {r['error_mean']:.4f} | {r['rmse']:.4f} |{penumbra} "
+                         f"{r['non_finite']:g} | {'**yes**' if r['pareto'] else ''} |")
+        lines.append("")
+    return lines
+
+
+def scaling_tables(rows):
+    lines = ["| effect | sweep | size | fraction | time (µs) | traced / filtered |", "|---|---|---|---|---|---|"]
+    for r in rows:
+        counters = r.get("counters", {})
+        work = counters.get("reflections/traced_fraction", counters.get("shadows/filtered_tiles", ""))
+        fraction = "scene" if r["fraction"] < 0 else f"{100 * r['fraction']:.0f} %"
+        lines.append(f"| {r['effect']} | {r['sweep']} | {r['width']}×{r['height']} | {fraction} "
+                     f"| {r['time_us']:.1f} | {work if work == '' else f'{work:.4g}'} |")
+    return lines + [""]
+
+
+def add_columns(directory, rows):
+    """study.csv keeps the C++ columns (same rows, same order) and gains flip and pareto."""
+    with open(directory / "study.csv", newline="") as file:
+        table = list(csv.DictReader(file))
+    for line, row in zip(table, rows, strict=True):
+        line["flip"], line["pareto"] = f"{row['flip']:.6g}", row["pareto"]
+    with open(directory / "study.csv", "w", newline="") as file:
+        writer = csv.DictWriter(file, fieldnames=list(table[0].keys()))
+        writer.writeheader()
+        writer.writerows(table)
+
+
+def main(directories):
+    directories = [pathlib.Path(d) for d in directories]
+    out = directories[0]
+    studies = [json.loads((d / "study.json").read_text()) for d in directories]
+    rows = []
+    for directory, study in zip(directories, studies):
+        for row in study["rows"]:
+            row["flip"] = mean_flip(directory, row)
+        rows += study["rows"]
+    mark_pareto(rows)
+    for directory, study in zip(directories, studies):
+        add_columns(directory, study["rows"])
+
+    study = studies[0]
+    device = study["device"]["name"]
+    if any(s["device"]["name"] != device or (s["width"], s["height"]) != (study["width"], study["height"])
+           for s in studies):
+        print("study.py: warning: the folders were measured on different devices or sizes", file=sys.stderr)
+    title = f"{device}, {study['width']}×{study['height']}, frame {study['frames']}"
+    markdown = [f"Device: {device} ({study['device']['driver']}, subgroup {study['device']['subgroupSize']}); "
+                f"{study['width']}×{study['height']}; error on frame {study['frames']} of {study['frames']}; "
+                f"time: median of {study['runs']} runs.", ""]
+    for effect in sorted({r["effect"] for r in rows}):
+        plot_effect(rows, effect, title, out / f"{effect}.png")
+    markdown += study_tables(rows)
+
+    scaling_files = [d / "scaling.json" for d in directories if (d / "scaling.json").exists()]
+    if scaling_files:
+        scaling = json.loads(scaling_files[0].read_text())["rows"]
+        plot_scaling(scaling, "resolution", lambda r: r["width"] * r["height"] / 1e6, "megapixels",
+                     f"time against resolution ({device})", out / "scaling_resolution.png")
+        plot_scaling(scaling, "fraction", lambda r: 100 * r["fraction"], "% of rows glossy / in penumbra",
+                     f"time against affected pixels ({device})", out / "scaling_fraction.png")
+        markdown += ["### scaling", ""] + scaling_tables(scaling)
+    (out / "study.md").write_text("\n".join(markdown))
+    print(f"wrote {out / 'study.md'}, the plots and the flip and pareto columns of study.csv")
+
+
+if __name__ == "__main__":
+    if len(sys.argv) < 2:
+        sys.exit("usage: study.py DIR [MORE_DIRS...] (folders written by glint study --out DIR)")
+    main(sys.argv[1:])

@@ -1,0 +1,46 @@
+# glint run, dump, check and report: end to end on small simulated captures with golden-free
+# checks (the error against the capture's own reference, and the denoised output against its
+# noisy input), a dump/check round trip, and the errors a user can make.
+glint_cli_test(NAME "run replays the sample capture under validation" LABELS gpu EXIT 0
+  STDOUT "effects: reflections.*reflections/classify.*reflections/intersect.*wrote .*summary.json"
+  COMMAND --validate run "${GLINT_CLI_SAMPLE_DIR}/sample" --out "${PROJECT_BINARY_DIR}/test-output/cli/run_sample")
+glint_cli_test(NAME "run on a missing capture prints one line and exits 2" LABELS unit EXIT 2
+  STDERR_ONE_LINE "does_not_exist: no such file or folder"
+  COMMAND run "${GLINT_CLI_SAMPLE_DIR}/does_not_exist" --out "${PROJECT_BINARY_DIR}/test-output/cli/run_missing")
+glint_cli_test(NAME "run on a truncated capture prints one line and exits 2" LABELS unit EXIT 2
+  STDERR_ONE_LINE "truncated.exr"
+  COMMAND run "${GLINT_CLI_SAMPLE_DIR}/truncated.exr" --out "${PROJECT_BINARY_DIR}/test-output/cli/run_truncated")
+glint_cli_test(NAME "run of an effect the capture cannot feed names the missing layer" LABELS gpu EXIT 2
+  STDERR_ONE_LINE "effect 'shadows' needs the capture layer 'shadow'"
+  COMMAND run "${GLINT_CLI_SAMPLE_DIR}/sample" --effects shadows --out "${PROJECT_BINARY_DIR}/test-output/cli/run_bad")
+glint_cli_test(NAME "run of an unknown effect is a usage error" LABELS gpu EXIT 2
+  STDERR_ONE_LINE "unknown effect 'nosuch'"
+  COMMAND run "${GLINT_CLI_SAMPLE_DIR}/sample" --effects reflections,nosuch --out "${PROJECT_BINARY_DIR}/test-output/cli/run_bad")
+glint_cli_test(NAME "run with frames outside the capture is a usage error" LABELS unit EXIT 2
+  STDERR_ONE_LINE "--frames 1..7 is outside the capture's 2 frame"
+  COMMAND run "${GLINT_CLI_SAMPLE_DIR}/sample" --frames 1..7 --out "${PROJECT_BINARY_DIR}/test-output/cli/run_bad")
+glint_cli_test(NAME "run with an unknown setting is a usage error naming it" LABELS unit EXIT 2
+  STDERR_ONE_LINE "unknown setting 'nosuch'"
+  COMMAND run "${GLINT_CLI_SAMPLE_DIR}/sample" --set nosuch=1 --out "${PROJECT_BINARY_DIR}/test-output/cli/run_bad")
+glint_cli_test(NAME "dump of a pass the replay does not have is a usage error" LABELS gpu EXIT 2
+  STDERR_ONE_LINE "no pass named 'nosuch'"
+  COMMAND dump "${GLINT_CLI_SAMPLE_DIR}/sample" --pass nosuch --out "${PROJECT_BINARY_DIR}/test-output/cli/dump_bad")
+glint_cli_test(NAME "check against a missing folder is a usage error" LABELS unit EXIT 2
+  STDERR_ONE_LINE "no_such_dir: no such folder"
+  COMMAND check "${GLINT_CLI_SAMPLE_DIR}/sample" --expected "${GLINT_CLI_SAMPLE_DIR}/no_such_dir")
+glint_cli_test(NAME "report without summary.json names the file" LABELS unit EXIT 2
+  STDERR_ONE_LINE "summary.json is missing"
+  COMMAND report "${GLINT_CLI_SAMPLE_DIR}" --out "${PROJECT_BINARY_DIR}/test-output/cli/report_bad.html")
+
+# Simulated scenes with references through run (bounds in replay_e2e.cmake), then dump/check.
+foreach(case IN ITEMS reflections shadows roundtrip)
+  add_test(NAME "cli: replay end to end: ${case}"
+    COMMAND "${CMAKE_COMMAND}" "-DGLINT=$<TARGET_FILE:glint>" "-DCASE=${case}"
+            "-DSCENES=${PROJECT_SOURCE_DIR}/harness/scenes" "-DOUT=${PROJECT_BINARY_DIR}/test-output/cli/replay_${case}"
+            -P "${CMAKE_CURRENT_SOURCE_DIR}/cli/replay_e2e.cmake")
+  set_tests_properties("cli: replay end to end: ${case}" PROPERTIES LABELS gpu)
+endforeach()
+glint_cli_test(NAME "run with a missing channel map names the map file" LABELS unit EXIT 2
+  STDERR_ONE_LINE "no_such_map.toml"
+  COMMAND run "${GLINT_CLI_SAMPLE_DIR}/sample" --map "${GLINT_CLI_SAMPLE_DIR}/no_such_map.toml"
+          --out "${PROJECT_BINARY_DIR}/test-output/cli/run_bad")
