@@ -74,14 +74,22 @@ def plot_effect(rows, effect, title, path):
 
 
 def plot_scaling(rows, sweep, x_of, xlabel, title, path):
-    figure, axes = plt.subplots(figsize=(6.5, 4.5))
-    for effect in sorted({r["effect"] for r in rows}):
+    """One panel per effect: every pass and the total, so that it shows which passes follow the work."""
+    effects = sorted({r["effect"] for r in rows})
+    figure, panels = plt.subplots(1, len(effects), figsize=(6 * len(effects), 4.5), squeeze=False)
+    for axes, effect in zip(panels[0], effects):
         points = sorted((r for r in rows if (r["effect"], r["sweep"]) == (effect, sweep)), key=x_of)
-        axes.plot([x_of(p) for p in points], [p["time_us"] for p in points], marker="o", label=effect)
-    axes.set(xlabel=xlabel, ylabel="GPU time (µs, median)", title=title)
-    axes.set_ylim(bottom=0)
-    axes.legend()
-    axes.grid(alpha=0.3)
+        xs = [x_of(p) for p in points]
+        axes.plot(xs, [p["time_us"] for p in points], marker="o", linewidth=2.5, color="black", label="total")
+        for name in [p["pass"] for p in points[0]["passes"]]:
+            times = [next((q["medianUs"] for q in p["passes"] if q["pass"] == name), 0.0) for p in points]
+            axes.plot(xs, times, marker=".", linewidth=1, label=name.split("/")[-1])
+        axes.set(xlabel=xlabel.get(effect, "") if isinstance(xlabel, dict) else xlabel,
+                 ylabel="GPU time (µs, median)", title=effect)
+        axes.set_ylim(bottom=0)
+        axes.legend(fontsize=7)
+        axes.grid(alpha=0.3)
+    figure.suptitle(title)
     figure.tight_layout()
     figure.savefig(path, dpi=130)
     plt.close(figure)
@@ -105,7 +113,7 @@ def study_tables(rows):
 
 
 def scaling_tables(rows):
-    lines = ["| effect | sweep | size | fraction | time (µs) | traced / filtered |", "|---|---|---|---|---|---|"]
+    lines = ["| effect | sweep | size | fraction | time (µs) | traced fraction / filtered tiles |", "|---|---|---|---|---|---|"]
     for r in rows:
         counters = r.get("counters", {})
         work = counters.get("reflections/traced_fraction", counters.get("shadows/filtered_tiles", ""))
@@ -158,7 +166,8 @@ def main(directories):
         scaling = json.loads(scaling_files[0].read_text())["rows"]
         plot_scaling(scaling, "resolution", lambda r: r["width"] * r["height"] / 1e6, "megapixels",
                      f"time against resolution ({device})", out / "scaling_resolution.png")
-        plot_scaling(scaling, "fraction", lambda r: 100 * r["fraction"], "% of rows glossy / in penumbra",
+        plot_scaling(scaling, "fraction", lambda r: 100 * r["fraction"],
+                     {"reflections": "% of rows glossy", "shadows": "% of rows in penumbra"},
                      f"time against affected pixels ({device})", out / "scaling_fraction.png")
         markdown += ["### scaling", ""] + scaling_tables(scaling)
     (out / "study.md").write_text("\n".join(markdown))
