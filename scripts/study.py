@@ -20,20 +20,29 @@ import json
 import pathlib
 import sys
 
-import flip_evaluator as flip
-import matplotlib
+import numpy as np
 
-matplotlib.use("Agg")  # files only, no display
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
+
+def pyplot():
+    """matplotlib only where plots are drawn: --flip-only runs where it is not installed."""
+    import matplotlib
+
+    matplotlib.use("Agg")  # files only, no display
+    import matplotlib.pyplot as plt
+
+    return plt
 
 
 def load_rgb(path):
+    import flip_evaluator as flip
+
     image = np.asarray(flip.load(str(path)), dtype=np.float32)[..., :3]
     return np.nan_to_num(image, nan=0.0, posinf=0.0, neginf=0.0)  # non-finite is reported apart
 
 
 def mean_flip(directory, row):
+    import flip_evaluator as flip
+
     reference = load_rgb(directory / row["reference"])
     output = load_rgb(directory / row["output"])
     mask = load_rgb(directory / row["mask"])[..., 0] > 0.5
@@ -55,6 +64,7 @@ def mark_pareto(rows):
 
 
 def plot_effect(rows, effect, title, path):
+    plt = pyplot()
     figure, axes = plt.subplots(figsize=(8, 5.5))
     scenes = sorted({r["scene"] for r in rows if r["effect"] == effect})
     for colour, scene in zip(plt.cm.tab10.colors, scenes):
@@ -74,6 +84,7 @@ def plot_effect(rows, effect, title, path):
 
 
 def plot_scaling(rows, sweep, x_of, xlabel, title, path):
+    plt = pyplot()
     """One panel per effect: every pass and the total, so that it shows which passes follow the work."""
     effects = sorted({r["effect"] for r in rows})
     figure, panels = plt.subplots(1, len(effects), figsize=(6 * len(effects), 4.5), squeeze=False)
@@ -135,14 +146,16 @@ def add_columns(directory, rows):
         writer.writerows(table)
 
 
-def main(directories):
+def main(directories, plots=True):
     directories = [pathlib.Path(d) for d in directories]
     out = directories[0]
     studies = [json.loads((d / "study.json").read_text()) for d in directories]
     rows = []
     for directory, study in zip(directories, studies):
         for row in study["rows"]:
-            row["flip"] = mean_flip(directory, row)
+            if "flip" not in row:  # kept in study.json, so that plots need no images
+                row["flip"] = mean_flip(directory, row)
+        (directory / "study.json").write_text(json.dumps(study, indent=1))
         rows += study["rows"]
     mark_pareto(rows)
     for directory, study in zip(directories, studies):
@@ -157,24 +170,29 @@ def main(directories):
     markdown = [f"Device: {device} ({study['device']['driver']}, subgroup {study['device']['subgroupSize']}); "
                 f"{study['width']}×{study['height']}; error on frame {study['frames']} of {study['frames']}; "
                 f"time: median of {study['runs']} runs.", ""]
-    for effect in sorted({r["effect"] for r in rows}):
+    for effect in sorted({r["effect"] for r in rows}) if plots else []:
         plot_effect(rows, effect, title, out / f"{effect}.png")
     markdown += study_tables(rows)
 
     scaling_files = [d / "scaling.json" for d in directories if (d / "scaling.json").exists()]
     if scaling_files:
         scaling = json.loads(scaling_files[0].read_text())["rows"]
+    if scaling_files and plots:
         plot_scaling(scaling, "resolution", lambda r: r["width"] * r["height"] / 1e6, "megapixels",
                      f"time against resolution ({device})", out / "scaling_resolution.png")
         plot_scaling(scaling, "fraction", lambda r: 100 * r["fraction"],
                      {"reflections": "% of rows glossy", "shadows": "% of rows in penumbra"},
                      f"time against affected pixels ({device})", out / "scaling_fraction.png")
+    if scaling_files:
         markdown += ["### scaling", ""] + scaling_tables(scaling)
     (out / "study.md").write_text("\n".join(markdown))
     print(f"wrote {out / 'study.md'}, the plots and the flip and pareto columns of study.csv")
 
 
 if __name__ == "__main__":
-    if len(sys.argv) < 2:
-        sys.exit("usage: study.py DIR [MORE_DIRS...] (folders written by glint study --out DIR)")
-    main(sys.argv[1:])
+    arguments = [a for a in sys.argv[1:] if a != "--flip-only"]
+    if not arguments:
+        sys.exit("usage: study.py [--flip-only] DIR [MORE_DIRS...] (folders written by glint study --out DIR)")
+    # --flip-only: FLIP, Pareto and tables without matplotlib (the GPU machine); study.json keeps
+    # the FLIP values, so a later run elsewhere draws the plots without the images.
+    main(arguments, plots="--flip-only" not in sys.argv)

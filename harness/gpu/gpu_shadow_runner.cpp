@@ -59,7 +59,7 @@ void ShadowRunner::setHistory(std::uint32_t frameIndex, const std::vector<float>
 }
 
 ShadowOutputs ShadowRunner::run(const ShadowDenoiserDesc& desc, const ShadowInputs& inputs,
-                                PlanTimings* timings) {
+                                PlanTimings* timings, bool readback) {
     const EffectPlan plan = planOrThrow(desc);
     const std::vector<float>* data[] = {&inputs.visibility, &inputs.depth,  &inputs.previousDepth,
                                         &inputs.normals,    &inputs.motion, &inputs.meanVariance};
@@ -72,6 +72,9 @@ ShadowOutputs ShadowRunner::run(const ShadowDenoiserDesc& desc, const ShadowInpu
     if (timings) *timings = std::move(measured);
 
     ShadowOutputs outputs;
+    if (owned_.buffers.contains("shadow_filter_work"))
+        outputs.filteredTiles = readWords(context_, owned_.buffers.at("shadow_filter_work")).at(0);
+    if (!readback) return outputs;
     outputs.mask = readWords(context_, owned_.buffers.at("shadow_mask"));
     if (desc.classify) {
         outputs.metadata = readWords(context_, owned_.buffers.at("shadow_tile_metadata"));
@@ -80,8 +83,6 @@ ShadowOutputs ShadowRunner::run(const ShadowDenoiserDesc& desc, const ShadowInpu
         if (!desc.filter) outputs.classified = readbackImage(context_, owned_.images.at("shadow_scratch0"));
     }
     if (desc.filter) outputs.filtered = readbackImage(context_, owned_.images.at("shadow_output"));
-    if (owned_.buffers.contains("shadow_filter_work"))
-        outputs.filteredTiles = readWords(context_, owned_.buffers.at("shadow_filter_work")).at(0);
     return outputs;
 }
 

@@ -42,9 +42,10 @@ class ShadowRunner {
     ShadowRunner& operator=(const ShadowRunner&) = delete;
 
     // Plans `desc` (same size and flags as the constructor's), uploads the non-empty inputs,
-    // runs, reads back. With `timings`, the pass names and GPU milliseconds of this frame.
+    // runs, reads back (only filteredTiles without `readback`). With `timings`, the pass names
+    // and GPU milliseconds of this frame.
     ShadowOutputs run(const ShadowDenoiserDesc& desc, const ShadowInputs& inputs,
-                      PlanTimings* timings = nullptr);
+                      PlanTimings* timings = nullptr, bool readback = true);
     // Overwrites the moments history (read this frame with frameIndex) and scratch 1.
     void setHistory(std::uint32_t frameIndex, const std::vector<float>& moments,
                     const std::vector<float>& shadow);

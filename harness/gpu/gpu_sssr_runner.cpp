@@ -161,6 +161,11 @@ void SssrRunner::run(const SssrDesc& frame, std::vector<double>* timings,
     if (result != Result::Ok) throw std::runtime_error(error);
 }
 
+std::array<std::uint32_t, 4> SssrRunner::counters() const {
+    const std::vector<std::uint32_t> words = readWords(context_, effect_.buffers.at("sssr_counters"), 4);
+    return {words[0], words[1], words[2], words[3]};
+}
+
 SssrFrameOutputs SssrRunner::readback() const {
     SssrFrameOutputs out;
     out.width = desc_.size.width;

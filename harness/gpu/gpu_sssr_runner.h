@@ -9,6 +9,7 @@
 #include "glint/glint_sssr.h"
 #include "vulkan/vk_sssr.h"
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -59,6 +60,8 @@ class SssrRunner {
     void run(const SssrDesc& frame, std::vector<double>* timings = nullptr,
              const ReflectionsDenoiserDesc* denoiser = nullptr, const vk::PassHooks* extraHooks = nullptr);
     SssrFrameOutputs readback() const;
+    // The four counters alone (rays, tiles...), cheap enough to read between timed frames.
+    std::array<std::uint32_t, 4> counters() const;
     std::vector<std::string> passNames(const SssrDesc& frame, bool denoised = false) const;
     // An owned image by name (e.g. "rd_radiance0"), for tests that poison histories.
     const vk::Image& ownedImage(const std::string& name) const;

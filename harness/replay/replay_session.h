@@ -78,6 +78,10 @@ class Session {
 
     // Runs one frame. The first frame and `cut` reset every history.
     FrameResult run(const capture::Frame& frame, bool cut = false);
+    // The last frame again, as the next frame index, without uploading anything: back-to-back
+    // GPU work for benchmarks (uploads between timed frames let the GPU clock down). Timings
+    // and counters only; the camera is treated as static.
+    FrameResult repeat();
     const std::vector<std::string>& effects() const { return effects_; }
 
     struct Reflections;

@@ -84,6 +84,7 @@ ShadowClassifyOutputs shadowClassify(const ShadowClassifyInputs& in) {
                         out.shadowVariance[2 * p] = value;
                         out.moments[4 * p] = value;
                         out.moments[4 * p + 2] = receiver ? 1.0f : 0.0f;
+                        out.moments[4 * p + 3] = value;
                         continue;
                     }
                     if (!receiver) continue;
@@ -144,7 +145,8 @@ ShadowClassifyOutputs shadowClassify(const ShadowClassifyInputs& in) {
                         const float tx = fx - float(bx), ty = fy - float(by);
                         auto hist = [&](int hx, int hy) {
                             return in
-                                .shadowHistory[2 * idx(std::clamp(hx, 0, w - 1), std::clamp(hy, 0, h - 1))];
+                                .momentsHistory[4 * idx(std::clamp(hx, 0, w - 1), std::clamp(hy, 0, h - 1)) +
+                                                3];
                         };
                         const float top = hist(bx, by) + (hist(bx + 1, by) - hist(bx, by)) * tx;
                         const float bottom =
@@ -162,19 +164,24 @@ ShadowClassifyOutputs shadowClassify(const ShadowClassifyInputs& in) {
                     const float newMean = m + delta / n;
                     const float newM2 = m2 + delta * (sample - newMean);
                     const float temporalVariance = n > 1.0f ? newM2 / (n - 1.0f) : 1.0f;
-                    const float radius = 0.5f * spatialSigma;
+                    // Wide clamp (2 sigma_s), blend max(1/n, 1/64), variance of the mean / 16.
+                    const float radius = 2.0f * spatialSigma;
                     const float clamped = std::clamp(history, mean - radius, mean + radius);
                     const float deviation = (history - mean) / std::max(radius, 0.001f);
                     n *= std::exp(-deviation * deviation / 20.0f);
-                    const float variance =
+                    const float samples = std::max(n, 1.0f);
+                    const float spread =
                         n < 16.0f ? std::max(temporalVariance, spatialVariance) * std::max(16.0f - n, 1.0f)
                                   : temporalVariance;
-                    const float youth = std::sqrt(std::max(8.0f - n, 0.0f) / 8.0f);
-                    const float result = clamped + (sample - clamped) * (0.05f + (1.0f - 0.05f) * youth);
-                    out.shadowVariance[2 * p] = std::clamp(finite(result) ? result : 0.0f, 0.0f, 1.0f);
+                    const float variance = spread / samples / 16.0f;
+                    const float alpha = std::max(1.0f / samples, 1.0f / 64.0f);
+                    float result = std::clamp(clamped + (sample - clamped) * alpha, 0.0f, 1.0f);
+                    result = finite(result) ? result : 0.0f;
+                    out.shadowVariance[2 * p] = result;
                     out.shadowVariance[2 * p + 1] = std::max(finite(variance) ? variance : 0.0f, 0.0f);
                     out.moments[4 * p] = std::clamp(finite(newMean) ? newMean : 0.0f, 0.0f, 1.0f);
                     out.moments[4 * p + 1] = std::max(finite(newM2) ? newM2 : 0.0f, 0.0f);
+                    out.moments[4 * p + 3] = result;
                     out.moments[4 * p + 2] = finite(n) ? n : 0.0f;
                 }
         }

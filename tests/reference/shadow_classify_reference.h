@@ -15,8 +15,7 @@ struct ShadowClassifyInputs {
     std::vector<float> previousDepth;     // W x H
     std::vector<float> normals;           // RGBA, unpacked
     std::vector<float> motion;            // RG, convention A
-    std::vector<float> momentsHistory;    // RGBA (mean, M2, n, 0)
-    std::vector<float> shadowHistory;     // RG (.x used)
+    std::vector<float> momentsHistory;    // RGBA (mean, M2, n, accumulated shadow)
     std::array<float, 16> reprojection{}; // row-major, column vectors
     std::array<float, 16> inverseViewProjection{};
     std::array<float, 3> eye{};
@@ -28,7 +27,7 @@ struct ShadowClassifyInputs {
 struct ShadowClassifyOutputs {
     std::vector<std::uint32_t> metadata; // one per 8x8 tile
     std::vector<float> shadowVariance;   // RG
-    std::vector<float> moments;          // RGBA (mean, M2, n, 0)
+    std::vector<float> moments;          // RGBA (mean, M2, n, accumulated shadow)
 };
 
 ShadowClassifyOutputs shadowClassify(const ShadowClassifyInputs& in);

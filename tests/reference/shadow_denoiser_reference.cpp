@@ -116,7 +116,7 @@ std::vector<float> shadowFilterPass(const ShadowFilterInputs& inputs, const std:
 std::vector<float> shadowFilter(const ShadowFilterInputs& inputs) {
     std::vector<float> current = inputs.meanVariance;
     for (std::uint32_t pass = 0; pass < 3; ++pass)
-        current = shadowFilterPass(inputs, current, 1u << pass, pass == 2);
+        current = shadowFilterPass(inputs, current, 1u << pass, pass == 2 && inputs.contrastRemap);
     return current;
 }
 

@@ -20,13 +20,14 @@ struct ShadowFilterInputs {
     float viewDepth[3] = {0.1f, 1.0f, -1.0f};
     float depthSigma = 0.02f;
     float normalPower = 32.0f;
+    bool contrastRemap = false; // the last pass applies mean^max(1.2 - variance, 1)
 };
 
 // One a-trous iteration; returns RG per pixel.
 std::vector<float> shadowFilterPass(const ShadowFilterInputs& inputs, const std::vector<float>& meanVariance,
                                     std::uint32_t step, bool finalPass);
 
-// Three iterations (steps 1, 2, 4); the last with the contrast remap.
+// Three iterations (steps 1, 2, 4); the last with the contrast remap when asked.
 std::vector<float> shadowFilter(const ShadowFilterInputs& inputs);
 
 } // namespace glint::reference

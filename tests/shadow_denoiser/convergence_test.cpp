@@ -1,6 +1,6 @@
 // Static scene from the simulator: the denoised shadow's error against reference.shadow over
-// penumbra pixels, frame by frame. A regression bound for now: the error does not yet fall
-// below the plain average of the input (see the numbers below and docs/shadow_denoiser.md).
+// penumbra pixels, frame by frame. The error must keep falling and end at the plain average of
+// the input over the same frames (see the numbers below and docs/shadow_denoiser.md).
 #include "shadow_denoiser/shadow_runner.h"
 #include "support/gpu_test_context.h"
 
@@ -18,7 +18,7 @@ using namespace glint;
 
 namespace {
 
-constexpr std::uint32_t kFrames = 16;
+constexpr std::uint32_t kFrames = 32;
 
 std::vector<float> channels(const capture::Frame& frame, const char* name, std::size_t stride) {
     const capture::Layer* layer = capture::findLayer(frame, name);
@@ -48,7 +48,7 @@ double penumbraError(const std::vector<float>& value, std::size_t stride,
 
 } // namespace
 
-TEST_CASE("static courtyard: the penumbra error stays within the measured bound", "[convergence]") {
+TEST_CASE("static courtyard: the penumbra error converges to the plain input average", "[convergence]") {
     scene::Scene scene = scene::loadScene(GLINT_SOURCE_DIR "/harness/scenes/courtyard_penumbra.toml");
     scene.frameCount = kFrames;
     scene.reference.shadows = true;
@@ -59,7 +59,7 @@ TEST_CASE("static courtyard: the penumbra error stays within the measured bound"
     std::optional<test::ShadowRunner> runner;
     std::vector<float> previousDepth;
     std::vector<float> average;
-    double first = 0.0, last = 0.0, averaged = 0.0, worst = 0.0;
+    double first = 0.0, last = 0.0, averaged = 0.0, early = 0.0, late = 0.0;
     for (std::uint32_t index = 0; index < kFrames; ++index) {
         const capture::Frame& frame = sim.frames[index];
         ShadowDenoiserDesc desc;
@@ -70,7 +70,8 @@ TEST_CASE("static courtyard: the penumbra error stays within the measured bound"
         const std::vector<float> reference = channels(frame, "reference.shadow", 1);
         const double error = penumbraError(outputs.filtered, 2, reference);
         if (index == 0) first = error;
-        worst = std::max(worst, error);
+        if (index < 4) early += error / 4.0;
+        if (index + 4 >= kFrames) late += error / 4.0;
         last = error;
         if (average.empty()) average.assign(inputs.visibility.size(), 0.0f);
         for (std::size_t i = 0; i < average.size(); ++i) average[i] += inputs.visibility[i] / float(kFrames);
@@ -79,13 +80,16 @@ TEST_CASE("static courtyard: the penumbra error stays within the measured bound"
     }
     INFO("penumbra MAE: frame 0 " << first << ", frame " << kFrames - 1 << " " << last << ", plain "
                                   << kFrames << "-frame average of the input " << averaged);
-    // Measured on lavapipe at 160x90: frame 0 0.155, best 0.108 (frame 6), frame 15 0.155; the
-    // plain 16-frame average of the input is 0.083. At 480x270: 0.089, best 0.067 (frame 7),
-    // 0.088 at frame 23. The error dips while the variance boost still drives the spatial
-    // filter, then returns as the boost wears off (n -> 16). The goal (the error falls below
-    // the plain average) is NOT met yet; this guards against regressions beyond that level.
-    CHECK(worst < 0.18);
-    CHECK(last <= first + 0.01);
+    // Measured on lavapipe at 160x90 over 32 frames (the FidelityFX-style version before the
+    // fix: 0.155 at frame 0, best 0.108 at frame 6, 0.155 at frame 15, 0.147 at frame 31):
+    // frame 0 0.201, frames 0-3 mean 0.17, frame 15 0.085, frame 31 0.068 against 0.0663 for the
+    // plain 32-frame average of the input. The error now falls monotonically (to within noise)
+    // towards the plain average; it does NOT get below it at this size: only ~130 pixels are
+    // penumbra and their penumbrae are 1-3 pixels wide, so even a 3x3 blur of the converged
+    // reference itself has an error of 0.104 there, and any spatial filtering adds bias.
+    CHECK(late < 0.6 * early);
+    CHECK(last < 0.5 * first);
+    CHECK(last < 1.05 * averaged);
     WARN("penumbra MAE: frame 0 " << first << ", frame " << kFrames - 1 << " " << last << ", input average "
                                   << averaged);
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();

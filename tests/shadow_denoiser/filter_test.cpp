@@ -33,13 +33,16 @@ reference::ShadowFilterInputs referenceInputs(const ShadowDenoiserDesc& desc,
     ref.viewDepth[2] = -1.0f;
     ref.depthSigma = desc.depthSigma;
     ref.normalPower = desc.normalPower;
+    ref.contrastRemap = desc.contrastRemap;
     return ref;
 }
 
-void checkFilter(std::uint32_t width, std::uint32_t height, const test::ShadowInputs& inputs) {
+void checkFilter(std::uint32_t width, std::uint32_t height, const test::ShadowInputs& inputs,
+                 bool contrastRemap = false) {
     ShadowDenoiserDesc desc;
     desc.size = {width, height};
     desc.classify = false;
+    desc.contrastRemap = contrastRemap;
     const test::ShadowOutputs outputs = test::runShadowDenoiser(desc, inputs);
     const std::vector<float> expected = reference::shadowFilter(referenceInputs(desc, inputs));
     INFO(width << "x" << height);
@@ -66,6 +69,7 @@ void checkFilter(std::uint32_t width, std::uint32_t height, const test::ShadowIn
 
 TEST_CASE("filter 64x48: matches the CPU reference", "[filter]") {
     checkFilter(64, 48, test::makeShadowInputs(64, 48, 1));
+    checkFilter(64, 48, test::makeShadowInputs(64, 48, 1), true); // FidelityFX's contrast remap
 }
 TEST_CASE("filter 1x1 and 13x7: match the CPU reference", "[filter]") {
     checkFilter(1, 1, test::makeShadowInputs(1, 1, 2));

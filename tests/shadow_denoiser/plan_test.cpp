@@ -33,10 +33,10 @@ TEST_CASE("shadow plan: passes, resources and sizes", "[plan]") {
     CHECK(plan.buffers[1].size == 2 * 1 * 4);
     CHECK(plan.images.size() == 5);
     // Moments ping-pong on the frame parity.
-    CHECK(plan.passes[1].uses[9].resource == "shadow_moments0");
+    CHECK(plan.passes[1].uses[8].resource == "shadow_moments0");
     desc.frameIndex = 1;
     REQUIRE(planShadowDenoiser(desc, plan, &error) == Result::Ok);
-    CHECK(plan.passes[1].uses[9].resource == "shadow_moments1");
+    CHECK(plan.passes[1].uses[8].resource == "shadow_moments1");
     CHECK(plan.passes[1].uses[5].resource == "shadow_moments0");
     CHECK(shadowMaskTiles({1917, 1077}).width == 240);
     CHECK(shadowMaskTiles({1917, 1077}).height == 270);

@@ -22,11 +22,3 @@ glint_add_test_suite(NAME shadow_denoiser_scene LABELS gpu
     shadow_denoiser/convergence_test.cpp
     shadow_denoiser/shadow_runner.cpp
   LIBS glint_replay glint_scene glint_gpu_test_support glint_gpu)
-
-# TEMPORARY experiment
-glint_add_test_suite(NAME shadow_experiment LABELS gpu
-  SOURCES
-    shadow_denoiser/zz_experiment_test.cpp
-    shadow_denoiser/shadow_runner.cpp
-    reference/shadow_denoiser_reference.cpp
-  LIBS glint_replay glint_scene glint_gpu_test_support glint_gpu)

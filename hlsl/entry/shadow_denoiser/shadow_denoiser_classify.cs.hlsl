@@ -12,7 +12,6 @@
 [[vk::binding(4, 0)]] Texture2D<float4> g_glint_normals;
 [[vk::binding(5, 0)]] Texture2D<float2> g_glint_motion;
 [[vk::binding(6, 0)]] Texture2D<float4> g_glint_moments_history;
-[[vk::binding(7, 0)]] Texture2D<float2> g_glint_shadow_history;
 [[vk::binding(8, 0)]] RWStructuredBuffer<uint> g_glint_tile_metadata;
 [[vk::binding(9, 0)]] GLINT_IMAGE_FORMAT(rg32f) RWTexture2D<float2> g_glint_shadow_variance;
 [[vk::binding(10, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_moments;
@@ -50,7 +49,7 @@ float3 GLINT_SHADOW_DENOISER_LoadMomentsHistory(int2 pixel)
 
 float GLINT_SHADOW_DENOISER_LoadShadowHistory(int2 pixel)
 {
-    return g_glint_shadow_history.Load(int3(pixel, 0)).x;
+    return g_glint_moments_history.Load(int3(pixel, 0)).w;
 }
 
 void GLINT_SHADOW_DENOISER_StoreMetadata(uint tileIndex, uint metadata)
@@ -63,9 +62,9 @@ void GLINT_SHADOW_DENOISER_StoreShadowVariance(int2 pixel, float2 value)
     g_glint_shadow_variance[pixel] = value;
 }
 
-void GLINT_SHADOW_DENOISER_StoreMoments(int2 pixel, float3 moments)
+void GLINT_SHADOW_DENOISER_StoreMoments(int2 pixel, float4 moments)
 {
-    g_glint_moments[pixel] = float4(moments, 0.0);
+    g_glint_moments[pixel] = moments;
 }
 
 [numthreads(8, 8, 1)] void main(uint3 groupId : SV_GroupID, uint3 groupThreadId : SV_GroupThreadID,

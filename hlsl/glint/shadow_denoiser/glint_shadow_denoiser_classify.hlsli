@@ -11,10 +11,11 @@
 //   float3 GLINT_SHADOW_DENOISER_LoadNormal(int2 pixel);        unpacked world normal
 //   float2 GLINT_SHADOW_DENOISER_LoadMotion(int2 pixel);        convention A: uv_prev = uv + mv
 //   float3 GLINT_SHADOW_DENOISER_LoadMomentsHistory(int2 pixel);(mean, M2, n) of last frame
-//   float  GLINT_SHADOW_DENOISER_LoadShadowHistory(int2 pixel); last frame's filter-0 mean
+//   float  GLINT_SHADOW_DENOISER_LoadShadowHistory(int2 pixel); last frame's accumulated shadow
+//                                                               (the .w of StoreMoments)
 //   void   GLINT_SHADOW_DENOISER_StoreMetadata(uint tileIndex, uint metadata);
 //   void   GLINT_SHADOW_DENOISER_StoreShadowVariance(int2 pixel, float2 value);
-//   void   GLINT_SHADOW_DENOISER_StoreMoments(int2 pixel, float3 moments);
+//   void   GLINT_SHADOW_DENOISER_StoreMoments(int2 pixel, float4 moments);  (mean, M2, n, shadow)
 // Every loaded value may be non-finite: such histories count as missing, such depths as sky.
 //
 // Dispatch: [numthreads(8, 8, 1)], ceil(W / 8) x ceil(H / 8) x 1 groups.
@@ -33,7 +34,7 @@ float3 GLINT_SHADOW_DENOISER_LoadMomentsHistory(int2 pixel);
 float GLINT_SHADOW_DENOISER_LoadShadowHistory(int2 pixel);
 void GLINT_SHADOW_DENOISER_StoreMetadata(uint tileIndex, uint metadata);
 void GLINT_SHADOW_DENOISER_StoreShadowVariance(int2 pixel, float2 value);
-void GLINT_SHADOW_DENOISER_StoreMoments(int2 pixel, float3 moments);
+void GLINT_SHADOW_DENOISER_StoreMoments(int2 pixel, float4 moments);
 
 groupshared uint g_glint_shadow_denoiser_classify_receivers;
 
@@ -150,13 +151,13 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint2 groupThreadId, uint gro
     {
         float value = anyReceiver && allLit && receiver ? 1.0 : 0.0;
         GLINT_SHADOW_DENOISER_StoreShadowVariance(pixel, float2(value, 0.0));
-        GLINT_SHADOW_DENOISER_StoreMoments(pixel, float3(value, 0.0, receiver ? 1.0 : 0.0));
+        GLINT_SHADOW_DENOISER_StoreMoments(pixel, float4(value, 0.0, receiver ? 1.0 : 0.0, value));
         return;
     }
     if (!receiver)
     {
         GLINT_SHADOW_DENOISER_StoreShadowVariance(pixel, float2(0.0, 0.0));
-        GLINT_SHADOW_DENOISER_StoreMoments(pixel, float3(0.0, 0.0, 0.0));
+        GLINT_SHADOW_DENOISER_StoreMoments(pixel, float4(0.0, 0.0, 0.0, 0.0));
         return;
     }
 
@@ -235,18 +236,25 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint2 groupThreadId, uint gro
     float m2 = moments.y + delta * (x - newMean);
     float temporalVariance = n > 1.0 ? m2 / (n - 1.0) : 1.0;
 
-    float clampRadius = 0.5 * spatialSigma;
+    // The history is the unfiltered accumulation (never a filter output: feeding the filtered
+    // value back blurs the penumbra again every frame). The clamp is wide (2 sigma_s): the
+    // 17x17 mean is biased across narrow penumbrae, and a tight clamp pins the history to it.
+    float clampRadius = GLINT_SHADOW_DENOISER_CLAMP_SIGMAS * spatialSigma;
     float clamped = clamp(history, mean - clampRadius, mean + clampRadius);
     float deviation = (history - mean) / max(clampRadius, 0.001);
     n *= exp(-deviation * deviation / 20.0);
-    float variance = n < 16.0 ? max(temporalVariance, spatialVariance) * max(16.0 - n, 1.0) : temporalVariance;
-    float youth = sqrt(max(8.0 - n, 0.0) / 8.0);
-    float result = lerp(clamped, x, lerp(0.05, 1.0, youth));
+    float count = max(n, 1.0);
+    // Variance of the accumulated mean (boosted while young): the filter's edge stop tightens as
+    // samples accumulate, so the spatial filter fades out instead of biasing the penumbra.
+    float variance = (n < 16.0 ? max(temporalVariance, spatialVariance) * max(16.0 - n, 1.0) : temporalVariance) /
+                     count * GLINT_SHADOW_DENOISER_FILTER_VARIANCE_SCALE;
+    float alpha = max(1.0 / count, 1.0 / GLINT_SHADOW_DENOISER_HISTORY_CAP);
+    float result = clamp(lerp(clamped, x, alpha), 0.0, 1.0);
+    result = GLINT_FiniteOr(result, 0.0);
 
-    GLINT_SHADOW_DENOISER_StoreShadowVariance(
-        pixel, float2(clamp(GLINT_FiniteOr(result, 0.0), 0.0, 1.0), max(GLINT_FiniteOr(variance, 0.0), 0.0)));
-    GLINT_SHADOW_DENOISER_StoreMoments(pixel, float3(clamp(GLINT_FiniteOr(newMean, 0.0), 0.0, 1.0),
-                                                     max(GLINT_FiniteOr(m2, 0.0), 0.0), GLINT_FiniteOr(n, 0.0)));
+    GLINT_SHADOW_DENOISER_StoreShadowVariance(pixel, float2(result, max(GLINT_FiniteOr(variance, 0.0), 0.0)));
+    GLINT_SHADOW_DENOISER_StoreMoments(pixel, float4(clamp(GLINT_FiniteOr(newMean, 0.0), 0.0, 1.0),
+                                                     max(GLINT_FiniteOr(m2, 0.0), 0.0), GLINT_FiniteOr(n, 0.0), result));
 }
 
 #endif // GLINT_SHADOW_DENOISER_CLASSIFY_HLSLI

@@ -30,12 +30,19 @@ GLINT_CONSTANTS_END(GLINT_ShadowDenoiserPrepareConstants);
 GLINT_CONSTANTS_BEGIN(GLINT_ShadowDenoiserFilterConstants)
     uint2 inputSize;         // W x H
     uint step;               // a-trous tap spacing in pixels: 1, 2 or 4
-    uint finalPass;          // 1: apply the contrast remap to the mean
+    uint finalPass;          // 1: apply FidelityFX's contrast remap to the mean (opt-in, biased)
     float4 viewDepth;        // (A, B, C, 0): view depth z = A / (B + C d) of device depth d
     float2 normalUnpack;     // (mul, add): n = normalize(raw.xyz * mul + add)
     float depthSigma;        // relative depth edge stop: exp(-|z_c - z_q| / (depthSigma z_c))
     float normalPower;       // normal edge stop: max(0, N_c . N_q)^normalPower
 GLINT_CONSTANTS_END(GLINT_ShadowDenoiserFilterConstants);
+
+// Temporal accumulation (docs/shadow_denoiser.md, "Convergence"): the history is clamped to
+// mu +- CLAMP_SIGMAS sigma_s of the 17x17 statistics, blended with alpha = max(1/n, 1/HISTORY_CAP),
+// and the filter's edge stop uses FILTER_VARIANCE_SCALE times the variance of the accumulated mean.
+#define GLINT_SHADOW_DENOISER_CLAMP_SIGMAS 2.0
+#define GLINT_SHADOW_DENOISER_HISTORY_CAP 64.0
+#define GLINT_SHADOW_DENOISER_FILTER_VARIANCE_SCALE 0.0625
 
 // Tile metadata bits (one word per 8x8 tile).
 #define GLINT_SHADOW_DENOISER_TILE_CLEAR 1u

@@ -2,8 +2,8 @@
 //
 // Input: one binary visibility sample per pixel (R32F, 1 = lit), device depth and world-space
 // normals. The plan packs the visibility into a bitmask (one word per 8 x 4 pixels) and runs
-// three edge-avoiding a-trous passes (steps 1, 2, 4) over (mean, variance), the last of which
-// applies the contrast remap. Tile classification in between accumulates over time.
+// three edge-avoiding a-trous passes (steps 1, 2, 4) over (mean, variance); the last applies the
+// contrast remap only when asked. Tile classification in between accumulates over time.
 #pragma once
 
 #include "glint/glint_pass.h"
@@ -31,6 +31,9 @@ struct ShadowDenoiserDesc {
     bool filter = true;           // false: no filter passes
     bool classify = true;         // false: no classification; the filter reads "shadow_filter_input"
     bool skipClearedTiles = true; // with classify: the filter skips tiles classification cleared
+    // FidelityFX's "contrast recovery" mean^max(1.2 - variance, 1) in the last pass. Off by
+    // default: it darkens penumbrae (docs/shadow_denoiser.md, "Convergence").
+    bool contrastRemap = false;
 
     // Classification (temporal) inputs. Matrices are row-major 4x4 with column vectors (q = M p).
     std::array<double, 16> reprojection{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}; // VP_prev VP^-1
@@ -53,9 +56,10 @@ Extent2D shadowMaskTiles(Extent2D size);
 //   "shadow_filter_input"   RG32F W x H (mean, variance), only when classify is false
 //   "shadow_mask"           buffer, 4 bytes per mask word, written by "prepare"
 //   "shadow_tile_metadata"  buffer, 4 bytes per 8x8 tile: bit 0 CLEAR, bit 1 LIGHT
-//   "shadow_moments0/1"     RGBA32F (mean, M2, n, 0): written on frame parity, read on the other
+//   "shadow_moments0/1"     RGBA32F (mean, M2, n, accumulated shadow): written on frame parity, read
+//                           on the other; .w is the next frame's shadow history
 //   "shadow_scratch0/1"     RG32F (shadow, variance): classification writes 0; "filter0" writes 1,
-//                           which stays as the next frame's history; "filter1" writes 0
+//                           "filter1" writes 0
 //   "shadow_filter_work"    buffer, one uint: 8x8 tiles the three filter passes filtered (skipping)
 //   "shadow_output"         RG32F: .x the denoised shadow (1 = lit, 0 for non-receivers), .y variance
 // Every owned image must hold finite values or be ignored through resetHistory on the first frame.

@@ -56,7 +56,7 @@ Pass filterPass(const ShadowDenoiserDesc& desc, std::uint32_t index, const char*
     shaders::GLINT_ShadowDenoiserFilterConstants constants{};
     constants.inputSize = {desc.size.width, desc.size.height};
     constants.step = 1u << index;
-    constants.finalPass = index == 2 ? 1u : 0u;
+    constants.finalPass = index == 2 && desc.contrastRemap ? 1u : 0u;
     constants.viewDepth = viewDepthCoefficients(desc);
     constants.normalUnpack = {desc.normalUnpackMul, desc.normalUnpackAdd};
     constants.depthSigma = desc.depthSigma;
@@ -100,7 +100,6 @@ Pass classifyPass(const ShadowDenoiserDesc& desc, Extent2D tiles) {
                  {"g_glint_normals", "shadow_normals", Access::Read},
                  {"g_glint_motion", "shadow_motion", Access::Read},
                  {"g_glint_moments_history", odd ? "shadow_moments0" : "shadow_moments1", Access::Read},
-                 {"g_glint_shadow_history", "shadow_scratch1", Access::Read},
                  {"g_glint_tile_metadata", "shadow_tile_metadata", Access::Write},
                  {"g_glint_shadow_variance", "shadow_scratch0", Access::Write},
                  {"g_glint_moments", odd ? "shadow_moments1" : "shadow_moments0", Access::Write}};
