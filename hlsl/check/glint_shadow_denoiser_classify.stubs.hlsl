@@ -47,9 +47,9 @@ void GLINT_SHADOW_DENOISER_StoreShadowVariance(int2 pixel, float2 value)
     g_glint_check[pixel.x] = float4(value, 0.0, 0.0);
 }
 
-void GLINT_SHADOW_DENOISER_StoreMoments(int2 pixel, float3 moments)
+void GLINT_SHADOW_DENOISER_StoreMoments(int2 pixel, float4 moments)
 {
-    g_glint_check[pixel.y] = float4(moments, 0.0);
+    g_glint_check[pixel.y] = moments;
 }
 
 [numthreads(8, 8, 1)] void main(uint3 groupId : SV_GroupID, uint3 groupThreadId : SV_GroupThreadID,
