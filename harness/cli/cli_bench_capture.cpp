@@ -88,14 +88,6 @@ void printCounters(std::FILE* out, const std::vector<replay::Counter>& counters)
 
 } // namespace
 
-capture::Environment blackEnvironment() {
-    capture::Environment environment;
-    environment.width = 16;
-    environment.height = 8;
-    environment.rgb.assign(16 * 8 * 3, 0.0f);
-    return environment;
-}
-
 Measurement measureFrames(const gpu::Context& context, const std::vector<capture::Frame>& frames,
                           const capture::Environment& environment, replay::SessionOptions options,
                           std::uint32_t runs) {

@@ -38,9 +38,6 @@ Measurement measureFrames(const gpu::Context& context, const std::vector<capture
                           const capture::Environment& environment, replay::SessionOptions options,
                           std::uint32_t runs);
 
-// A black 16x8 lat-long environment, for captures and scenes without one (as CaptureSource).
-capture::Environment blackEnvironment();
-
 nlohmann::json deviceJson(const gpu::Context& context);
 nlohmann::json measurementJson(const Measurement& measurement);
 void printMeasurement(std::FILE* out, const Measurement& measurement);

@@ -45,12 +45,7 @@ CaptureSource::CaptureSource(const std::string& path, const std::string& mapPath
         delete impl_;
         throw;
     }
-    if (environment_.width == 0) {
-        environment_.layout = capture::EnvironmentLayout::LatLong;
-        environment_.width = 16;
-        environment_.height = 8;
-        environment_.rgb.assign(16 * 8 * 3, 0.0f);
-    }
+    if (environment_.width == 0) environment_ = blackEnvironment();
 }
 
 CaptureSource::~CaptureSource() {
@@ -68,6 +63,15 @@ capture::Frame CaptureSource::frame(std::size_t index) const {
                                         static_cast<std::uint32_t>(index));
     if (impl_->sequence) return capture::loadFrame(*impl_->sequence, index);
     return capture::readFrame(impl_->single);
+}
+
+capture::Environment blackEnvironment() {
+    capture::Environment environment;
+    environment.layout = capture::EnvironmentLayout::LatLong;
+    environment.width = 16;
+    environment.height = 8;
+    environment.rgb.assign(16 * 8 * 3, 0.0f);
+    return environment;
 }
 
 FrameRange parseFrames(const std::string& text, std::size_t count) {

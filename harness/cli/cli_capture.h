@@ -39,6 +39,9 @@ class CaptureSource {
     std::string description_;
 };
 
+// A black 16x8 lat-long environment, for captures and scenes without one.
+capture::Environment blackEnvironment();
+
 // "a..b" (inclusive), "a.." (to the end), "a" (one frame) or "" (all) -> [first, last] indices
 // within `count` frames. Throws std::invalid_argument naming the range.
 struct FrameRange {

@@ -100,28 +100,6 @@ replay::EffectSettings settingsOf(const std::string& effect, const Point& point)
     return replay::parseSettings(all);
 }
 
-// The pixels an effect's error is measured over (as replay::referenceErrors): surfaces, and for
-// reflections only glossy ones (GGX alpha below the threshold).
-std::vector<std::uint8_t> errorMask(const capture::Frame& frame, const std::string& effect, float threshold) {
-    const capture::Layer* depth = capture::findLayer(frame, "depth");
-    const capture::Layer* roughness = capture::findLayer(frame, frame.roughness.layer);
-    const int channel = roughness ? capture::channelIndex(roughness->channels, frame.roughness.channel) : -1;
-    const bool reversed = frame.camera.depth != capture::DepthConvention::Standard;
-    std::vector<std::uint8_t> mask(std::size_t{frame.width} * frame.height, 0);
-    for (std::size_t i = 0; i < mask.size(); ++i) {
-        const float d = depth->pixels[i];
-        bool inside = std::isfinite(d) && (reversed ? d > 1e-6f : d < 1.0f - 1e-6f);
-        if (effect == "reflections") {
-            if (channel < 0) return std::vector<std::uint8_t>(mask.size(), 0);
-            const float r =
-                roughness->pixels[i * roughness->channels.size() + static_cast<std::size_t>(channel)];
-            inside = inside && (frame.roughness.perceptual ? r * r : r) < threshold;
-        }
-        mask[i] = inside;
-    }
-    return mask;
-}
-
 // RGB (one channel is repeated: FLIP reads colour) with the pixels outside the mask zeroed in
 // output and reference alike, so FLIP only sees differences where the error is measured.
 void writeMaskedRgb(const std::filesystem::path& file, const report::Image& image,
@@ -163,7 +141,7 @@ std::vector<Row> sweep(const gpu::Context& context, const Plan& plan, const std:
     float maskThreshold = 0.0f;
     for (const Point& point : points)
         maskThreshold = std::max(maskThreshold, settingsOf(effect, point).sssr.roughnessThreshold);
-    const std::vector<std::uint8_t> mask = errorMask(scene.frames.back(), effect, maskThreshold);
+    const std::vector<std::uint8_t> mask = replay::errorMask(scene.frames.back(), effect, maskThreshold);
     const std::filesystem::path folder = std::filesystem::path("images") / scene.name / effect;
     std::vector<Row> rows;
     for (const Point& point : points) {

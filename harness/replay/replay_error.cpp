@@ -91,6 +91,11 @@ ReferenceError compare(const std::string& effect, const NamedImage& output, cons
 
 } // namespace
 
+std::vector<std::uint8_t> errorMask(const capture::Frame& frame, const std::string& effect,
+                                    float roughnessThreshold) {
+    return effect == "reflections" ? glossyMask(frame, roughnessThreshold) : surfaceMask(frame);
+}
+
 std::vector<ReferenceError> referenceErrors(const capture::Frame& frame, const FrameResult& result,
                                             float roughnessThreshold) {
     std::vector<ReferenceError> errors;

@@ -12,6 +12,7 @@
 #include "capture/capture_frame.h"
 #include "replay/replay_session.h"
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,11 @@ struct ReferenceError {
     double nonFinite = 0.0;  // fraction of output pixels (all, not only the mask) that are not finite
     report::Image map;       // per-pixel error, 0 outside the mask
 };
+
+// The pixels the error of `effect` ("reflections" or "shadows") is measured over, as above:
+// 1 inside, 0 outside.
+std::vector<std::uint8_t> errorMask(const capture::Frame& frame, const std::string& effect,
+                                    float roughnessThreshold);
 
 // One entry per effect whose output and reference are both in `result`.
 std::vector<ReferenceError> referenceErrors(const capture::Frame& frame, const FrameResult& result,

@@ -5,6 +5,7 @@
 #include "support/gpu_test_context.h"
 
 #include "replay/replay_shadow.h"
+#include "replay/replay_sssr.h"
 #include "scene/scene_file.h"
 #include "scene/scene_simulate.h"
 
@@ -19,18 +20,6 @@ using namespace glint;
 namespace {
 
 constexpr std::uint32_t kFrames = 32;
-
-std::vector<float> channels(const capture::Frame& frame, const char* name, std::size_t stride) {
-    const capture::Layer* layer = capture::findLayer(frame, name);
-    REQUIRE(layer != nullptr);
-    const std::size_t count = std::size_t{frame.width} * frame.height;
-    const std::size_t have = layer->channels.size();
-    std::vector<float> out(count * stride, 0.0f);
-    for (std::size_t i = 0; i < count; ++i)
-        for (std::size_t c = 0; c < std::min(have, stride); ++c)
-            out[i * stride + c] = layer->pixels[i * have + c];
-    return out;
-}
 
 // Mean absolute error over penumbra receivers (reference strictly between 0.05 and 0.95).
 double penumbraError(const std::vector<float>& value, std::size_t stride,
@@ -67,7 +56,7 @@ TEST_CASE("static courtyard: the penumbra error converges to the plain input ave
         if (!runner) runner.emplace(desc);
         const test::ShadowInputs inputs = replay::shadowInputsFromFrame(frame, previousDepth);
         const test::ShadowOutputs outputs = runner->run(desc, inputs);
-        const std::vector<float> reference = channels(frame, "reference.shadow", 1);
+        const std::vector<float> reference = replay::layerChannels(frame, "reference.shadow", 1);
         const double error = penumbraError(outputs.filtered, 2, reference);
         if (index == 0) first = error;
         if (index < 4) early += error / 4.0;
