@@ -16,6 +16,11 @@ const char* const kInputNames[] = {"shadow_visibility", "shadow_depth",  "shadow
 const VkFormat kInputFormats[] = {VK_FORMAT_R32_SFLOAT,    VK_FORMAT_R32_SFLOAT,
                                   VK_FORMAT_R32_SFLOAT,    VK_FORMAT_R32G32B32A32_SFLOAT,
                                   VK_FORMAT_R32G32_SFLOAT, VK_FORMAT_R32G32_SFLOAT};
+// What an engine would bind: an 8-bit visibility target (0 or 1; NaN uploads as 0, shadowed, as
+// the shader treats it), 16-bit normals and motion. Depth stays 32-bit.
+const VkFormat kCompactFormats[] = {VK_FORMAT_R8_UNORM,      VK_FORMAT_R32_SFLOAT,
+                                    VK_FORMAT_R32_SFLOAT,    VK_FORMAT_R16G16B16A16_SFLOAT,
+                                    VK_FORMAT_R16G16_SFLOAT, VK_FORMAT_R32G32_SFLOAT};
 const std::uint32_t kInputChannels[] = {1, 1, 1, 4, 2, 2};
 
 std::vector<std::uint32_t> readWords(const Context& context, const vk::Buffer& buffer) {
@@ -34,11 +39,12 @@ EffectPlan planOrThrow(const ShadowDenoiserDesc& desc) {
 }
 } // namespace
 
-ShadowRunner::ShadowRunner(const Context& context, const ShadowDenoiserDesc& desc) : context_(context) {
+ShadowRunner::ShadowRunner(const Context& context, const ShadowDenoiserDesc& desc, bool compactInputs)
+    : context_(context) {
     const EffectPlan plan = planOrThrow(desc);
     for (std::size_t i = 0; i < std::size(kInputNames); ++i)
-        inputs_.push_back(
-            vk::createImage2D(context.device, desc.size.width, desc.size.height, kInputFormats[i]));
+        inputs_.push_back(vk::createImage2D(context.device, desc.size.width, desc.size.height,
+                                            compactInputs ? kCompactFormats[i] : kInputFormats[i]));
     // Histories start at zero, not NaN: the first frame ignores them through resetHistory,
     // but tile-skipped texels of the output keep what they hold.
     owned_ = createPlanResources(context, plan, 0.0f);
@@ -55,7 +61,8 @@ void ShadowRunner::setHistory(std::uint32_t frameIndex, const std::vector<float>
                               const std::vector<float>& shadow) {
     const char* read = (frameIndex & 1u) != 0 ? "shadow_moments0" : "shadow_moments1";
     uploadImage(context_, owned_.images.at(read), moments, 4);
-    uploadImage(context_, owned_.images.at("shadow_scratch1"), shadow, 2);
+    if (owned_.images.contains("shadow_scratch1"))
+        uploadImage(context_, owned_.images.at("shadow_scratch1"), shadow, 2);
 }
 
 ShadowOutputs ShadowRunner::run(const ShadowDenoiserDesc& desc, const ShadowInputs& inputs,

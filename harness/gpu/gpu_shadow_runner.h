@@ -36,7 +36,9 @@ struct ShadowOutputs {
 class ShadowRunner {
   public:
     // Throws std::invalid_argument with the planner's message when `desc` is not valid.
-    ShadowRunner(const Context& context, const ShadowDenoiserDesc& desc);
+    // compactInputs: the application's images in the formats an engine would bind (R8 visibility,
+    // 16-bit float normals and motion) instead of 32-bit floats; for benchmarks.
+    ShadowRunner(const Context& context, const ShadowDenoiserDesc& desc, bool compactInputs = false);
     ~ShadowRunner();
     ShadowRunner(const ShadowRunner&) = delete;
     ShadowRunner& operator=(const ShadowRunner&) = delete;

@@ -291,7 +291,7 @@ struct Session::Shadows {
     std::optional<gpu::ShadowRunner> runner;
     std::vector<float> previousDepth;
 
-    Shadows(const gpu::Context& c, const capture::Frame& frame, const EffectSettings& settings)
+    Shadows(const gpu::Context& c, const capture::Frame& frame, const EffectSettings& settings, bool readback)
         : context(c), tunables(settings.shadows) {
         if (!tunables.classify)
             throw std::invalid_argument(
@@ -299,7 +299,8 @@ struct Session::Shadows {
                 "(mean, variance) image a capture does not carry)");
         ShadowDenoiserDesc desc = tunables;
         shadowDescFromFrame(frame, 0, true, desc);
-        runner.emplace(context, desc);
+        // Without readback (benchmarks) the inputs take the formats an engine would bind.
+        runner.emplace(context, desc, /*compactInputs=*/!readback);
     }
 
     ShadowDenoiserDesc last; // for repeat()
@@ -339,7 +340,7 @@ struct Session::Shadows {
         };
         add("noisy", "input", makeImage(w, h, 1, inputs.visibility));
         const std::vector<float>& final = desc.filter ? out.filtered : out.classified;
-        const std::string pass = desc.filter ? "filter2" : "classify";
+        const std::string pass = !desc.filter ? "classify" : desc.fusedFilter ? "filter" : "filter2";
         add("denoised", pass, channelsOf(w, h, final, 2, 1));
         add("variance", pass, channelsOf(w, h, final, 2, 1, 1));
         if (auto reference = layerImage(frame, "reference.shadow", 1)) add("reference", "input", *reference);
@@ -370,7 +371,8 @@ Session::Session(const gpu::Context& context, const capture::Frame& first,
         if (effect == "reflections")
             reflections_ = std::make_unique<Reflections>(context_, first, environment, options_.settings,
                                                          options_.intermediates, options_.readback);
-        if (effect == "shadows") shadows_ = std::make_unique<Shadows>(context_, first, options_.settings);
+        if (effect == "shadows")
+            shadows_ = std::make_unique<Shadows>(context_, first, options_.settings, options_.readback);
     }
 }
 

@@ -73,6 +73,8 @@ bool applyShadow(ShadowDenoiserDesc& desc, const std::string& name, const std::s
         desc.classify = parseBool(name, value);
     else if (name == "skipClearedTiles")
         desc.skipClearedTiles = parseBool(name, value);
+    else if (name == "fusedFilter")
+        desc.fusedFilter = parseBool(name, value);
     else if (name == "depthSigma")
         desc.depthSigma = parseFloat(name, value);
     else if (name == "normalPower")

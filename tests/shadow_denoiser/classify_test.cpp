@@ -239,3 +239,47 @@ TEST_CASE("tile skipping: an all-lit frame filters no tile, with identical outpu
     CHECK(penumbra.filteredTiles < 3u * 6u * 4u);
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }
+
+TEST_CASE("fused filter after classification: the three-dispatch result, with and without tile skipping",
+          "[classify][tiles]") {
+    // Odd size: partial 16x16 groups and clamped borders. A penumbra everywhere but in the
+    // lit and shadowed bands, so tiles of every kind meet at group borders.
+    ShadowDenoiserDesc desc = classifyDesc(53, 37);
+    desc.filter = true;
+    test::ShadowInputs inputs = test::makeShadowInputs(53, 37, 23);
+    for (std::uint32_t y = 0; y < 37; ++y)
+        for (std::uint32_t x = 0; x < 53; ++x) {
+            float& v = inputs.visibility[y * 53 + x];
+            if (x < 12) v = 1.0f;
+            if (x >= 40) v = 0.0f;
+        }
+    inputs.previousDepth = inputs.depth;
+    for (bool skip : {true, false}) {
+        desc.skipClearedTiles = skip;
+        std::vector<test::ShadowOutputs> results;
+        for (bool fused : {false, true}) {
+            desc.fusedFilter = fused;
+            test::ShadowRunner runner(desc);
+            test::ShadowOutputs last;
+            for (std::uint32_t frame = 0; frame < 3; ++frame) {
+                desc.frameIndex = frame;
+                desc.resetHistory = frame == 0;
+                last = runner.run(desc, inputs);
+            }
+            results.push_back(last);
+        }
+        INFO("skipClearedTiles " << skip);
+        REQUIRE(results[0].filtered.size() == results[1].filtered.size());
+        float worst = 0.0f;
+        for (std::size_t i = 0; i < results[0].filtered.size(); ++i)
+            worst = std::max(worst, std::abs(results[0].filtered[i] - results[1].filtered[i]));
+        // Same operations in the same order; only the compiler's contraction may differ.
+        CHECK(worst <= 1e-5f);
+        CHECK(results[0].filteredTiles == results[1].filteredTiles);
+        if (skip) {
+            CHECK(results[1].filteredTiles > 0u);
+            CHECK(results[1].filteredTiles < 3u * 7u * 5u);
+        }
+    }
+    GLINT_REQUIRE_NO_VALIDATION_ERRORS();
+}

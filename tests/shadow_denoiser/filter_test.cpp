@@ -37,15 +37,11 @@ reference::ShadowFilterInputs referenceInputs(const ShadowDenoiserDesc& desc,
     return ref;
 }
 
-void checkFilter(std::uint32_t width, std::uint32_t height, const test::ShadowInputs& inputs,
-                 bool contrastRemap = false) {
-    ShadowDenoiserDesc desc;
-    desc.size = {width, height};
-    desc.classify = false;
-    desc.contrastRemap = contrastRemap;
+void checkFilterOnce(const ShadowDenoiserDesc& desc, const test::ShadowInputs& inputs) {
+    const std::uint32_t width = desc.size.width, height = desc.size.height;
     const test::ShadowOutputs outputs = test::runShadowDenoiser(desc, inputs);
     const std::vector<float> expected = reference::shadowFilter(referenceInputs(desc, inputs));
-    INFO(width << "x" << height);
+    INFO(width << "x" << height << (desc.fusedFilter ? ", fused" : ", three dispatches"));
     REQUIRE(outputs.filtered.size() == expected.size());
     float worst = 0.0f;
     std::size_t nonFinite = 0;
@@ -65,6 +61,18 @@ void checkFilter(std::uint32_t width, std::uint32_t height, const test::ShadowIn
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }
 
+// Both forms of the filter: three dispatches, and the three iterations fused in one.
+void checkFilter(std::uint32_t width, std::uint32_t height, const test::ShadowInputs& inputs,
+                 bool contrastRemap = false) {
+    for (bool fused : {false, true}) {
+        ShadowDenoiserDesc desc;
+        desc.size = {width, height};
+        desc.classify = false;
+        desc.contrastRemap = contrastRemap;
+        desc.fusedFilter = fused;
+        checkFilterOnce(desc, inputs);
+    }
+}
 } // namespace
 
 TEST_CASE("filter 64x48: matches the CPU reference", "[filter]") {

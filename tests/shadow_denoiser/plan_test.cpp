@@ -2,9 +2,12 @@
 #include "reference/shadow_denoiser_reference.h"
 
 #include "glint/glint_shadow_denoiser.h"
+#include "glint/shadow_denoiser/glint_shadow_denoiser_constants.h"
 
 #include <catch2/catch.hpp>
 
+#include <cstddef>
+#include <cstring>
 #include <limits>
 
 using namespace glint;
@@ -15,23 +18,26 @@ TEST_CASE("shadow plan: passes, resources and sizes", "[plan]") {
     EffectPlan plan;
     std::string error;
     REQUIRE(planShadowDenoiser(desc, plan, &error) == Result::Ok);
-    REQUIRE(plan.passes.size() == 5);
+    // Fused by default: prepare, classify, one filter dispatch of 16x16 groups.
+    REQUIRE(plan.passes.size() == 3);
     CHECK(plan.passes[0].name == "prepare");
     CHECK(plan.passes[1].name == "classify");
-    CHECK(plan.passes[2].name == "filter0");
-    CHECK(plan.passes[4].name == "filter2");
+    CHECK(plan.passes[2].name == "filter");
     CHECK(std::get<DirectDispatch>(plan.passes[0].dispatch).groupsX == 1);
     CHECK(std::get<DirectDispatch>(plan.passes[1].dispatch).groupsX == 2);
     CHECK(std::get<DirectDispatch>(plan.passes[1].dispatch).groupsY == 1);
     REQUIRE(plan.buffers.size() == 3);
     CHECK(plan.buffers[2].name == "shadow_filter_work");
-    CHECK(plan.passes[2].pipeline == "shadow_denoiser_filter.skip");
+    CHECK(plan.passes[2].pipeline == "shadow_denoiser_filter.fused_skip");
     CHECK(plan.passes[2].zeroBuffers == std::vector<std::string>{"shadow_filter_work"});
+    CHECK(plan.passes[2].groupSize[0] == 16);
+    CHECK(std::get<DirectDispatch>(plan.passes[2].dispatch).groupsX == 1);
     CHECK(plan.buffers[0].name == "shadow_mask");
     CHECK(plan.buffers[0].size == 2 * 2 * 4);
     CHECK(plan.buffers[1].name == "shadow_tile_metadata");
     CHECK(plan.buffers[1].size == 2 * 1 * 4);
-    CHECK(plan.images.size() == 5);
+    // scratch 0, moments 0/1, output: the fused filter needs no second scratch image.
+    CHECK(plan.images.size() == 4);
     // Moments ping-pong on the frame parity.
     CHECK(plan.passes[1].uses[8].resource == "shadow_moments0");
     desc.frameIndex = 1;
@@ -40,6 +46,32 @@ TEST_CASE("shadow plan: passes, resources and sizes", "[plan]") {
     CHECK(plan.passes[1].uses[5].resource == "shadow_moments0");
     CHECK(shadowMaskTiles({1917, 1077}).width == 240);
     CHECK(shadowMaskTiles({1917, 1077}).height == 270);
+
+    // Classification skips the clear tiles' (shadow, variance) stores only for the fused filter.
+    const auto classifyFlags = [&] {
+        using Constants = shaders::GLINT_ShadowDenoiserClassifyConstants;
+        REQUIRE(plan.passes[1].constants.size() == sizeof(Constants));
+        std::uint32_t flags = 0;
+        std::memcpy(&flags, plan.passes[1].constants.data() + offsetof(Constants, flags), 4);
+        return flags;
+    };
+    CHECK(classifyFlags() == GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_SKIP_CLEAR);
+
+    // Three dispatches: filter0..2 of 8x8 groups, two scratch images.
+    desc.fusedFilter = false;
+    REQUIRE(planShadowDenoiser(desc, plan, &error) == Result::Ok);
+    REQUIRE(plan.passes.size() == 5);
+    CHECK(plan.passes[2].name == "filter0");
+    CHECK(plan.passes[4].name == "filter2");
+    CHECK(plan.passes[2].pipeline == "shadow_denoiser_filter.skip");
+    CHECK(plan.passes[2].zeroBuffers == std::vector<std::string>{"shadow_filter_work"});
+    CHECK(std::get<DirectDispatch>(plan.passes[2].dispatch).groupsX == 2);
+    CHECK(plan.images.size() == 5);
+    CHECK(classifyFlags() == 0u);
+    desc.resetHistory = true;
+    REQUIRE(planShadowDenoiser(desc, plan, &error) == Result::Ok);
+    CHECK(classifyFlags() == GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_RESET);
+    desc.resetHistory = false;
 
     desc.filter = false;
     desc.classify = false;

@@ -80,6 +80,6 @@ void GLINT_SHADOW_DENOISER_StoreMoments(int2 pixel, float4 moments)
     c.eyePosition = g_glint_constants.eyePosition;
     c.viewDepth = g_glint_constants.viewDepth;
     c.ndcYSign = g_glint_constants.ndcYSign;
-    c.resetHistory = g_glint_constants.resetHistory;
+    c.flags = g_glint_constants.flags;
     GLINT_SHADOW_DENOISER_Classify(groupId.xy, groupThreadId.xy, groupIndex, c);
 }

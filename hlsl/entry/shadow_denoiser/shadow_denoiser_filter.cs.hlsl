@@ -2,8 +2,9 @@
 // bindings, callbacks, main. Engines read this file as the integration example for
 // glint/shadow_denoiser/glint_shadow_denoiser_filter.hlsli.
 //
-// Permutation: GLINT_SHADOW_DENOISER_TILE_SKIP=1 skips tiles the classification cleared and
-// counts the tiles it filters.
+// Permutations: GLINT_SHADOW_DENOISER_TILE_SKIP=1 skips tiles the classification cleared and
+// counts the tiles it filters; GLINT_SHADOW_DENOISER_FILTER_FUSED=1 runs the three iterations in
+// one dispatch of 16x16 groups (finalPass then selects the contrast remap).
 #include "entry/common/glint_entry_common.hlsli"
 #include "glint/shadow_denoiser/glint_shadow_denoiser_constants.h"
 #include "glint/shadow_denoiser/glint_shadow_denoiser_filter.hlsli"
@@ -50,6 +51,15 @@ void GLINT_SHADOW_DENOISER_StoreFiltered(int2 pixel, float2 meanVariance)
     g_glint_filter_output[pixel] = meanVariance;
 }
 
+#if GLINT_SHADOW_DENOISER_FILTER_FUSED
+[numthreads(GLINT_SHADOW_DENOISER_FILTER_FUSED_TILE, GLINT_SHADOW_DENOISER_FILTER_FUSED_TILE, 1)] void main(
+    uint3 groupId : SV_GroupID, uint groupIndex : SV_GroupIndex)
+{
+    GLINT_SHADOW_DENOISER_FilterFused(groupId.xy, groupIndex, g_glint_constants.inputSize,
+                                      g_glint_constants.finalPass != 0, g_glint_constants.viewDepth,
+                                      g_glint_constants.depthSigma, g_glint_constants.normalPower);
+}
+#else
 [numthreads(8, 8, 1)] void main(uint3 groupId : SV_GroupID, uint3 groupThreadId : SV_GroupThreadID,
                                 uint groupIndex : SV_GroupIndex)
 {
@@ -58,3 +68,4 @@ void GLINT_SHADOW_DENOISER_StoreFiltered(int2 pixel, float2 meanVariance)
                                  g_glint_constants.viewDepth, g_glint_constants.depthSigma,
                                  g_glint_constants.normalPower);
 }
+#endif

@@ -37,6 +37,8 @@ void GLINT_SHADOW_DENOISER_StoreShadowVariance(int2 pixel, float2 value);
 void GLINT_SHADOW_DENOISER_StoreMoments(int2 pixel, float4 moments);
 
 groupshared uint g_glint_shadow_denoiser_classify_receivers;
+// Horizontal sums of rows groupOrigin.y - 8 .. groupOrigin.y + 15 (24 x 8 columns).
+groupshared float g_glint_shadow_denoiser_classify_rows[24 * 8];
 
 // View depth of a receiver (finite depth strictly inside (1e-6, 1 - 1e-6)), or -1.
 float GLINT_SHADOW_DENOISER_ClassifyViewDepth(float depth, float4 viewDepth)
@@ -101,7 +103,7 @@ struct GLINT_ShadowDenoiserClassifyParams
     float4 eyePosition;
     float4 viewDepth;
     float ndcYSign;
-    uint resetHistory;
+    uint flags; // GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_*
 };
 
 void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint2 groupThreadId, uint groupIndex,
@@ -145,12 +147,27 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint2 groupThreadId, uint gro
             metadata |= GLINT_SHADOW_DENOISER_TILE_LIGHT;
         GLINT_SHADOW_DENOISER_StoreMetadata(groupId.y * tilesX + groupId.x, metadata);
     }
+    if (!clear)
+    {
+        // Horizontal 17-tap sums of the 24 rows the block's vertical taps reach, once per
+        // (row, column) instead of once per tap: 3 per thread. `clear` is uniform, so the
+        // barrier is too. Columns beyond the image use the last one (their sums go unused).
+        int column = min(int(groupId.x * 8u + (groupIndex & 7u)), int(c.inputSize.x) - 1);
+        [unroll] for (uint part = 0; part < 3u; ++part)
+        {
+            uint row = (groupIndex >> 3) + part * 8u;
+            g_glint_shadow_denoiser_classify_rows[row * 8u + (groupIndex & 7u)] = GLINT_SHADOW_DENOISER_RowSum(
+                column, int(groupId.y * 8u + row) - 8, c.inputSize, c.maskTiles);
+        }
+        GroupMemoryBarrierWithGroupSync();
+    }
     if (!inside)
         return;
     if (clear)
     {
         float value = anyReceiver && allLit && receiver ? 1.0 : 0.0;
-        GLINT_SHADOW_DENOISER_StoreShadowVariance(pixel, float2(value, 0.0));
+        if ((c.flags & GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_SKIP_CLEAR) == 0u)
+            GLINT_SHADOW_DENOISER_StoreShadowVariance(pixel, float2(value, 0.0));
         GLINT_SHADOW_DENOISER_StoreMoments(pixel, float4(value, 0.0, receiver ? 1.0 : 0.0, value));
         return;
     }
@@ -163,9 +180,9 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint2 groupThreadId, uint gro
 
     // Local mean and variance: 17x17 Gaussian, rows first.
     float mean = 0.0;
-    for (int r = -8; r <= 8; ++r)
+    [unroll] for (int r = -8; r <= 8; ++r)
         mean += GLINT_SHADOW_DENOISER_GaussianWeight(abs(r)) *
-                GLINT_SHADOW_DENOISER_RowSum(pixel.x, pixel.y + r, c.inputSize, c.maskTiles);
+                g_glint_shadow_denoiser_classify_rows[uint(int(groupThreadId.y) + r + 8) * 8u + groupThreadId.x];
     mean = clamp(mean, 0.0, 1.0);
     float spatialVariance = max(mean - mean * mean, 0.0);
     float spatialSigma = sqrt(spatialVariance);
@@ -189,7 +206,7 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint2 groupThreadId, uint gro
     float2 motion = GLINT_SHADOW_DENOISER_LoadMotion(motionPixel);
     float2 uv = (float2(pixel) + 0.5) / float2(c.inputSize);
     float2 uvPrevious = uv + motion;
-    bool disoccluded = c.resetHistory != 0u || !GLINT_IsFinite(uvPrevious.x) || !GLINT_IsFinite(uvPrevious.y) ||
+    bool disoccluded = (c.flags & GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_RESET) != 0u || !GLINT_IsFinite(uvPrevious.x) || !GLINT_IsFinite(uvPrevious.y) ||
                        any(uvPrevious < 0.0) || any(uvPrevious > 1.0);
     if (!disoccluded)
     {

@@ -15,6 +15,10 @@
 // The filter works on 8x8 pixel tiles with a 4-pixel apron (step 4 x radius 1).
 #define GLINT_SHADOW_DENOISER_FILTER_TILE 8
 #define GLINT_SHADOW_DENOISER_FILTER_APRON 4
+// The fused filter (all three iterations in one dispatch) works on 16x16 pixel tiles with a
+// 7-pixel apron (1 + 2 + 4), one thread per pixel.
+#define GLINT_SHADOW_DENOISER_FILTER_FUSED_TILE 16
+#define GLINT_SHADOW_DENOISER_FILTER_APRON_FUSED 7
 
 #ifdef __cplusplus
 namespace glint::shaders {
@@ -48,6 +52,12 @@ GLINT_CONSTANTS_END(GLINT_ShadowDenoiserFilterConstants);
 #define GLINT_SHADOW_DENOISER_TILE_CLEAR 1u
 #define GLINT_SHADOW_DENOISER_TILE_LIGHT 2u
 
+// Classification flags. RESET: camera cut or first frame, every history is ignored.
+// SKIP_CLEAR: clear tiles store no (shadow, variance) (the fused filter with tile skipping
+// never reads them); their moments are stored as always.
+#define GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_RESET 1u
+#define GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_SKIP_CLEAR 2u
+
 // Matrices are column-vector (q = M p) and passed as four rows: q.i = dot(row_i, p).
 GLINT_CONSTANTS_BEGIN(GLINT_ShadowDenoiserClassifyConstants)
     uint2 inputSize;
@@ -58,7 +68,7 @@ GLINT_CONSTANTS_BEGIN(GLINT_ShadowDenoiserClassifyConstants)
     float4 viewDepth;           // (A, B, C, 0): view depth z = A / (B + C d), both frames
     float2 normalUnpack;        // (mul, add)
     float ndcYSign;             // y_n = ndcYSign (2 v - 1): +1 Vulkan-style, -1 D3D-style
-    uint resetHistory;          // 1: camera cut or first frame, every history is ignored
+    uint flags;                 // GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_*
 GLINT_CONSTANTS_END(GLINT_ShadowDenoiserClassifyConstants);
 
 #ifdef __cplusplus

@@ -47,11 +47,21 @@ uint GLINT_SHADOW_DENOISER_LoadTileMetadata(uint tileIndex);
 void GLINT_SHADOW_DENOISER_CountFilteredTile();
 #endif
 
+// The three-dispatch filter works on a 16 x 16 span (8 x 8 tile, 4-pixel apron); the fused one
+// (GLINT_SHADOW_DENOISER_FILTER_FUSED=1) on a 30 x 30 span (16 x 16 tile, 7-pixel apron = 1 + 2 +
+// 4) with two value buffers it ping-pongs between its three iterations.
+#if GLINT_SHADOW_DENOISER_FILTER_FUSED
+#define GLINT_SHADOW_DENOISER_FILTER_SPAN 30
+#define GLINT_SHADOW_DENOISER_FILTER_BUFFERS 2
+#else
 #define GLINT_SHADOW_DENOISER_FILTER_SPAN 16
+#define GLINT_SHADOW_DENOISER_FILTER_BUFFERS 1
+#endif
+#define GLINT_SHADOW_DENOISER_FILTER_SLOTS (GLINT_SHADOW_DENOISER_FILTER_SPAN * GLINT_SHADOW_DENOISER_FILTER_SPAN)
 
-// (mean, variance) and (view depth or -1 for non-receivers, normal) of the 16 x 16 span.
-groupshared float2 g_glint_shadow_denoiser_filter_values[GLINT_SHADOW_DENOISER_FILTER_SPAN * GLINT_SHADOW_DENOISER_FILTER_SPAN];
-groupshared float4 g_glint_shadow_denoiser_filter_geometry[GLINT_SHADOW_DENOISER_FILTER_SPAN * GLINT_SHADOW_DENOISER_FILTER_SPAN];
+// (mean, variance) and (view depth or -1 for non-receivers, normal) of the span.
+groupshared float2 g_glint_shadow_denoiser_filter_values[GLINT_SHADOW_DENOISER_FILTER_BUFFERS * GLINT_SHADOW_DENOISER_FILTER_SLOTS];
+groupshared float4 g_glint_shadow_denoiser_filter_geometry[GLINT_SHADOW_DENOISER_FILTER_SLOTS];
 
 float2 GLINT_SHADOW_DENOISER_SanitizeMeanVariance(float2 value)
 {
@@ -79,16 +89,93 @@ float3 GLINT_SHADOW_DENOISER_SanitizeNormal(float3 n)
     return n * rsqrt(lengthSquared);
 }
 
-uint GLINT_SHADOW_DENOISER_FilterSlot(int2 local)
-{
-    return uint(local.y) * GLINT_SHADOW_DENOISER_FILTER_SPAN + uint(local.x);
-}
-
 float GLINT_SHADOW_DENOISER_KernelWeight(int offset)
 {
     return offset == 0 ? 1.0 : 2.0 / 3.0;
 }
 
+// Span slot of an image pixel clamped to the image: the three-dispatch filter clamps every
+// load, so a tap beyond the border reads the border pixel; clamping the coordinate before the
+// lookup gives the fused filter the same taps (the clamped pixel always lies in the span).
+uint GLINT_SHADOW_DENOISER_FilterSlot(int2 pixel, int2 spanOrigin, uint2 inputSize)
+{
+    int2 local = clamp(pixel, int2(0, 0), int2(inputSize) - 1) - spanOrigin;
+    return uint(local.y) * GLINT_SHADOW_DENOISER_FILTER_SPAN + uint(local.x);
+}
+
+// Loads the (clamped) pixel of every span slot: sanitized (mean, variance) into value buffer 0,
+// (view depth or -1, unit normal) into the geometry.
+void GLINT_SHADOW_DENOISER_LoadSpan(uint groupIndex, uint groupThreads, int2 spanOrigin, uint2 inputSize,
+                                    float4 viewDepth)
+{
+    for (uint slot = groupIndex; slot < GLINT_SHADOW_DENOISER_FILTER_SLOTS; slot += groupThreads)
+    {
+        int2 local = int2(slot % GLINT_SHADOW_DENOISER_FILTER_SPAN, slot / GLINT_SHADOW_DENOISER_FILTER_SPAN);
+        int2 pixel = clamp(spanOrigin + local, int2(0, 0), int2(inputSize) - 1);
+        g_glint_shadow_denoiser_filter_values[slot] =
+            GLINT_SHADOW_DENOISER_SanitizeMeanVariance(GLINT_SHADOW_DENOISER_LoadMeanVariance(pixel));
+        float z = GLINT_SHADOW_DENOISER_ReceiverViewDepth(GLINT_SHADOW_DENOISER_LoadDepth(pixel), viewDepth);
+        float3 n = z > 0.0 ? GLINT_SHADOW_DENOISER_SanitizeNormal(GLINT_SHADOW_DENOISER_LoadNormal(pixel))
+                           : float3(0.0, 0.0, 0.0);
+        g_glint_shadow_denoiser_filter_geometry[slot] = float4(z, n);
+    }
+}
+
+// One a-trous iteration at an in-image receiver pixel, reading value buffer `source`.
+float2 GLINT_SHADOW_DENOISER_FilterPixel(int2 pixel, int2 spanOrigin, uint2 inputSize, uint source, uint step,
+                                         float depthSigma, float normalPower)
+{
+    uint base = source * GLINT_SHADOW_DENOISER_FILTER_SLOTS;
+    uint centreSlot = GLINT_SHADOW_DENOISER_FilterSlot(pixel, spanOrigin, inputSize);
+    float4 geometry = g_glint_shadow_denoiser_filter_geometry[centreSlot];
+    float2 value = g_glint_shadow_denoiser_filter_values[base + centreSlot];
+
+    float filteredVariance = 0.0;
+    [unroll] for (int y = -1; y <= 1; ++y)
+        [unroll] for (int x = -1; x <= 1; ++x)
+        {
+            float weight = (x == 0 ? 0.5 : 0.25) * (y == 0 ? 0.5 : 0.25);
+            uint slot = GLINT_SHADOW_DENOISER_FilterSlot(pixel + int2(x, y), spanOrigin, inputSize);
+            filteredVariance += weight * g_glint_shadow_denoiser_filter_values[base + slot].y;
+        }
+    float sigma = sqrt(filteredVariance + 1e-9);
+    float depthScale = max(depthSigma * geometry.x, 1e-20);
+
+    // The mean accumulates offsets from the centre (mean = s_c + sum w (s_q - s_c) / sum w):
+    // a uniform neighbourhood then returns s_c exactly on every GPU, whatever the precision of
+    // its division, so a skipped tile's constant and a filtered tile's result agree bit for bit.
+    float weightSum = 1.0;
+    float meanOffsetSum = 0.0;
+    float varianceSum = value.y;
+    [unroll] for (int j = -1; j <= 1; ++j)
+        [unroll] for (int i = -1; i <= 1; ++i)
+        {
+            if (i == 0 && j == 0)
+                continue;
+            uint slot = GLINT_SHADOW_DENOISER_FilterSlot(pixel + int(step) * int2(i, j), spanOrigin, inputSize);
+            float4 other = g_glint_shadow_denoiser_filter_geometry[slot];
+            if (other.x <= 0.0)
+                continue;
+            float2 tap = g_glint_shadow_denoiser_filter_values[base + slot];
+            float normalWeight = pow(max(dot(geometry.yzw, other.yzw), 0.0), normalPower);
+            float weight = GLINT_SHADOW_DENOISER_KernelWeight(i) * GLINT_SHADOW_DENOISER_KernelWeight(j) *
+                           exp(-abs(value.x - tap.x) / sigma) * exp(-abs(geometry.x - other.x) / depthScale) *
+                           normalWeight;
+            weightSum += weight;
+            meanOffsetSum += weight * (tap.x - value.x);
+            varianceSum += weight * weight * tap.y;
+        }
+    float mean = clamp(value.x + meanOffsetSum / weightSum, 0.0, 1.0);
+    float variance = max(varianceSum / (weightSum * weightSum), 0.0);
+    return float2(GLINT_FiniteOr(mean, 0.0), GLINT_FiniteOr(variance, 0.0));
+}
+
+float GLINT_SHADOW_DENOISER_ContrastRemap(float2 meanVariance)
+{
+    return GLINT_FiniteOr(pow(meanVariance.x, max(1.2 - meanVariance.y, 1.0)), 0.0);
+}
+
+#if !GLINT_SHADOW_DENOISER_FILTER_FUSED
 void GLINT_SHADOW_DENOISER_Filter(uint2 groupId, uint2 groupThreadId, uint groupIndex, uint2 inputSize, uint step,
                                   bool finalPass, float4 viewDepth, float depthSigma, float normalPower)
 {
@@ -110,71 +197,158 @@ void GLINT_SHADOW_DENOISER_Filter(uint2 groupId, uint2 groupThreadId, uint group
         GLINT_SHADOW_DENOISER_CountFilteredTile();
 #endif
     int2 spanOrigin = int2(groupId * GLINT_SHADOW_DENOISER_FILTER_TILE) - GLINT_SHADOW_DENOISER_FILTER_APRON;
-    [unroll] for (uint k = 0; k < 4; ++k)
-    {
-        uint slot = groupIndex + k * 64u;
-        int2 local = int2(slot % GLINT_SHADOW_DENOISER_FILTER_SPAN, slot / GLINT_SHADOW_DENOISER_FILTER_SPAN);
-        int2 pixel = clamp(spanOrigin + local, int2(0, 0), int2(inputSize) - 1);
-        g_glint_shadow_denoiser_filter_values[slot] =
-            GLINT_SHADOW_DENOISER_SanitizeMeanVariance(GLINT_SHADOW_DENOISER_LoadMeanVariance(pixel));
-        float z = GLINT_SHADOW_DENOISER_ReceiverViewDepth(GLINT_SHADOW_DENOISER_LoadDepth(pixel), viewDepth);
-        float3 n = z > 0.0 ? GLINT_SHADOW_DENOISER_SanitizeNormal(GLINT_SHADOW_DENOISER_LoadNormal(pixel))
-                           : float3(0.0, 0.0, 0.0);
-        g_glint_shadow_denoiser_filter_geometry[slot] = float4(z, n);
-    }
+    GLINT_SHADOW_DENOISER_LoadSpan(groupIndex, 64u, spanOrigin, inputSize, viewDepth);
     GroupMemoryBarrierWithGroupSync();
 
     int2 pixel = int2(groupId * GLINT_SHADOW_DENOISER_FILTER_TILE + groupThreadId);
     if (any(uint2(pixel) >= inputSize))
         return;
-    int2 centre = int2(groupThreadId) + GLINT_SHADOW_DENOISER_FILTER_APRON;
-    float4 geometry = g_glint_shadow_denoiser_filter_geometry[GLINT_SHADOW_DENOISER_FilterSlot(centre)];
-    if (geometry.x <= 0.0)
+    if (g_glint_shadow_denoiser_filter_geometry[GLINT_SHADOW_DENOISER_FilterSlot(pixel, spanOrigin, inputSize)].x <= 0.0)
     {
         GLINT_SHADOW_DENOISER_StoreFiltered(pixel, float2(0.0, 0.0));
         return;
     }
-    float2 value = g_glint_shadow_denoiser_filter_values[GLINT_SHADOW_DENOISER_FilterSlot(centre)];
-
-    float filteredVariance = 0.0;
-    [unroll] for (int y = -1; y <= 1; ++y)
-        [unroll] for (int x = -1; x <= 1; ++x)
-        {
-            float weight = (x == 0 ? 0.5 : 0.25) * (y == 0 ? 0.5 : 0.25);
-            filteredVariance += weight * g_glint_shadow_denoiser_filter_values[GLINT_SHADOW_DENOISER_FilterSlot(centre + int2(x, y))].y;
-        }
-    float sigma = sqrt(filteredVariance + 1e-9);
-    float depthScale = max(depthSigma * geometry.x, 1e-20);
-
-    // The mean accumulates offsets from the centre (mean = s_c + sum w (s_q - s_c) / sum w):
-    // a uniform neighbourhood then returns s_c exactly on every GPU, whatever the precision of
-    // its division, so a skipped tile's constant and a filtered tile's result agree bit for bit.
-    float weightSum = 1.0;
-    float meanOffsetSum = 0.0;
-    float varianceSum = value.y;
-    [unroll] for (int j = -1; j <= 1; ++j)
-        [unroll] for (int i = -1; i <= 1; ++i)
-        {
-            if (i == 0 && j == 0)
-                continue;
-            uint slot = GLINT_SHADOW_DENOISER_FilterSlot(centre + int(step) * int2(i, j));
-            float4 other = g_glint_shadow_denoiser_filter_geometry[slot];
-            if (other.x <= 0.0)
-                continue;
-            float2 tap = g_glint_shadow_denoiser_filter_values[slot];
-            float normalWeight = pow(max(dot(geometry.yzw, other.yzw), 0.0), normalPower);
-            float weight = GLINT_SHADOW_DENOISER_KernelWeight(i) * GLINT_SHADOW_DENOISER_KernelWeight(j) *
-                           exp(-abs(value.x - tap.x) / sigma) * exp(-abs(geometry.x - other.x) / depthScale) *
-                           normalWeight;
-            weightSum += weight;
-            meanOffsetSum += weight * (tap.x - value.x);
-            varianceSum += weight * weight * tap.y;
-        }
-    float mean = clamp(value.x + meanOffsetSum / weightSum, 0.0, 1.0);
-    float variance = max(varianceSum / (weightSum * weightSum), 0.0);
+    float2 result = GLINT_SHADOW_DENOISER_FilterPixel(pixel, spanOrigin, inputSize, 0u, step, depthSigma, normalPower);
     if (finalPass)
-        mean = pow(mean, max(1.2 - variance, 1.0));
-    GLINT_SHADOW_DENOISER_StoreFiltered(pixel, float2(GLINT_FiniteOr(mean, 0.0), GLINT_FiniteOr(variance, 0.0)));
+        result.x = GLINT_SHADOW_DENOISER_ContrastRemap(result);
+    GLINT_SHADOW_DENOISER_StoreFiltered(pixel, result);
 }
+#endif // !GLINT_SHADOW_DENOISER_FILTER_FUSED
+
+#if GLINT_SHADOW_DENOISER_FILTER_FUSED
+// Tile metadata of the 4 x 4 filter tiles under the span (fused, with tile skipping).
+groupshared uint g_glint_shadow_denoiser_filter_metadata[16];
+
+// The fused filter's value of a span slot whose pixel is a clear tile's or a non-receiver:
+// what the three-dispatch filter writes there in every pass. Returns false for pixels to filter.
+bool GLINT_SHADOW_DENOISER_FixedValue(int2 pixel, int2 spanOrigin, uint2 inputSize, out float2 fixedValue)
+{
+    uint slot = GLINT_SHADOW_DENOISER_FilterSlot(pixel, spanOrigin, inputSize);
+    fixedValue = float2(0.0, 0.0);
+    bool receiver = g_glint_shadow_denoiser_filter_geometry[slot].x > 0.0;
+    if (!receiver)
+        return true;
+#if GLINT_SHADOW_DENOISER_TILE_SKIP
+    // Filter tile relative to the first of the 4 x 4 under the span (the group's tile 2g - 1).
+    int2 tileOrigin = spanOrigin + GLINT_SHADOW_DENOISER_FILTER_APRON_FUSED;
+    int2 tile = pixel / GLINT_SHADOW_DENOISER_FILTER_TILE - tileOrigin / GLINT_SHADOW_DENOISER_FILTER_TILE + 1;
+    uint metadata = g_glint_shadow_denoiser_filter_metadata[tile.y * 4 + tile.x];
+    if ((metadata & GLINT_SHADOW_DENOISER_TILE_CLEAR) != 0u)
+    {
+        fixedValue.x = (metadata & GLINT_SHADOW_DENOISER_TILE_LIGHT) != 0u ? 1.0 : 0.0;
+        return true;
+    }
+#endif
+    return false;
+}
+
+// The three iterations (steps 1, 2, 4) of one 16 x 16 tile in one dispatch: iteration k runs
+// over the tile grown by the apron the later iterations read (6, 4, 0 pixels), in groupshared
+// memory, so the intermediate results never leave the chip. Same taps, weights and clamping as
+// three dispatches of GLINT_SHADOW_DENOISER_Filter.
+void GLINT_SHADOW_DENOISER_FilterFused(uint2 groupId, uint groupIndex, uint2 inputSize, bool contrastRemap,
+                                       float4 viewDepth, float depthSigma, float normalPower)
+{
+    int2 tileOrigin = int2(groupId * GLINT_SHADOW_DENOISER_FILTER_FUSED_TILE);
+    int2 spanOrigin = tileOrigin - GLINT_SHADOW_DENOISER_FILTER_APRON_FUSED;
+#if GLINT_SHADOW_DENOISER_TILE_SKIP
+    uint tilesX = (inputSize.x + GLINT_SHADOW_DENOISER_FILTER_TILE - 1) / GLINT_SHADOW_DENOISER_FILTER_TILE;
+    uint tilesY = (inputSize.y + GLINT_SHADOW_DENOISER_FILTER_TILE - 1) / GLINT_SHADOW_DENOISER_FILTER_TILE;
+    if (groupIndex < 16u)
+    {
+        // Filter tiles 2g - 1 .. 2g + 2 on each axis; those beyond the image hold only pixels no
+        // lookup reaches (lookups clamp to the image).
+        int2 tile = int2(groupId * 2u) - 1 + int2(groupIndex & 3u, groupIndex >> 2);
+        tile = clamp(tile, int2(0, 0), int2(tilesX, tilesY) - 1);
+        g_glint_shadow_denoiser_filter_metadata[groupIndex] =
+            GLINT_SHADOW_DENOISER_LoadTileMetadata(uint(tile.y) * tilesX + uint(tile.x));
+    }
+    GroupMemoryBarrierWithGroupSync();
+    // The group's own four filter tiles: uniform, so an early return keeps the barriers legal.
+    bool allClear = true;
+    [unroll] for (uint own = 0; own < 4u; ++own)
+    {
+        uint2 tile = groupId * 2u + uint2(own & 1u, own >> 1);
+        bool exists = all(tile < uint2(tilesX, tilesY));
+        uint metadata = g_glint_shadow_denoiser_filter_metadata[(1u + (own >> 1)) * 4u + 1u + (own & 1u)];
+        bool clear = !exists || (metadata & GLINT_SHADOW_DENOISER_TILE_CLEAR) != 0u;
+        allClear = allClear && clear;
+        // Counted as the three-dispatch filter counts: once per iteration.
+        if (groupIndex == own && !clear)
+        {
+            GLINT_SHADOW_DENOISER_CountFilteredTile();
+            GLINT_SHADOW_DENOISER_CountFilteredTile();
+            GLINT_SHADOW_DENOISER_CountFilteredTile();
+        }
+    }
+    if (allClear)
+    {
+        for (uint i = groupIndex; i < GLINT_SHADOW_DENOISER_FILTER_FUSED_TILE * GLINT_SHADOW_DENOISER_FILTER_FUSED_TILE; i += 256u)
+        {
+            int2 local = int2(i % GLINT_SHADOW_DENOISER_FILTER_FUSED_TILE, i / GLINT_SHADOW_DENOISER_FILTER_FUSED_TILE);
+            int2 pixel = tileOrigin + local;
+            if (any(uint2(pixel) >= inputSize))
+                continue;
+            uint metadata = g_glint_shadow_denoiser_filter_metadata[(1 + local.y / 8) * 4 + 1 + local.x / 8];
+            bool lit = (metadata & GLINT_SHADOW_DENOISER_TILE_LIGHT) != 0u &&
+                       GLINT_SHADOW_DENOISER_ReceiverViewDepth(GLINT_SHADOW_DENOISER_LoadDepth(pixel), viewDepth) > 0.0;
+            GLINT_SHADOW_DENOISER_StoreFiltered(pixel, float2(lit ? 1.0 : 0.0, 0.0));
+        }
+        return;
+    }
+#endif
+    GLINT_SHADOW_DENOISER_LoadSpan(groupIndex, 256u, spanOrigin, inputSize, viewDepth);
+    GroupMemoryBarrierWithGroupSync();
+#if GLINT_SHADOW_DENOISER_TILE_SKIP
+    // Clear tiles' and non-receivers' inputs take their fixed values: classification need not
+    // store clear tiles when the fused filter follows (GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_SKIP_CLEAR).
+    for (uint slot = groupIndex; slot < GLINT_SHADOW_DENOISER_FILTER_SLOTS; slot += 256u)
+    {
+        int2 pixel = spanOrigin + int2(slot % GLINT_SHADOW_DENOISER_FILTER_SPAN, slot / GLINT_SHADOW_DENOISER_FILTER_SPAN);
+        float2 value;
+        if (all(uint2(pixel) < inputSize) && GLINT_SHADOW_DENOISER_FixedValue(pixel, spanOrigin, inputSize, value))
+            g_glint_shadow_denoiser_filter_values[slot] = value;
+    }
+    GroupMemoryBarrierWithGroupSync();
+#endif
+
+    // Iterations 1 and 2: buffer 0 -> 1 over the tile +- 6, buffer 1 -> 0 over the tile +- 4.
+    [unroll] for (uint iteration = 0; iteration < 2u; ++iteration)
+    {
+        uint step = 1u << iteration;
+        int margin = iteration == 0u ? 6 : 4;
+        uint width = uint(GLINT_SHADOW_DENOISER_FILTER_FUSED_TILE + 2 * margin);
+        uint source = iteration;
+        uint target = 1u - iteration;
+        for (uint i = groupIndex; i < width * width; i += 256u)
+        {
+            int2 pixel = tileOrigin - margin + int2(i % width, i / width);
+            if (any(uint2(pixel) >= inputSize))
+                continue;
+            float2 value;
+            if (!GLINT_SHADOW_DENOISER_FixedValue(pixel, spanOrigin, inputSize, value))
+                value = GLINT_SHADOW_DENOISER_FilterPixel(pixel, spanOrigin, inputSize, source, step, depthSigma,
+                                                          normalPower);
+            uint slot = GLINT_SHADOW_DENOISER_FilterSlot(pixel, spanOrigin, inputSize);
+            g_glint_shadow_denoiser_filter_values[target * GLINT_SHADOW_DENOISER_FILTER_SLOTS + slot] = value;
+        }
+        GroupMemoryBarrierWithGroupSync();
+    }
+
+    // Iteration 3 (step 4) over the tile, from buffer 0, to the output.
+    int2 pixel = tileOrigin + int2(groupIndex % GLINT_SHADOW_DENOISER_FILTER_FUSED_TILE,
+                                   groupIndex / GLINT_SHADOW_DENOISER_FILTER_FUSED_TILE);
+    if (any(uint2(pixel) >= inputSize))
+        return;
+    float2 result;
+    if (!GLINT_SHADOW_DENOISER_FixedValue(pixel, spanOrigin, inputSize, result))
+    {
+        result = GLINT_SHADOW_DENOISER_FilterPixel(pixel, spanOrigin, inputSize, 0u, 4u, depthSigma, normalPower);
+        if (contrastRemap)
+            result.x = GLINT_SHADOW_DENOISER_ContrastRemap(result);
+    }
+    GLINT_SHADOW_DENOISER_StoreFiltered(pixel, result);
+}
+#endif // GLINT_SHADOW_DENOISER_FILTER_FUSED
 
 #endif // GLINT_SHADOW_DENOISER_FILTER_HLSLI

@@ -31,6 +31,9 @@ struct ShadowDenoiserDesc {
     bool filter = true;           // false: no filter passes
     bool classify = true;         // false: no classification; the filter reads "shadow_filter_input"
     bool skipClearedTiles = true; // with classify: the filter skips tiles classification cleared
+    // The three a-trous iterations in one dispatch ("filter", 16x16 tiles, intermediates in
+    // groupshared memory) instead of three ("filter0..2"); same taps and weights.
+    bool fusedFilter = true;
     // FidelityFX's "contrast recovery" mean^max(1.2 - variance, 1) in the last pass. Off by
     // default: it darkens penumbrae (docs/shadow_denoiser.md, "Convergence").
     bool contrastRemap = false;
@@ -58,9 +61,10 @@ Extent2D shadowMaskTiles(Extent2D size);
 //   "shadow_tile_metadata"  buffer, 4 bytes per 8x8 tile: bit 0 CLEAR, bit 1 LIGHT
 //   "shadow_moments0/1"     RGBA32F (mean, M2, n, accumulated shadow): written on frame parity, read
 //                           on the other; .w is the next frame's shadow history
-//   "shadow_scratch0/1"     RG32F (shadow, variance): classification writes 0; "filter0" writes 1,
-//                           "filter1" writes 0
-//   "shadow_filter_work"    buffer, one uint: 8x8 tiles the three filter passes filtered (skipping)
+//   "shadow_scratch0/1"     RG32F (shadow, variance): classification writes 0 (with the fused
+//                           filter and tile skipping, not in clear tiles); "filter0" writes 1,
+//                           "filter1" writes 0; scratch 1 only without fusedFilter
+//   "shadow_filter_work"    buffer, one uint: 8x8 tiles filtered, counted once per iteration (skipping)
 //   "shadow_output"         RG32F: .x the denoised shadow (1 = lit, 0 for non-receivers), .y variance
 // Every owned image must hold finite values or be ignored through resetHistory on the first frame.
 Result planShadowDenoiser(const ShadowDenoiserDesc& desc, EffectPlan& plan, std::string* error);

@@ -76,6 +76,19 @@ Pass filterPass(const ShadowDenoiserDesc& desc, std::uint32_t index, const char*
     return pass;
 }
 
+// The three iterations in one dispatch of 16x16 groups (docs/shadow_denoiser.md, "Fused filter").
+Pass fusedFilterPass(const ShadowDenoiserDesc& desc, const char* input) {
+    Pass pass = filterPass(desc, 2, input, "shadow_output");
+    pass.name = "filter";
+    pass.pipeline = desc.classify && desc.skipClearedTiles ? "shadow_denoiser_filter.fused_skip"
+                                                           : "shadow_denoiser_filter.fused";
+    pass.groupSize[0] = GLINT_SHADOW_DENOISER_FILTER_FUSED_TILE;
+    pass.groupSize[1] = GLINT_SHADOW_DENOISER_FILTER_FUSED_TILE;
+    pass.dispatch = core::gridFor(desc.size.width, desc.size.height, 1, pass.groupSize);
+    if (desc.classify && desc.skipClearedTiles) pass.zeroBuffers = {"shadow_filter_work"};
+    return pass;
+}
+
 Pass classifyPass(const ShadowDenoiserDesc& desc, Extent2D tiles) {
     Pass pass;
     pass.name = "classify";
@@ -90,7 +103,10 @@ Pass classifyPass(const ShadowDenoiserDesc& desc, Extent2D tiles) {
     constants.viewDepth = viewDepthCoefficients(desc);
     constants.normalUnpack = {desc.normalUnpackMul, desc.normalUnpackAdd};
     constants.ndcYSign = desc.vulkanNdc ? 1.0f : -1.0f;
-    constants.resetHistory = desc.resetHistory ? 1u : 0u;
+    constants.flags = desc.resetHistory ? GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_RESET : 0u;
+    // The fused filter with tile skipping rebuilds clear tiles from the metadata.
+    if (desc.filter && desc.fusedFilter && desc.skipClearedTiles)
+        constants.flags |= GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_SKIP_CLEAR;
     pass.constantsBinding = "g_glint_constants";
     pass.constants = core::packConstants(constants);
     const bool odd = (desc.frameIndex & 1u) != 0;
@@ -136,10 +152,10 @@ Result planShadowDenoiser(const ShadowDenoiserDesc& desc, EffectPlan& plan, std:
     plan.passes.push_back(preparePass(desc, tiles));
     const std::uint32_t w = desc.size.width;
     const std::uint32_t h = desc.size.height;
-    if (desc.classify || desc.filter) {
+    const bool threeDispatches = desc.filter && !desc.fusedFilter;
+    if (desc.classify || threeDispatches)
         plan.images.push_back({"shadow_scratch0", w, h, 1, Format::RG32Float});
-        plan.images.push_back({"shadow_scratch1", w, h, 1, Format::RG32Float});
-    }
+    if (threeDispatches) plan.images.push_back({"shadow_scratch1", w, h, 1, Format::RG32Float});
     if (desc.classify) {
         const std::uint64_t tileCount =
             std::uint64_t{core::divideRoundUp(w, GLINT_SHADOW_DENOISER_FILTER_TILE)} *
@@ -152,8 +168,12 @@ Result planShadowDenoiser(const ShadowDenoiserDesc& desc, EffectPlan& plan, std:
     if (!desc.filter) return Result::Ok;
     plan.images.push_back({"shadow_output", w, h, 1, Format::RG32Float});
     if (desc.classify && desc.skipClearedTiles) plan.buffers.push_back({"shadow_filter_work", 4, false});
-    plan.passes.push_back(
-        filterPass(desc, 0, desc.classify ? "shadow_scratch0" : "shadow_filter_input", "shadow_scratch1"));
+    const char* input = desc.classify ? "shadow_scratch0" : "shadow_filter_input";
+    if (desc.fusedFilter) {
+        plan.passes.push_back(fusedFilterPass(desc, input));
+        return Result::Ok;
+    }
+    plan.passes.push_back(filterPass(desc, 0, input, "shadow_scratch1"));
     plan.passes.push_back(filterPass(desc, 1, "shadow_scratch1", "shadow_scratch0"));
     plan.passes.push_back(filterPass(desc, 2, "shadow_scratch0", "shadow_output"));
     return Result::Ok;
