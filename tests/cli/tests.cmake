@@ -76,7 +76,7 @@ glint_cli_test(NAME "bench on a sample capture prints per-pass medians as JSON u
   STDOUT "^[{].*passes.*medianUs.*reflections/intersect.*subgroupSize.*[}] *$"
   COMMAND --validate bench "${GLINT_CLI_SAMPLE_DIR}/sample" --runs 2 --json -)
 glint_cli_test(NAME "bench simulates a scene file at the requested resolution and times its passes" LABELS gpu EXIT 0
-  STDOUT "subgroup [0-9]+.*courtyard_penumbra.toml: 40x24.*shadows/filter .*total"
+  STDOUT "subgroup [0-9]+.*courtyard_penumbra.toml: 40x24.*shadows/filter2.*total"
   COMMAND --validate bench "${PROJECT_SOURCE_DIR}/harness/scenes/courtyard_penumbra.toml" --resolution 40x24
           --runs 2)
 glint_cli_test(NAME "bench on a missing capture prints one line and exits 2" LABELS unit EXIT 2

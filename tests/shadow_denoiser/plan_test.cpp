@@ -18,7 +18,9 @@ TEST_CASE("shadow plan: passes, resources and sizes", "[plan]") {
     EffectPlan plan;
     std::string error;
     REQUIRE(planShadowDenoiser(desc, plan, &error) == Result::Ok);
-    // Fused by default: prepare, classify, one filter dispatch of 16x16 groups.
+    // Fused: prepare, classify, one filter dispatch of 16x16 groups.
+    desc.fusedFilter = true;
+    REQUIRE(planShadowDenoiser(desc, plan, &error) == Result::Ok);
     REQUIRE(plan.passes.size() == 3);
     CHECK(plan.passes[0].name == "prepare");
     CHECK(plan.passes[1].name == "classify");
@@ -57,7 +59,7 @@ TEST_CASE("shadow plan: passes, resources and sizes", "[plan]") {
     };
     CHECK(classifyFlags() == GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_SKIP_CLEAR);
 
-    // Three dispatches: filter0..2 of 8x8 groups, two scratch images.
+    // Three dispatches (the default): filter0..2 of 8x8 groups, two scratch images.
     desc.fusedFilter = false;
     REQUIRE(planShadowDenoiser(desc, plan, &error) == Result::Ok);
     REQUIRE(plan.passes.size() == 5);

@@ -8,10 +8,9 @@
 // The visibility mask: one 32-bit word per 8x4 pixel tile (docs/shadow_denoiser.md).
 #define GLINT_SHADOW_DENOISER_MASK_TILE_WIDTH 8
 #define GLINT_SHADOW_DENOISER_MASK_TILE_HEIGHT 4
-// A prepare group packs 4x4 mask tiles: 32x16 pixels, two pixels per thread.
+// A prepare group packs 32x8 mask tiles (256x32 pixels), one thread per mask tile.
 #define GLINT_SHADOW_DENOISER_PREPARE_GROUP_WIDTH 32
 #define GLINT_SHADOW_DENOISER_PREPARE_GROUP_HEIGHT 8
-#define GLINT_SHADOW_DENOISER_PREPARE_BLOCK_HEIGHT 16
 // The filter works on 8x8 pixel tiles with a 4-pixel apron (step 4 x radius 1).
 #define GLINT_SHADOW_DENOISER_FILTER_TILE 8
 #define GLINT_SHADOW_DENOISER_FILTER_APRON 4

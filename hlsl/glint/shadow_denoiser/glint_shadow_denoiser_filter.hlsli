@@ -138,8 +138,11 @@ float2 GLINT_SHADOW_DENOISER_FilterPixel(int2 pixel, int2 spanOrigin, uint2 inpu
             uint slot = GLINT_SHADOW_DENOISER_FilterSlot(pixel + int2(x, y), spanOrigin, inputSize);
             filteredVariance += weight * g_glint_shadow_denoiser_filter_values[base + slot].y;
         }
-    float sigma = sqrt(filteredVariance + 1e-9);
-    float depthScale = max(depthSigma * geometry.x, 1e-20);
+    // The three edge stops as one exponential, 2^(log2(e) (-|ds| / sigma - |dz| / depthScale) +
+    // normalPower log2(max(N_c . N_q, 0))): one log2 and one exp2 a tap instead of two exps and
+    // a pow. A normal at 90 degrees or more gives log2(0) = -inf and a weight of 0, as pow does.
+    float luminanceRate = 1.44269504 / sqrt(filteredVariance + 1e-9);
+    float depthRate = 1.44269504 / max(depthSigma * geometry.x, 1e-20);
 
     // The mean accumulates offsets from the centre (mean = s_c + sum w (s_q - s_c) / sum w):
     // a uniform neighbourhood then returns s_c exactly on every GPU, whatever the precision of
@@ -157,10 +160,10 @@ float2 GLINT_SHADOW_DENOISER_FilterPixel(int2 pixel, int2 spanOrigin, uint2 inpu
             if (other.x <= 0.0)
                 continue;
             float2 tap = g_glint_shadow_denoiser_filter_values[base + slot];
-            float normalWeight = pow(max(dot(geometry.yzw, other.yzw), 0.0), normalPower);
+            float exponent = normalPower * log2(max(dot(geometry.yzw, other.yzw), 0.0)) -
+                             abs(value.x - tap.x) * luminanceRate - abs(geometry.x - other.x) * depthRate;
             float weight = GLINT_SHADOW_DENOISER_KernelWeight(i) * GLINT_SHADOW_DENOISER_KernelWeight(j) *
-                           exp(-abs(value.x - tap.x) / sigma) * exp(-abs(geometry.x - other.x) / depthScale) *
-                           normalWeight;
+                           exp2(exponent);
             weightSum += weight;
             meanOffsetSum += weight * (tap.x - value.x);
             varianceSum += weight * weight * tap.y;
@@ -313,7 +316,7 @@ void GLINT_SHADOW_DENOISER_FilterFused(uint2 groupId, uint groupIndex, uint2 inp
 #endif
 
     // Iterations 1 and 2: buffer 0 -> 1 over the tile +- 6, buffer 1 -> 0 over the tile +- 4.
-    [unroll] for (uint iteration = 0; iteration < 2u; ++iteration)
+    [loop] for (uint iteration = 0; iteration < 2u; ++iteration)
     {
         uint step = 1u << iteration;
         int margin = iteration == 0u ? 6 : 4;

@@ -15,8 +15,10 @@
 // 8 x 4) repeat the nearest in-image pixel (clamp to edge), so a border tile of a uniform
 // region is uniform too.
 //
-// Dispatch: [numthreads(32, 8, 1)], ceil(W / 32) x ceil(H / 16) x 1 groups. Each group packs
-// 4 x 4 mask tiles through groupshared atomics: no assumption on the subgroup size.
+// Dispatch: [numthreads(32, 8, 1)], ceil(maskTilesX / 32) x ceil(maskTilesY / 8) x 1 groups. One
+// thread packs one word from its 32 pixels: no groupshared memory, no atomics, no barrier (an
+// earlier version OR-ed bits into groupshared words, 32 atomics on each, and ran 3x slower),
+// and nothing that depends on the subgroup size.
 #ifndef GLINT_SHADOW_DENOISER_PREPARE_HLSLI
 #define GLINT_SHADOW_DENOISER_PREPARE_HLSLI
 
@@ -24,8 +26,6 @@
 
 float GLINT_SHADOW_DENOISER_LoadVisibility(int2 pixel);
 void GLINT_SHADOW_DENOISER_StoreMask(uint tileIndex, uint mask);
-
-groupshared uint g_glint_shadow_denoiser_prepare_masks[16];
 
 uint GLINT_SHADOW_DENOISER_VisibilityBit(int2 pixel, uint2 inputSize)
 {
@@ -38,38 +38,17 @@ uint GLINT_SHADOW_DENOISER_VisibilityBit(int2 pixel, uint2 inputSize)
 void GLINT_SHADOW_DENOISER_Prepare(uint2 groupId, uint2 groupThreadId, uint groupIndex, uint2 inputSize,
                                    uint2 maskTiles)
 {
-    if (groupIndex < 16)
-        g_glint_shadow_denoiser_prepare_masks[groupIndex] = 0u;
-    GroupMemoryBarrierWithGroupSync();
-
-    // Two pixels per thread: rows y and y + 8 of the 32 x 16 block.
-    uint2 blockOrigin = groupId * uint2(GLINT_SHADOW_DENOISER_PREPARE_GROUP_WIDTH,
-                                        GLINT_SHADOW_DENOISER_PREPARE_BLOCK_HEIGHT);
-    [unroll] for (uint part = 0; part < 2; ++part)
-    {
-        uint2 local = groupThreadId + uint2(0, part * GLINT_SHADOW_DENOISER_PREPARE_GROUP_HEIGHT);
-        uint2 pixel = blockOrigin + local;
-        uint2 tile = pixel / uint2(GLINT_SHADOW_DENOISER_MASK_TILE_WIDTH, GLINT_SHADOW_DENOISER_MASK_TILE_HEIGHT);
-        if (all(tile < maskTiles))
-        {
-            uint bit = GLINT_SHADOW_DENOISER_VisibilityBit(int2(pixel), inputSize);
-            uint2 localTile = local / uint2(GLINT_SHADOW_DENOISER_MASK_TILE_WIDTH, GLINT_SHADOW_DENOISER_MASK_TILE_HEIGHT);
-            uint shift = (pixel.y & 3u) * 8u + (pixel.x & 7u);
-            uint previous;
-            InterlockedOr(g_glint_shadow_denoiser_prepare_masks[localTile.y * 4u + localTile.x], bit << shift,
-                          previous);
-        }
-    }
-    GroupMemoryBarrierWithGroupSync();
-
-    if (groupIndex < 16)
-    {
-        uint2 localTile = uint2(groupIndex & 3u, groupIndex >> 2);
-        uint2 tile = groupId * 4u + localTile;
-        if (all(tile < maskTiles))
-            GLINT_SHADOW_DENOISER_StoreMask(tile.y * maskTiles.x + tile.x,
-                                            g_glint_shadow_denoiser_prepare_masks[groupIndex]);
-    }
+    uint2 tile = groupId * uint2(GLINT_SHADOW_DENOISER_PREPARE_GROUP_WIDTH, GLINT_SHADOW_DENOISER_PREPARE_GROUP_HEIGHT) +
+                 groupThreadId;
+    if (any(tile >= maskTiles))
+        return;
+    int2 origin = int2(tile * uint2(GLINT_SHADOW_DENOISER_MASK_TILE_WIDTH, GLINT_SHADOW_DENOISER_MASK_TILE_HEIGHT));
+    uint mask = 0u;
+    [unroll] for (uint row = 0; row < GLINT_SHADOW_DENOISER_MASK_TILE_HEIGHT; ++row)
+        [unroll] for (uint column = 0; column < GLINT_SHADOW_DENOISER_MASK_TILE_WIDTH; ++column)
+            mask |= GLINT_SHADOW_DENOISER_VisibilityBit(origin + int2(column, row), inputSize)
+                    << (row * GLINT_SHADOW_DENOISER_MASK_TILE_WIDTH + column);
+    GLINT_SHADOW_DENOISER_StoreMask(tile.y * maskTiles.x + tile.x, mask);
 }
 
 #endif // GLINT_SHADOW_DENOISER_PREPARE_HLSLI

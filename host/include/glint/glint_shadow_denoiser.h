@@ -32,8 +32,10 @@ struct ShadowDenoiserDesc {
     bool classify = true;         // false: no classification; the filter reads "shadow_filter_input"
     bool skipClearedTiles = true; // with classify: the filter skips tiles classification cleared
     // The three a-trous iterations in one dispatch ("filter", 16x16 tiles, intermediates in
-    // groupshared memory) instead of three ("filter0..2"); same taps and weights.
-    bool fusedFilter = true;
+    // groupshared memory) instead of three ("filter0..2"); same taps and weights. Off by default:
+    // on an H100 it measured 96.5 us against 91.5 us for the three dispatches at 1080p with tile
+    // skipping, and 486 us against 300 us without (docs/performance.md).
+    bool fusedFilter = false;
     // FidelityFX's "contrast recovery" mean^max(1.2 - variance, 1) in the last pass. Off by
     // default: it darkens penumbrae (docs/shadow_denoiser.md, "Convergence").
     bool contrastRemap = false;

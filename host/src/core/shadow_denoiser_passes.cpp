@@ -31,9 +31,8 @@ Pass preparePass(const ShadowDenoiserDesc& desc, Extent2D tiles) {
     pass.groupSize[0] = GLINT_SHADOW_DENOISER_PREPARE_GROUP_WIDTH;
     pass.groupSize[1] = GLINT_SHADOW_DENOISER_PREPARE_GROUP_HEIGHT;
     pass.groupSize[2] = 1;
-    pass.dispatch =
-        DirectDispatch{core::divideRoundUp(desc.size.width, GLINT_SHADOW_DENOISER_PREPARE_GROUP_WIDTH),
-                       core::divideRoundUp(desc.size.height, GLINT_SHADOW_DENOISER_PREPARE_BLOCK_HEIGHT), 1};
+    pass.dispatch = DirectDispatch{core::divideRoundUp(tiles.width, GLINT_SHADOW_DENOISER_PREPARE_GROUP_WIDTH),
+                                   core::divideRoundUp(tiles.height, GLINT_SHADOW_DENOISER_PREPARE_GROUP_HEIGHT), 1};
     shaders::GLINT_ShadowDenoiserPrepareConstants constants{};
     constants.inputSize = {desc.size.width, desc.size.height};
     constants.maskTilesX = tiles.width;
