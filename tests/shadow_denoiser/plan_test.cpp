@@ -59,17 +59,32 @@ TEST_CASE("shadow plan: passes, resources and sizes", "[plan]") {
     };
     CHECK(classifyFlags() == GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_SKIP_CLEAR);
 
-    // Three dispatches (the default): filter0..2 of 8x8 groups, two scratch images.
+    // Three dispatches (the default): filter0..2 of 8x8 groups, indirect over the tiles
+    // classification lists (prepare resets the list), two scratch images.
     desc.fusedFilter = false;
     REQUIRE(planShadowDenoiser(desc, plan, &error) == Result::Ok);
     REQUIRE(plan.passes.size() == 5);
+    CHECK(plan.passes[0].pipeline == "shadow_denoiser_prepare.list");
+    CHECK(plan.passes[1].pipeline == "shadow_denoiser_classify.list");
     CHECK(plan.passes[2].name == "filter0");
     CHECK(plan.passes[4].name == "filter2");
-    CHECK(plan.passes[2].pipeline == "shadow_denoiser_filter.skip");
+    CHECK(plan.passes[2].pipeline == "shadow_denoiser_filter.list");
     CHECK(plan.passes[2].zeroBuffers == std::vector<std::string>{"shadow_filter_work"});
-    CHECK(std::get<DirectDispatch>(plan.passes[2].dispatch).groupsX == 2);
+    CHECK(std::get<IndirectDispatch>(plan.passes[2].dispatch).resource == "shadow_filter_args");
+    REQUIRE(plan.buffers.size() == 5);
+    CHECK(plan.buffers[3].name == "shadow_filter_tiles");
+    CHECK(plan.buffers[3].size == 2 * 1 * 4);
+    CHECK(plan.buffers[4].name == "shadow_filter_args");
+    CHECK(plan.buffers[4].indirectArgs);
     CHECK(plan.images.size() == 5);
     CHECK(classifyFlags() == 0u);
+    // Without tile skipping: a direct grid over every tile, no list.
+    desc.skipClearedTiles = false;
+    REQUIRE(planShadowDenoiser(desc, plan, &error) == Result::Ok);
+    CHECK(plan.passes[0].pipeline == "shadow_denoiser_prepare");
+    CHECK(plan.passes[2].pipeline == "shadow_denoiser_filter");
+    CHECK(std::get<DirectDispatch>(plan.passes[2].dispatch).groupsX == 2);
+    desc.skipClearedTiles = true;
     desc.resetHistory = true;
     REQUIRE(planShadowDenoiser(desc, plan, &error) == Result::Ok);
     CHECK(classifyFlags() == GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_RESET);

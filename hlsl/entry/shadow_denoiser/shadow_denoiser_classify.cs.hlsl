@@ -16,6 +16,25 @@
 [[vk::binding(9, 0)]] GLINT_IMAGE_FORMAT(rg32f) RWTexture2D<float2> g_glint_shadow_variance;
 [[vk::binding(10, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_moments;
 
+#if GLINT_SHADOW_DENOISER_TILE_LIST
+// Permutation "list": the filter's tile list (indirect arguments first written by prepare).
+[[vk::binding(11, 0)]] RWStructuredBuffer<uint> g_glint_filter_args;
+[[vk::binding(12, 0)]] RWStructuredBuffer<uint> g_glint_filter_tiles;
+[[vk::binding(13, 0)]] GLINT_IMAGE_FORMAT(rg32f) RWTexture2D<float2> g_glint_filter_output;
+
+void GLINT_SHADOW_DENOISER_AppendFilterTile(uint2 tile)
+{
+    uint index;
+    InterlockedAdd(g_glint_filter_args[0], 1u, index);
+    g_glint_filter_tiles[index] = tile.x | (tile.y << 16);
+}
+
+void GLINT_SHADOW_DENOISER_StoreClearOutput(int2 pixel, float2 value)
+{
+    g_glint_filter_output[pixel] = value;
+}
+#endif
+
 uint GLINT_SHADOW_DENOISER_LoadMask(int2 tile)
 {
     return g_glint_shadow_mask[uint(tile.y) * g_glint_constants.maskTiles.x + uint(tile.x)];

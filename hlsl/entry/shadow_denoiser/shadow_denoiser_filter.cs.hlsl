@@ -4,7 +4,8 @@
 //
 // Permutations: GLINT_SHADOW_DENOISER_TILE_SKIP=1 skips tiles the classification cleared and
 // counts the tiles it filters; GLINT_SHADOW_DENOISER_FILTER_FUSED=1 runs the three iterations in
-// one dispatch of 16x16 groups (finalPass then selects the contrast remap).
+// one dispatch of 16x16 groups (finalPass then selects the contrast remap);
+// GLINT_SHADOW_DENOISER_TILE_LIST=1 dispatches indirectly over the tiles classification listed.
 #include "entry/common/glint_entry_common.hlsli"
 #include "glint/shadow_denoiser/glint_shadow_denoiser_constants.h"
 #include "glint/shadow_denoiser/glint_shadow_denoiser_filter.hlsli"
@@ -14,7 +15,16 @@
 [[vk::binding(2, 0)]] Texture2D<float> g_glint_depth;
 [[vk::binding(3, 0)]] Texture2D<float4> g_glint_normals;
 [[vk::binding(4, 0)]] GLINT_IMAGE_FORMAT(rg32f) RWTexture2D<float2> g_glint_filter_output;
-#if GLINT_SHADOW_DENOISER_TILE_SKIP
+#if GLINT_SHADOW_DENOISER_TILE_LIST
+[[vk::binding(7, 0)]] StructuredBuffer<uint> g_glint_filter_tiles;
+
+uint2 GLINT_SHADOW_DENOISER_LoadFilterTile(uint listIndex)
+{
+    uint packed = g_glint_filter_tiles[listIndex];
+    return uint2(packed & 0xFFFFu, packed >> 16);
+}
+#endif
+#if GLINT_SHADOW_DENOISER_TILE_SKIP || GLINT_SHADOW_DENOISER_TILE_LIST
 [[vk::binding(5, 0)]] StructuredBuffer<uint> g_glint_tile_metadata;
 [[vk::binding(6, 0)]] RWStructuredBuffer<uint> g_glint_filter_work;
 

@@ -8,6 +8,18 @@
 [[vk::binding(1, 0)]] Texture2D<float> g_glint_visibility;
 [[vk::binding(2, 0)]] RWStructuredBuffer<uint> g_glint_shadow_mask;
 
+#if GLINT_SHADOW_DENOISER_TILE_LIST
+// Permutation "list": resets the filter's tile list for classification to append to.
+[[vk::binding(3, 0)]] RWStructuredBuffer<uint> g_glint_filter_args;
+
+void GLINT_SHADOW_DENOISER_ResetFilterTiles()
+{
+    g_glint_filter_args[0] = 0u;
+    g_glint_filter_args[1] = 1u;
+    g_glint_filter_args[2] = 1u;
+}
+#endif
+
 float GLINT_SHADOW_DENOISER_LoadVisibility(int2 pixel)
 {
     return g_glint_visibility.Load(int3(pixel, 0));

@@ -16,6 +16,11 @@
 //   void   GLINT_SHADOW_DENOISER_StoreMetadata(uint tileIndex, uint metadata);
 //   void   GLINT_SHADOW_DENOISER_StoreShadowVariance(int2 pixel, float2 value);
 //   void   GLINT_SHADOW_DENOISER_StoreMoments(int2 pixel, float4 moments);  (mean, M2, n, shadow)
+// With GLINT_SHADOW_DENOISER_TILE_LIST=1 (for the filter's tile list):
+//   void   GLINT_SHADOW_DENOISER_AppendFilterTile(uint2 tile);   once per tile that is not clear
+//   void   GLINT_SHADOW_DENOISER_StoreClearOutput(int2 pixel, float2 value);
+//          the filter's final (shadow, variance) of a clear tile's pixel; its
+//          StoreShadowVariance is then skipped, as with GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_SKIP_CLEAR.
 // Every loaded value may be non-finite: such histories count as missing, such depths as sky.
 //
 // Dispatch: [numthreads(8, 8, 1)], ceil(W / 8) x ceil(H / 8) x 1 groups.
@@ -35,6 +40,10 @@ float GLINT_SHADOW_DENOISER_LoadShadowHistory(int2 pixel);
 void GLINT_SHADOW_DENOISER_StoreMetadata(uint tileIndex, uint metadata);
 void GLINT_SHADOW_DENOISER_StoreShadowVariance(int2 pixel, float2 value);
 void GLINT_SHADOW_DENOISER_StoreMoments(int2 pixel, float4 moments);
+#if GLINT_SHADOW_DENOISER_TILE_LIST
+void GLINT_SHADOW_DENOISER_AppendFilterTile(uint2 tile);
+void GLINT_SHADOW_DENOISER_StoreClearOutput(int2 pixel, float2 value);
+#endif
 
 groupshared uint g_glint_shadow_denoiser_classify_receivers;
 // Horizontal sums of rows groupOrigin.y - 8 .. groupOrigin.y + 15 (24 x 8 columns).
@@ -146,6 +155,10 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint2 groupThreadId, uint gro
         if (clear && anyReceiver && allLit)
             metadata |= GLINT_SHADOW_DENOISER_TILE_LIGHT;
         GLINT_SHADOW_DENOISER_StoreMetadata(groupId.y * tilesX + groupId.x, metadata);
+#if GLINT_SHADOW_DENOISER_TILE_LIST
+        if (!clear)
+            GLINT_SHADOW_DENOISER_AppendFilterTile(groupId);
+#endif
     }
     if (!clear)
     {
@@ -166,8 +179,12 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint2 groupThreadId, uint gro
     if (clear)
     {
         float value = anyReceiver && allLit && receiver ? 1.0 : 0.0;
+#if GLINT_SHADOW_DENOISER_TILE_LIST
+        GLINT_SHADOW_DENOISER_StoreClearOutput(pixel, float2(value, 0.0));
+#else
         if ((c.flags & GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_SKIP_CLEAR) == 0u)
             GLINT_SHADOW_DENOISER_StoreShadowVariance(pixel, float2(value, 0.0));
+#endif
         GLINT_SHADOW_DENOISER_StoreMoments(pixel, float4(value, 0.0, receiver ? 1.0 : 0.0, value));
         return;
     }

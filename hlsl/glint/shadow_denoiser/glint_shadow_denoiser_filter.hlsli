@@ -23,6 +23,11 @@
 // (1 for receivers of a LIGHT tile, else 0; variance 0), the step-2 pass writes nothing (its
 // output image already holds the constant from classification).
 //
+// With GLINT_SHADOW_DENOISER_TILE_LIST=1 (three-dispatch form only; implies tile skipping), the
+// dispatch is indirect, one group per tile classification listed:
+//   uint2  GLINT_SHADOW_DENOISER_LoadFilterTile(uint listIndex);       8x8 tile coordinates
+// and the passes write listed tiles only: clear tiles' neighbours are rebuilt from the metadata.
+//
 // Weights, for a receiver c and a receiver neighbour q at step * (i, j), i, j in {-1, 0, 1}:
 //   w = k(i) k(j) exp(-|s_c - s_q| / sigma) exp(-|z_c - z_q| / (depthSigma z_c)) max(0, N_c . N_q)^normalPower
 // with k(0) = 1, k(1) = 2/3, sigma = sqrt(var_f + 1e-9), var_f the 3x3 Gaussian (1/4 centre,
@@ -42,6 +47,12 @@ float2 GLINT_SHADOW_DENOISER_LoadMeanVariance(int2 pixel);
 float GLINT_SHADOW_DENOISER_LoadDepth(int2 pixel);
 float3 GLINT_SHADOW_DENOISER_LoadNormal(int2 pixel);
 void GLINT_SHADOW_DENOISER_StoreFiltered(int2 pixel, float2 meanVariance);
+#if GLINT_SHADOW_DENOISER_TILE_LIST
+// A tile list implies tile skipping (the metadata marks the neighbours that were not stored).
+#undef GLINT_SHADOW_DENOISER_TILE_SKIP
+#define GLINT_SHADOW_DENOISER_TILE_SKIP 1
+uint2 GLINT_SHADOW_DENOISER_LoadFilterTile(uint listIndex);
+#endif
 #if GLINT_SHADOW_DENOISER_TILE_SKIP
 uint GLINT_SHADOW_DENOISER_LoadTileMetadata(uint tileIndex);
 void GLINT_SHADOW_DENOISER_CountFilteredTile();
@@ -178,11 +189,86 @@ float GLINT_SHADOW_DENOISER_ContrastRemap(float2 meanVariance)
     return GLINT_FiniteOr(pow(meanVariance.x, max(1.2 - meanVariance.y, 1.0)), 0.0);
 }
 
+#if GLINT_SHADOW_DENOISER_TILE_SKIP
+// Tile metadata of the filter tiles under the span: 4 x 4 (fused, 16x16 tile + 7) or 3 x 3
+// (8x8 tile + 4), starting at tile floor(spanOrigin / 8).
+#if GLINT_SHADOW_DENOISER_FILTER_FUSED
+#define GLINT_SHADOW_DENOISER_FILTER_META_ACROSS 4
+#else
+#define GLINT_SHADOW_DENOISER_FILTER_META_ACROSS 3
+#endif
+groupshared uint g_glint_shadow_denoiser_filter_metadata[16];
+
+int2 GLINT_SHADOW_DENOISER_FirstSpanTile(int2 spanOrigin)
+{
+    // floor(spanOrigin / 8) for spanOrigin >= -8 (integer division truncates towards 0).
+    return (spanOrigin + GLINT_SHADOW_DENOISER_FILTER_TILE) / GLINT_SHADOW_DENOISER_FILTER_TILE - 1;
+}
+
+void GLINT_SHADOW_DENOISER_LoadSpanMetadata(uint groupIndex, int2 spanOrigin, uint2 inputSize)
+{
+    uint tilesX = (inputSize.x + GLINT_SHADOW_DENOISER_FILTER_TILE - 1) / GLINT_SHADOW_DENOISER_FILTER_TILE;
+    uint tilesY = (inputSize.y + GLINT_SHADOW_DENOISER_FILTER_TILE - 1) / GLINT_SHADOW_DENOISER_FILTER_TILE;
+    if (groupIndex < GLINT_SHADOW_DENOISER_FILTER_META_ACROSS * GLINT_SHADOW_DENOISER_FILTER_META_ACROSS)
+    {
+        // Tiles beyond the image hold only pixels no lookup reaches (lookups clamp to the image).
+        int2 tile = GLINT_SHADOW_DENOISER_FirstSpanTile(spanOrigin) +
+                    int2(groupIndex % GLINT_SHADOW_DENOISER_FILTER_META_ACROSS, groupIndex / GLINT_SHADOW_DENOISER_FILTER_META_ACROSS);
+        tile = clamp(tile, int2(0, 0), int2(tilesX, tilesY) - 1);
+        g_glint_shadow_denoiser_filter_metadata[groupIndex] =
+            GLINT_SHADOW_DENOISER_LoadTileMetadata(uint(tile.y) * tilesX + uint(tile.x));
+    }
+}
+#endif
+
+// The value of an in-image pixel that is not filtered: a non-receiver's (0, 0) or, with tile
+// skipping, a clear tile's constant; what the three-dispatch filter writes there in every pass.
+// Returns false for pixels to filter. Needs the span (and its metadata) loaded.
+bool GLINT_SHADOW_DENOISER_FixedValue(int2 pixel, int2 spanOrigin, uint2 inputSize, out float2 fixedValue)
+{
+    uint slot = GLINT_SHADOW_DENOISER_FilterSlot(pixel, spanOrigin, inputSize);
+    fixedValue = float2(0.0, 0.0);
+    bool receiver = g_glint_shadow_denoiser_filter_geometry[slot].x > 0.0;
+    if (!receiver)
+        return true;
+#if GLINT_SHADOW_DENOISER_TILE_SKIP
+    int2 tile = pixel / GLINT_SHADOW_DENOISER_FILTER_TILE - GLINT_SHADOW_DENOISER_FirstSpanTile(spanOrigin);
+    uint metadata = g_glint_shadow_denoiser_filter_metadata[tile.y * GLINT_SHADOW_DENOISER_FILTER_META_ACROSS + tile.x];
+    if ((metadata & GLINT_SHADOW_DENOISER_TILE_CLEAR) != 0u)
+    {
+        fixedValue.x = (metadata & GLINT_SHADOW_DENOISER_TILE_LIGHT) != 0u ? 1.0 : 0.0;
+        return true;
+    }
+#endif
+    return false;
+}
+
+#if GLINT_SHADOW_DENOISER_TILE_SKIP
+// Replaces the loaded inputs of clear tiles' pixels by their constants: with a tile list or the
+// fused filter, classification and the earlier passes do not store clear tiles.
+void GLINT_SHADOW_DENOISER_FixClearInputs(uint groupIndex, uint groupThreads, int2 spanOrigin, uint2 inputSize)
+{
+    for (uint slot = groupIndex; slot < GLINT_SHADOW_DENOISER_FILTER_SLOTS; slot += groupThreads)
+    {
+        int2 pixel = spanOrigin + int2(slot % GLINT_SHADOW_DENOISER_FILTER_SPAN, slot / GLINT_SHADOW_DENOISER_FILTER_SPAN);
+        float2 value;
+        if (all(uint2(pixel) < inputSize) && GLINT_SHADOW_DENOISER_FixedValue(pixel, spanOrigin, inputSize, value))
+            g_glint_shadow_denoiser_filter_values[slot] = value;
+    }
+}
+#endif
+
 #if !GLINT_SHADOW_DENOISER_FILTER_FUSED
 void GLINT_SHADOW_DENOISER_Filter(uint2 groupId, uint2 groupThreadId, uint groupIndex, uint2 inputSize, uint step,
                                   bool finalPass, float4 viewDepth, float depthSigma, float normalPower)
 {
-#if GLINT_SHADOW_DENOISER_TILE_SKIP
+#if GLINT_SHADOW_DENOISER_TILE_LIST
+    // Only the tiles classification listed (never clear ones) are dispatched; the others hold
+    // their constant in the output already (classification wrote it).
+    groupId = GLINT_SHADOW_DENOISER_LoadFilterTile(groupId.x);
+    if (groupIndex == 0)
+        GLINT_SHADOW_DENOISER_CountFilteredTile();
+#elif GLINT_SHADOW_DENOISER_TILE_SKIP
     // Uniform across the group, so returning here keeps the barrier below legal.
     uint tilesX = (inputSize.x + GLINT_SHADOW_DENOISER_FILTER_TILE - 1) / GLINT_SHADOW_DENOISER_FILTER_TILE;
     uint metadata = GLINT_SHADOW_DENOISER_LoadTileMetadata(groupId.y * tilesX + groupId.x);
@@ -201,6 +287,12 @@ void GLINT_SHADOW_DENOISER_Filter(uint2 groupId, uint2 groupThreadId, uint group
 #endif
     int2 spanOrigin = int2(groupId * GLINT_SHADOW_DENOISER_FILTER_TILE) - GLINT_SHADOW_DENOISER_FILTER_APRON;
     GLINT_SHADOW_DENOISER_LoadSpan(groupIndex, 64u, spanOrigin, inputSize, viewDepth);
+#if GLINT_SHADOW_DENOISER_TILE_LIST
+    // Neighbouring clear tiles were not stored by classification or the earlier passes.
+    GLINT_SHADOW_DENOISER_LoadSpanMetadata(groupIndex, spanOrigin, inputSize);
+    GroupMemoryBarrierWithGroupSync();
+    GLINT_SHADOW_DENOISER_FixClearInputs(groupIndex, 64u, spanOrigin, inputSize);
+#endif
     GroupMemoryBarrierWithGroupSync();
 
     int2 pixel = int2(groupId * GLINT_SHADOW_DENOISER_FILTER_TILE + groupThreadId);
@@ -219,32 +311,6 @@ void GLINT_SHADOW_DENOISER_Filter(uint2 groupId, uint2 groupThreadId, uint group
 #endif // !GLINT_SHADOW_DENOISER_FILTER_FUSED
 
 #if GLINT_SHADOW_DENOISER_FILTER_FUSED
-// Tile metadata of the 4 x 4 filter tiles under the span (fused, with tile skipping).
-groupshared uint g_glint_shadow_denoiser_filter_metadata[16];
-
-// The fused filter's value of a span slot whose pixel is a clear tile's or a non-receiver:
-// what the three-dispatch filter writes there in every pass. Returns false for pixels to filter.
-bool GLINT_SHADOW_DENOISER_FixedValue(int2 pixel, int2 spanOrigin, uint2 inputSize, out float2 fixedValue)
-{
-    uint slot = GLINT_SHADOW_DENOISER_FilterSlot(pixel, spanOrigin, inputSize);
-    fixedValue = float2(0.0, 0.0);
-    bool receiver = g_glint_shadow_denoiser_filter_geometry[slot].x > 0.0;
-    if (!receiver)
-        return true;
-#if GLINT_SHADOW_DENOISER_TILE_SKIP
-    // Filter tile relative to the first of the 4 x 4 under the span (the group's tile 2g - 1).
-    int2 tileOrigin = spanOrigin + GLINT_SHADOW_DENOISER_FILTER_APRON_FUSED;
-    int2 tile = pixel / GLINT_SHADOW_DENOISER_FILTER_TILE - tileOrigin / GLINT_SHADOW_DENOISER_FILTER_TILE + 1;
-    uint metadata = g_glint_shadow_denoiser_filter_metadata[tile.y * 4 + tile.x];
-    if ((metadata & GLINT_SHADOW_DENOISER_TILE_CLEAR) != 0u)
-    {
-        fixedValue.x = (metadata & GLINT_SHADOW_DENOISER_TILE_LIGHT) != 0u ? 1.0 : 0.0;
-        return true;
-    }
-#endif
-    return false;
-}
-
 // The three iterations (steps 1, 2, 4) of one 16 x 16 tile in one dispatch: iteration k runs
 // over the tile grown by the apron the later iterations read (6, 4, 0 pixels), in groupshared
 // memory, so the intermediate results never leave the chip. Same taps, weights and clamping as
@@ -257,15 +323,8 @@ void GLINT_SHADOW_DENOISER_FilterFused(uint2 groupId, uint groupIndex, uint2 inp
 #if GLINT_SHADOW_DENOISER_TILE_SKIP
     uint tilesX = (inputSize.x + GLINT_SHADOW_DENOISER_FILTER_TILE - 1) / GLINT_SHADOW_DENOISER_FILTER_TILE;
     uint tilesY = (inputSize.y + GLINT_SHADOW_DENOISER_FILTER_TILE - 1) / GLINT_SHADOW_DENOISER_FILTER_TILE;
-    if (groupIndex < 16u)
-    {
-        // Filter tiles 2g - 1 .. 2g + 2 on each axis; those beyond the image hold only pixels no
-        // lookup reaches (lookups clamp to the image).
-        int2 tile = int2(groupId * 2u) - 1 + int2(groupIndex & 3u, groupIndex >> 2);
-        tile = clamp(tile, int2(0, 0), int2(tilesX, tilesY) - 1);
-        g_glint_shadow_denoiser_filter_metadata[groupIndex] =
-            GLINT_SHADOW_DENOISER_LoadTileMetadata(uint(tile.y) * tilesX + uint(tile.x));
-    }
+    // Filter tiles 2g - 1 .. 2g + 2 on each axis.
+    GLINT_SHADOW_DENOISER_LoadSpanMetadata(groupIndex, spanOrigin, inputSize);
     GroupMemoryBarrierWithGroupSync();
     // The group's own four filter tiles: uniform, so an early return keeps the barriers legal.
     bool allClear = true;
@@ -303,15 +362,9 @@ void GLINT_SHADOW_DENOISER_FilterFused(uint2 groupId, uint groupIndex, uint2 inp
     GLINT_SHADOW_DENOISER_LoadSpan(groupIndex, 256u, spanOrigin, inputSize, viewDepth);
     GroupMemoryBarrierWithGroupSync();
 #if GLINT_SHADOW_DENOISER_TILE_SKIP
-    // Clear tiles' and non-receivers' inputs take their fixed values: classification need not
-    // store clear tiles when the fused filter follows (GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_SKIP_CLEAR).
-    for (uint slot = groupIndex; slot < GLINT_SHADOW_DENOISER_FILTER_SLOTS; slot += 256u)
-    {
-        int2 pixel = spanOrigin + int2(slot % GLINT_SHADOW_DENOISER_FILTER_SPAN, slot / GLINT_SHADOW_DENOISER_FILTER_SPAN);
-        float2 value;
-        if (all(uint2(pixel) < inputSize) && GLINT_SHADOW_DENOISER_FixedValue(pixel, spanOrigin, inputSize, value))
-            g_glint_shadow_denoiser_filter_values[slot] = value;
-    }
+    // Classification need not store clear tiles when the fused filter follows
+    // (GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_SKIP_CLEAR).
+    GLINT_SHADOW_DENOISER_FixClearInputs(groupIndex, 256u, spanOrigin, inputSize);
     GroupMemoryBarrierWithGroupSync();
 #endif
 

@@ -9,6 +9,9 @@
 //   void  GLINT_SHADOW_DENOISER_StoreMask(uint tileIndex, uint mask);
 //       Writes the word of mask tile tileIndex = tile.y * maskTilesX + tile.x.
 //
+// With GLINT_SHADOW_DENOISER_TILE_LIST=1 also
+//   void  GLINT_SHADOW_DENOISER_ResetFilterTiles();   writes the filter's arguments (0, 1, 1)
+//
 // Mask layout: tile = (x >> 3, y >> 2); bit (y & 3) * 8 + (x & 7), so each byte is one pixel
 // row of the tile with the leftmost pixel in the least significant bit; bit set = lit.
 // Out-of-image bits (tiles on the right and bottom borders of sizes that are not multiples of
@@ -26,6 +29,10 @@
 
 float GLINT_SHADOW_DENOISER_LoadVisibility(int2 pixel);
 void GLINT_SHADOW_DENOISER_StoreMask(uint tileIndex, uint mask);
+#if GLINT_SHADOW_DENOISER_TILE_LIST
+// Writes the filter's indirect arguments (0, 1, 1): classification appends to the list.
+void GLINT_SHADOW_DENOISER_ResetFilterTiles();
+#endif
 
 uint GLINT_SHADOW_DENOISER_VisibilityBit(int2 pixel, uint2 inputSize)
 {
@@ -38,6 +45,10 @@ uint GLINT_SHADOW_DENOISER_VisibilityBit(int2 pixel, uint2 inputSize)
 void GLINT_SHADOW_DENOISER_Prepare(uint2 groupId, uint2 groupThreadId, uint groupIndex, uint2 inputSize,
                                    uint2 maskTiles)
 {
+#if GLINT_SHADOW_DENOISER_TILE_LIST
+    if (all(groupId == 0u) && groupIndex == 0u)
+        GLINT_SHADOW_DENOISER_ResetFilterTiles();
+#endif
     uint2 tile = groupId * uint2(GLINT_SHADOW_DENOISER_PREPARE_GROUP_WIDTH, GLINT_SHADOW_DENOISER_PREPARE_GROUP_HEIGHT) +
                  groupThreadId;
     if (any(tile >= maskTiles))

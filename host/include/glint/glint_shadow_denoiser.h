@@ -67,6 +67,10 @@ Extent2D shadowMaskTiles(Extent2D size);
 //                           filter and tile skipping, not in clear tiles); "filter0" writes 1,
 //                           "filter1" writes 0; scratch 1 only without fusedFilter
 //   "shadow_filter_work"    buffer, one uint: 8x8 tiles filtered, counted once per iteration (skipping)
+//   "shadow_filter_tiles"   buffer, 4 bytes per 8x8 tile: the tiles classification listed for the
+//                           three filter dispatches (x | y << 16), with skipping and without fusedFilter
+//   "shadow_filter_args"    buffer, 12 bytes: their indirect arguments (prepare resets, classify counts);
+//                           classification then writes the CLEAR tiles' output itself
 //   "shadow_output"         RG32F: .x the denoised shadow (1 = lit, 0 for non-receivers), .y variance
 // Every owned image must hold finite values or be ignored through resetHistory on the first frame.
 Result planShadowDenoiser(const ShadowDenoiserDesc& desc, EffectPlan& plan, std::string* error);

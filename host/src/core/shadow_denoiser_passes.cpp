@@ -11,6 +11,12 @@
 namespace glint {
 namespace {
 
+// Classification lists the tiles the three-dispatch filter works on (indirect dispatch) and
+// writes the clear tiles' output itself.
+bool usesTileList(const ShadowDenoiserDesc& desc) {
+    return desc.classify && desc.filter && desc.skipClearedTiles && !desc.fusedFilter;
+}
+
 Result invalid(std::string* error, const std::string& message) {
     return core::invalidArgument(error, "shadow denoiser", message);
 }
@@ -31,8 +37,9 @@ Pass preparePass(const ShadowDenoiserDesc& desc, Extent2D tiles) {
     pass.groupSize[0] = GLINT_SHADOW_DENOISER_PREPARE_GROUP_WIDTH;
     pass.groupSize[1] = GLINT_SHADOW_DENOISER_PREPARE_GROUP_HEIGHT;
     pass.groupSize[2] = 1;
-    pass.dispatch = DirectDispatch{core::divideRoundUp(tiles.width, GLINT_SHADOW_DENOISER_PREPARE_GROUP_WIDTH),
-                                   core::divideRoundUp(tiles.height, GLINT_SHADOW_DENOISER_PREPARE_GROUP_HEIGHT), 1};
+    pass.dispatch =
+        DirectDispatch{core::divideRoundUp(tiles.width, GLINT_SHADOW_DENOISER_PREPARE_GROUP_WIDTH),
+                       core::divideRoundUp(tiles.height, GLINT_SHADOW_DENOISER_PREPARE_GROUP_HEIGHT), 1};
     shaders::GLINT_ShadowDenoiserPrepareConstants constants{};
     constants.inputSize = {desc.size.width, desc.size.height};
     constants.maskTilesX = tiles.width;
@@ -41,6 +48,10 @@ Pass preparePass(const ShadowDenoiserDesc& desc, Extent2D tiles) {
     pass.constants = core::packConstants(constants);
     pass.uses = {{"g_glint_visibility", "shadow_visibility", Access::Read},
                  {"g_glint_shadow_mask", "shadow_mask", Access::Write}};
+    if (usesTileList(desc)) {
+        pass.pipeline = "shadow_denoiser_prepare.list";
+        pass.uses.push_back({"g_glint_filter_args", "shadow_filter_args", Access::Write});
+    }
     return pass;
 }
 
@@ -71,6 +82,13 @@ Pass filterPass(const ShadowDenoiserDesc& desc, std::uint32_t index, const char*
         pass.uses.push_back({"g_glint_tile_metadata", "shadow_tile_metadata", Access::Read});
         pass.uses.push_back({"g_glint_filter_work", "shadow_filter_work", Access::ReadWrite});
         if (index == 0) pass.zeroBuffers = {"shadow_filter_work"};
+    }
+    if (usesTileList(desc)) {
+        pass.pipeline = "shadow_denoiser_filter.list";
+        pass.dispatch = IndirectDispatch{"shadow_filter_args", 0};
+        pass.uses.push_back({"g_glint_filter_tiles", "shadow_filter_tiles", Access::Read});
+        // Classification wrote the clear tiles of the output; this pass adds the listed ones.
+        if (index == 2) pass.uses[3].access = Access::ReadWrite;
     }
     return pass;
 }
@@ -118,6 +136,12 @@ Pass classifyPass(const ShadowDenoiserDesc& desc, Extent2D tiles) {
                  {"g_glint_tile_metadata", "shadow_tile_metadata", Access::Write},
                  {"g_glint_shadow_variance", "shadow_scratch0", Access::Write},
                  {"g_glint_moments", odd ? "shadow_moments1" : "shadow_moments0", Access::Write}};
+    if (usesTileList(desc)) {
+        pass.pipeline = "shadow_denoiser_classify.list";
+        pass.uses.push_back({"g_glint_filter_args", "shadow_filter_args", Access::ReadWrite});
+        pass.uses.push_back({"g_glint_filter_tiles", "shadow_filter_tiles", Access::Write});
+        pass.uses.push_back({"g_glint_filter_output", "shadow_output", Access::Write});
+    }
     return pass;
 }
 
@@ -167,6 +191,13 @@ Result planShadowDenoiser(const ShadowDenoiserDesc& desc, EffectPlan& plan, std:
     if (!desc.filter) return Result::Ok;
     plan.images.push_back({"shadow_output", w, h, 1, Format::RG32Float});
     if (desc.classify && desc.skipClearedTiles) plan.buffers.push_back({"shadow_filter_work", 4, false});
+    if (usesTileList(desc)) {
+        const std::uint64_t tileCount =
+            std::uint64_t{core::divideRoundUp(w, GLINT_SHADOW_DENOISER_FILTER_TILE)} *
+            core::divideRoundUp(h, GLINT_SHADOW_DENOISER_FILTER_TILE);
+        plan.buffers.push_back({"shadow_filter_tiles", tileCount * 4u, false});
+        plan.buffers.push_back({"shadow_filter_args", 12, true});
+    }
     const char* input = desc.classify ? "shadow_scratch0" : "shadow_filter_input";
     if (desc.fusedFilter) {
         plan.passes.push_back(fusedFilterPass(desc, input));
