@@ -2,6 +2,7 @@
 
 #include "capture/capture_error.h"
 #include "scene/scene_file.h"
+#include "scene/scene_geometry.h"
 
 #include <algorithm>
 #include <cmath>
@@ -46,7 +47,8 @@ capture::Environment bakeEnvironment(const Scene& scene) {
             const Vec3& pole = d[1] >= 0.0f ? desc.zenith : desc.ground;
             for (std::size_t k = 0; k < 3; ++k) c[k] = desc.horizon[k] + (pole[k] - desc.horizon[k]) * t;
             if (desc.sunDisc) {
-                for (const LightDesc& light : scene.lights) {
+                // Baked once: a keyframed light's disc stays where the light is on frame 0.
+                for (const LightDesc& light : lightsAt(scene, 0)) {
                     if (light.kind != LightKind::Directional || light.angularRadiusDegrees <= 0.0f) continue;
                     const double radius =
                         static_cast<double>(light.angularRadiusDegrees) * std::numbers::pi / 180.0;

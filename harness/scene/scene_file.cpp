@@ -242,12 +242,23 @@ void readEnvironment(const Reader& r, const toml::table& t, Scene& scene) {
     }
 }
 
+// A "direction" key: non-zero, returned normalised.
+Vec3 direction(const Reader& r, const toml::table& t, const std::string& p, const Vec3& fallback) {
+    Vec3 d = r.vec3(t, p, "direction", fallback);
+    const float len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    if (!(len > 1e-6f)) r.fail(t.get("direction"), p + ".direction", "must not be zero");
+    for (float& c : d) c /= len;
+    return d;
+}
+
 void readLights(const Reader& r, const toml::table& root, Scene& scene) {
     const auto lights = r.tables(root, "", "lights");
     for (std::size_t i = 0; i < lights.size(); ++i) {
         const toml::table& t = *lights[i];
         const std::string p = indexed("lights", i);
-        r.onlyKeys(t, p, {"type", "direction", "position", "color", "intensity", "angular_radius", "radius"});
+        r.onlyKeys(
+            t, p,
+            {"type", "direction", "position", "color", "intensity", "angular_radius", "radius", "keyframes"});
         LightDesc l;
         const std::string type = r.text(t, p, "type", "directional");
         if (type == "directional")
@@ -256,16 +267,36 @@ void readLights(const Reader& r, const toml::table& root, Scene& scene) {
             l.kind = LightKind::Sphere;
         else
             r.fail(t.get("type"), p + ".type", "expected \"directional\" or \"sphere\"");
-        l.direction = r.vec3(t, p, "direction", l.direction);
-        const float len = std::sqrt(l.direction[0] * l.direction[0] + l.direction[1] * l.direction[1] +
-                                    l.direction[2] * l.direction[2]);
-        if (!(len > 1e-6f)) r.fail(t.get("direction"), p + ".direction", "must not be zero");
-        for (float& c : l.direction) c /= len;
+        l.direction = direction(r, t, p, l.direction);
         l.position = r.vec3(t, p, "position", l.position);
         l.color = r.vec3(t, p, "color", l.color);
         l.intensity = r.real(t, p, "intensity", l.intensity, 0.0, 1e9);
         l.angularRadiusDegrees = r.real(t, p, "angular_radius", l.angularRadiusDegrees, 0.0, 45.0);
         l.radius = r.real(t, p, "radius", l.radius, 0.0, 1e6);
+        const auto keys = r.tables(t, p, "keyframes");
+        for (std::size_t k = 0; k < keys.size(); ++k) {
+            const std::string kp = p + "." + indexed("keyframes", k);
+            r.onlyKeys(*keys[k], kp, {"frame", "direction", "position"});
+            LightKey key;
+            key.frame = r.real(*keys[k], kp, "frame", 0.0f, -1e6, 1e6);
+            if (!l.keys.empty() && key.frame <= l.keys.back().frame)
+                r.fail(keys[k], kp + ".frame", "keyframes must be in increasing frame order");
+            // Missing values carry over from the previous key (the light's own on the first).
+            const LightKey& previous =
+                l.keys.empty() ? LightKey{0.0f, l.direction, l.position} : l.keys.back();
+            key.direction = direction(r, *keys[k], kp, previous.direction);
+            key.position = r.vec3(*keys[k], kp, "position", previous.position);
+            if (!l.keys.empty()) {
+                // Directions are interpolated linearly and renormalised, which is undefined
+                // through the midpoint of opposite directions.
+                const Vec3& a = l.keys.back().direction;
+                const Vec3& b = key.direction;
+                if (a[0] * b[0] + a[1] * b[1] + a[2] * b[2] < -0.99f)
+                    r.fail(keys[k]->get("direction") ? keys[k]->get("direction") : keys[k], kp + ".direction",
+                           "turns by nearly 180 degrees from the previous key; add a key in between");
+            }
+            l.keys.push_back(key);
+        }
         scene.lights.push_back(l);
     }
 }

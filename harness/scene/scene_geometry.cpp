@@ -133,6 +133,24 @@ Mat4 objectMatrix(const ObjectDesc& object, double frame) {
     return capture::multiply(translation(position), capture::multiply(r, scaling(scale)));
 }
 
+LightDesc lightAt(const LightDesc& light, double frame) {
+    LightDesc out = light;
+    if (light.keys.empty()) return out;
+    const auto [a, next] = segment(light.keys, frame);
+    const auto [b, t] = next;
+    out.position = lerp(a->position, b->position, t);
+    // Keys never differ by ~180 degrees (scene_file.cpp), so the blend is never near zero.
+    const D3 d = normalized(d3(lerp(a->direction, b->direction, t)));
+    out.direction = {static_cast<float>(d.x), static_cast<float>(d.y), static_cast<float>(d.z)};
+    return out;
+}
+
+std::vector<LightDesc> lightsAt(const Scene& scene, std::uint32_t frame) {
+    std::vector<LightDesc> out;
+    for (const LightDesc& light : scene.lights) out.push_back(lightAt(light, frame));
+    return out;
+}
+
 FrameGeometry buildGeometry(const Scene& scene, const std::vector<Mesh>& meshes, std::uint32_t frame) {
     FrameGeometry g;
     std::size_t meshIndex = 0;

@@ -29,6 +29,12 @@ struct FrameGeometry {
 capture::Mat4 objectMatrix(const ObjectDesc& object, double frame);
 FrameGeometry buildGeometry(const Scene& scene, const std::vector<Mesh>& meshes, std::uint32_t frame);
 
+// The light at a possibly fractional frame: its keys interpolated (directions linearly, then
+// renormalised; positions linearly) and clamped outside their range, like object keys.
+LightDesc lightAt(const LightDesc& light, double frame);
+// Every light of the scene at a frame, in the scene's order.
+std::vector<LightDesc> lightsAt(const Scene& scene, std::uint32_t frame);
+
 struct FrameCamera {
     capture::Camera camera; // view, projection, prevViewProjection, depth convention, near/far
     Vec3 eye{};

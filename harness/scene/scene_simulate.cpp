@@ -171,9 +171,9 @@ std::vector<shaders::SceneMaterial> gpuMaterials(const Scene& scene) {
     return out;
 }
 
-std::vector<shaders::SceneLight> gpuLights(const Scene& scene) {
+std::vector<shaders::SceneLight> gpuLights(const std::vector<LightDesc>& lights) {
     std::vector<shaders::SceneLight> out;
-    for (const LightDesc& l : scene.lights) {
+    for (const LightDesc& l : lights) {
         shaders::SceneLight g{};
         const bool directional = l.kind == LightKind::Directional;
         g.kind = directional ? GLINT_SCENE_LIGHT_DIRECTIONAL : GLINT_SCENE_LIGHT_SPHERE;
@@ -247,8 +247,7 @@ Simulation simulate(const gpu::Context& context, const Scene& scene) {
                                         VK_FORMAT_R32G32B32A32_SFLOAT);
     gpu::uploadImage(context, res.environment, environment.rgb, 3);
     const vk::Buffer materials = uploadStorage(context, gpuMaterials(scene));
-    const vk::Buffer lights = uploadStorage(context, gpuLights(scene));
-    res.buffers = {materials, lights};
+    res.buffers = {materials};
 
     std::vector<OutputImage> outputs;
     std::vector<std::size_t> passSlot; // plan pass -> sim.passes entry (chunks share one)
@@ -300,6 +299,9 @@ Simulation simulate(const gpu::Context& context, const Scene& scene) {
         res.buffers.push_back(primitives);
         vk::Buffer objects = uploadStorage(context, geometry.objects);
         res.buffers.push_back(objects);
+        // Keyframed lights move: the shadow layers, references and shading all read this frame's.
+        vk::Buffer lights = uploadStorage(context, gpuLights(lightsAt(scene, frame)));
+        res.buffers.push_back(lights);
         vk::ResourceTable table = gpu::resourceTable(res.owned, {{"g_scene_environment", &res.environment}});
         table.buffers["g_scene_nodes"] = &nodes;
         table.buffers["g_scene_primitives"] = &primitives;
@@ -329,8 +331,8 @@ Simulation simulate(const gpu::Context& context, const Scene& scene) {
                 toLayer(out, gpu::readbackImage(context, image), vk::formatChannelCount(image.format)));
         }
         sim.frames.push_back(std::move(f));
-        // This frame's geometry is done with; the executor waited in executePlan.
-        for (int i = 0; i < 3; ++i) {
+        // This frame's geometry and lights are done with; the executor waited in executePlan.
+        for (int i = 0; i < 4; ++i) {
             vk::destroyBuffer(context.device, res.buffers.back());
             res.buffers.pop_back();
         }

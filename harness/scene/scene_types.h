@@ -52,6 +52,13 @@ struct EnvironmentDesc {
 
 enum class LightKind { Directional, Sphere };
 
+// A light's pose at one frame; the direction is interpolated linearly and renormalised.
+struct LightKey {
+    float frame = 0.0f;
+    Vec3 direction{0.3f, 1.0f, 0.2f}; // unit
+    Vec3 position{0.0f, 3.0f, 0.0f};
+};
+
 struct LightDesc {
     LightKind kind = LightKind::Directional;
     Vec3 direction{0.3f, 1.0f, 0.2f}; // directional: toward the light (normalized on load)
@@ -60,6 +67,9 @@ struct LightDesc {
     float intensity = 3.0f;             // directional: irradiance; sphere: irradiance at 1 unit
     float angularRadiusDegrees = 0.27f; // directional
     float radius = 0.1f;                // sphere
+    // Empty: the light holds `direction` and `position` on every frame. Otherwise these keys
+    // replace them (lightAt in scene_geometry.h), in increasing frame order.
+    std::vector<LightKey> keys;
 };
 
 struct MaterialDesc {

@@ -4,6 +4,7 @@
 #include "support/gpu_test_context.h"
 
 #include "capture/sequence_io.h"
+#include "scene/scene_geometry.h"
 #include "scene/scene_simulate.h"
 
 #include <catch2/catch.hpp>
@@ -116,6 +117,38 @@ TEST_CASE("The noisy shadow layer draws new random numbers every frame and avera
     // Mean over pixels and frames of the 1-sample estimate vs the converged mean.
     const double n = static_cast<double>(s0.size());
     CHECK(std::fabs(noisySum / (3.0 * n) - refSum / n) < 0.02);
+    GLINT_REQUIRE_NO_VALIDATION_ERRORS();
+}
+
+TEST_CASE("A keyframed light lights each frame as a still light at its interpolated pose would",
+          "[scene][gpu]") {
+    Scene scene = test::analyticScene(48, 27, 3);
+    scene.camera.keys.resize(1); // only the light moves
+    scene.objects[2].keys.resize(1);
+    scene.environment.sunDisc = false; // the baked sky shows frame 0's disc; leave it out
+    scene.effects = {Effect::Reflections, Effect::Shadows};
+    scene.reference = {false, true, 4};
+    LightDesc& sun = scene.lights[0];
+    sun.keys = {{0.0f, sun.direction, sun.position}, {2.0f, {-0.5f, 0.7f, 0.3f}, sun.position}};
+    const Simulation moving = simulate(test::testContext(), scene);
+    for (std::uint32_t f = 0; f < scene.frameCount; ++f) {
+        Scene still = scene;
+        still.lights[0] = lightAt(sun, f);
+        still.lights[0].keys.clear();
+        const Simulation expected = simulate(test::testContext(), still);
+        for (const char* name : {"shadow", "reference.shadow", "color"}) {
+            INFO("frame " << f << " layer " << name);
+            const auto& x = capture::findLayer(moving.frames[f], name)->pixels;
+            const auto& y = capture::findLayer(expected.frames[f], name)->pixels;
+            REQUIRE(x.size() == y.size());
+            CHECK(std::memcmp(x.data(), y.data(), x.size() * sizeof(float)) == 0);
+        }
+    }
+    const auto& first = capture::findLayer(moving.frames[0], "reference.shadow")->pixels;
+    const auto& last = capture::findLayer(moving.frames[2], "reference.shadow")->pixels;
+    std::size_t moved = 0;
+    for (std::size_t i = 0; i < first.size(); ++i) moved += std::fabs(first[i] - last[i]) > 0.5f ? 1u : 0u;
+    CHECK(moved > 20u); // the shadows really moved
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }
 

@@ -5,8 +5,10 @@
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 
 namespace glint::scene {
 namespace {
@@ -115,6 +117,71 @@ TEST_CASE("Malformed scene files name the file, line, key and problem", "[scene]
     CHECK(contains(
         errorOf(std::string(kMinimal) + "[[lights]]\ntype = \"directional\"\ndirection = [0, 0, 0]\n"),
         "lights[1].direction: must not be zero"));
+}
+
+TEST_CASE("Light keyframes are parsed, carried over and interpolated per frame", "[scene][file]") {
+    const Scene s = parseScene(R"(
+effects = ["shadows"]
+[[lights]]
+type = "directional"
+direction = [0, 2, 0]
+[[lights.keyframes]]
+frame = 2
+[[lights.keyframes]]
+frame = 6
+direction = [1, 1, 0]
+[[lights]]
+type = "sphere"
+position = [0, 3, 0]
+[[lights.keyframes]]
+frame = 0
+[[lights.keyframes]]
+frame = 4
+position = [4, 3, 0]
+)",
+                               "good.toml");
+    REQUIRE(s.lights.size() == 2);
+    const LightDesc& sun = s.lights[0];
+    REQUIRE(sun.keys.size() == 2);
+    CHECK(sun.keys[0].frame == 2.0f);
+    // The first key carries the light's own (normalised) direction; every key is normalised.
+    CHECK(sun.keys[0].direction == Vec3{0.0f, 1.0f, 0.0f});
+    CHECK(sun.keys[1].direction[0] == Approx(std::sqrt(0.5)));
+    CHECK(sun.keys[1].direction[1] == Approx(std::sqrt(0.5)));
+    // Clamped before the first and after the last key.
+    CHECK(lightAt(sun, 0.0).direction == sun.keys[0].direction);
+    CHECK(lightAt(sun, 9.0).direction == sun.keys[1].direction);
+    // Halfway: the normalised blend, 22.5 degrees from +y toward +x.
+    const Vec3 mid = lightAt(sun, 4.0).direction;
+    CHECK(mid[0] == Approx(std::sin(std::numbers::pi / 8.0)));
+    CHECK(mid[1] == Approx(std::cos(std::numbers::pi / 8.0)));
+    CHECK(mid[2] == Approx(0.0).margin(1e-7));
+    const LightDesc& bulb = s.lights[1];
+    REQUIRE(bulb.keys.size() == 2);
+    CHECK(lightAt(bulb, 1.0).position[0] == Approx(1.0));
+    CHECK(lightAt(bulb, 1.0).position[1] == Approx(3.0));
+    const std::vector<LightDesc> atThree = lightsAt(s, 3);
+    REQUIRE(atThree.size() == 2);
+    CHECK(atThree[1].position[0] == Approx(3.0));
+    // A light without keys is the same on every frame.
+    const Scene still = parseScene(kMinimal, "good.toml");
+    CHECK(still.lights[0].keys.empty());
+    CHECK(lightAt(still.lights[0], 5.0).direction == still.lights[0].direction);
+}
+
+TEST_CASE("Malformed light keyframes fail with one line naming the key", "[scene][file]") {
+    const std::string light = std::string(kMinimal) + "[[lights.keyframes]]\nframe = 3\n";
+    CHECK(contains(errorOf(light + "[[lights.keyframes]]\nframe = 3\n"),
+                   "bad.toml:6: lights[0].keyframes[1].frame: keyframes must be in increasing frame order"));
+    CHECK(contains(errorOf(light + "direction = [0, 0, 0]\n"),
+                   "bad.toml:6: lights[0].keyframes[0].direction: must not be zero"));
+    CHECK(
+        contains(errorOf(light + "radius = 2\n"), "bad.toml:6: lights[0].keyframes[0].radius: unknown key"));
+    CHECK(contains(
+        errorOf(light + "direction = [0, 1, 0]\n[[lights.keyframes]]\nframe = 4\ndirection = [0, -1, 0]\n"),
+        "bad.toml:9: lights[0].keyframes[1].direction: turns by nearly 180 degrees"));
+    CHECK(contains(errorOf(std::string(kMinimal) + "keyframes = 3\n"),
+                   "bad.toml:4: lights[0].keyframes: expected an array of tables"));
 }
 
 TEST_CASE("A missing model file is an error naming the key and the path", "[scene][file]") {

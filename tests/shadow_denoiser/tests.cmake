@@ -16,9 +16,12 @@ glint_add_test_suite(NAME shadow_denoiser LABELS gpu
     reference/shadow_denoiser_reference.cpp
   LIBS glint_gpu_test_support glint_gpu)
 
-# The denoiser on a simulated static scene (simulator: harness/scene).
+# The denoiser on simulated scenes (simulator: harness/scene): a static one converges, a moving
+# occluder and a moving light are followed.
 glint_add_test_suite(NAME shadow_denoiser_scene LABELS gpu
   SOURCES
     shadow_denoiser/convergence_test.cpp
+    shadow_denoiser/tracking_test.cpp
+    shadow_denoiser/penumbra_measure_test.cpp
     shadow_denoiser/shadow_runner.cpp
   LIBS glint_replay glint_scene glint_gpu_test_support glint_gpu)

@@ -1,0 +1,289 @@
+// A moving occluder and a moving light (issue 7): the history converges on the static
+// courtyard for 12 frames, then the ball jumps sideways or the sun turns, and everything holds
+// still again. The denoised shadow must follow the new reference within a stated number of
+// frames. The receivers do not move, so motion vectors never reset their history: only the
+// neighbourhood clamp (history clamped to the 17x17 mean +- 2 sigma of this frame's mask) and
+// the history-length damping in classification let it follow.
+//
+// The numbers of frames K asserted below are the measured ones with small margins, and they are
+// long (defect 12 of the reference, "tight clamp means lag", shows here as the opposite: the
+// 2-sigma clamp is too wide to bite at moved shadow edges, so the history follows at the pace
+// of its accumulation). A denoiser that follows faster passes these tests unchanged; tighten K
+// when it does.
+//
+// Measured per frame (160x90, lavapipe; `glint_tests_shadow_denoiser_scene "[.measure-tracking]"`
+// prints the table): "ghost" is the error over the pixels whose reference changed by more than
+// 0.5 with the move (the shadow left or arrived there), "switched" the fraction of those pixels
+// whose output is already nearer the new reference than the old one.
+#include "shadow_denoiser/shadow_runner.h"
+#include "support/gpu_test_context.h"
+
+#include "replay/replay_shadow.h"
+#include "replay/replay_sssr.h"
+#include "scene/scene_file.h"
+#include "scene/scene_simulate.h"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <numbers>
+#include <optional>
+#include <sstream>
+
+using namespace glint;
+
+namespace {
+
+// Frames 0 .. kLastStatic are static (the history converges); the motion runs from the key at
+// kLastStatic to the key at kLastStatic + moveFrames, then everything holds still. With a step
+// (moveFrames = 1), frame kMoveFrame is the first in the new pose.
+constexpr std::uint32_t kLastStatic = 11;
+constexpr std::uint32_t kMoveFrame = kLastStatic + 1;
+
+scene::Scene courtyard(std::uint32_t frames) {
+    scene::Scene scene = scene::loadScene(GLINT_SOURCE_DIR "/harness/scenes/courtyard_penumbra.toml");
+    scene.frameCount = frames;
+    scene.reference.shadows = true;
+    scene.reference.samplesPerPixel = 64;
+    return scene;
+}
+
+// The ball (radius 0.6) moves 0.6 units along +x: its shadow shifts by about 7 pixels.
+scene::Scene movingBall(std::uint32_t moveFrames, std::uint32_t frames) {
+    scene::Scene scene = courtyard(frames);
+    for (scene::ObjectDesc& ball : scene.objects) {
+        if (ball.name != "ball") continue;
+        scene::ObjectKey start = ball.keys.front(), end = start;
+        start.frame = static_cast<float>(kLastStatic);
+        end.frame = static_cast<float>(kLastStatic + moveFrames);
+        end.position[0] += 0.6f;
+        ball.keys = {start, end};
+        return scene;
+    }
+    FAIL("the courtyard has no object named 'ball'");
+    return scene;
+}
+
+// Turns a direction about the vertical axis.
+scene::Vec3 turned(const scene::Vec3& d, double degrees) {
+    const double a = degrees * std::numbers::pi / 180.0;
+    const double c = std::cos(a), s = std::sin(a);
+    return {static_cast<float>(c * static_cast<double>(d[0]) + s * static_cast<double>(d[2])), d[1],
+            static_cast<float>(-s * static_cast<double>(d[0]) + c * static_cast<double>(d[2]))};
+}
+
+// The sun (3 degree disc) turns 5 degrees about the vertical: the shadow edges of the walls, the
+// post and the ball sweep sideways by 1-3 pixels, the post's tip by more.
+scene::Scene turningSun(std::uint32_t moveFrames, std::uint32_t frames) {
+    scene::Scene scene = courtyard(frames);
+    scene::LightDesc& sun = scene.lights.at(scene.shadowLight);
+    scene::LightKey start{static_cast<float>(kLastStatic), sun.direction, sun.position};
+    scene::LightKey end = start;
+    end.frame = static_cast<float>(kLastStatic + moveFrames);
+    end.direction = turned(sun.direction, 5.0);
+    sun.keys = {start, end};
+    return scene;
+}
+
+// Mean absolute error of `value` (every `stride`-th float) against `reference` over the pixels
+// `select` accepts; -1 when it accepts none.
+template <typename Select>
+double meanError(const std::vector<float>& value, std::size_t stride, const std::vector<float>& reference,
+                 Select select) {
+    double sum = 0.0;
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < reference.size(); ++i) {
+        if (!select(i)) continue;
+        sum += std::abs(static_cast<double>(value[i * stride]) - static_cast<double>(reference[i]));
+        ++count;
+    }
+    return count == 0 ? -1.0 : sum / static_cast<double>(count);
+}
+
+struct FrameErrors {
+    double penumbra = 0.0;     // denoised, over this frame's penumbra (reference in (0.05, 0.95))
+    double ghost = -1.0;       // denoised, over the pixels whose reference changed since kLastStatic
+    double ghostAverage = -1.; // the plain running average of the input since frame 0, same pixels
+    double stale = -1.0;       // denoised against the reference of frame kLastStatic, same pixels
+    double settled = -1.0;     // frame kLastStatic's denoised output against its reference, same pixels
+    std::size_t changed = 0;   // pixels with |reference - reference before the move| > 0.5
+    double switched = 0.0;     // fraction of those where the output is nearer the new reference
+};
+
+// The scene with every keyframe `offset` frames earlier.
+scene::Scene shifted(scene::Scene scene, float offset) {
+    for (scene::CameraKey& k : scene.camera.keys) k.frame -= offset;
+    for (scene::ObjectDesc& o : scene.objects)
+        for (scene::ObjectKey& k : o.keys) k.frame -= offset;
+    for (scene::LightDesc& l : scene.lights)
+        for (scene::LightKey& k : l.keys) k.frame -= offset;
+    return scene;
+}
+
+// `scene` is static except for keys between kLastStatic and kLastStatic + moveFrames. The
+// noisy frames are simulated without references; the references are simulated once per pose
+// (the scene shifted so that kLastStatic is frame 0): the static frames share one, which
+// takes the simulation from over a second a frame to a fraction of that on lavapipe.
+std::vector<FrameErrors> track(const scene::Scene& scene, std::uint32_t moveFrames) {
+    scene::Scene noisy = scene;
+    noisy.reference.shadows = false;
+    const scene::Simulation sim = scene::simulate(test::testContext(), noisy);
+    REQUIRE(sim.frames.size() == scene.frameCount);
+    scene::Scene poses = shifted(scene, static_cast<float>(kLastStatic));
+    poses.frameCount = moveFrames + 1;
+    poses.reference.shadows = true;
+    const scene::Simulation referenceSim = scene::simulate(test::testContext(), poses);
+    std::vector<std::vector<float>> references;
+    for (const capture::Frame& frame : referenceSim.frames)
+        references.push_back(replay::layerChannels(frame, "reference.shadow", 1));
+    std::optional<test::ShadowRunner> runner;
+    std::vector<float> previousDepth, sum, before, settledOutput;
+    std::vector<FrameErrors> errors;
+    for (std::uint32_t index = 0; index < scene.frameCount; ++index) {
+        const capture::Frame& frame = sim.frames[index];
+        ShadowDenoiserDesc desc;
+        replay::shadowDescFromFrame(frame, index, index == 0, desc);
+        if (!runner) runner.emplace(desc);
+        const test::ShadowInputs inputs = replay::shadowInputsFromFrame(frame, previousDepth);
+        const test::ShadowOutputs outputs = runner->run(desc, inputs);
+        const std::vector<float>& reference =
+            references[std::min(index, kLastStatic + moveFrames) - std::min(index, kLastStatic)];
+        if (sum.empty()) sum.assign(inputs.visibility.size(), 0.0f);
+        for (std::size_t i = 0; i < sum.size(); ++i) sum[i] += inputs.visibility[i];
+        if (index == kLastStatic) {
+            before = reference;
+            settledOutput = outputs.filtered;
+        }
+
+        FrameErrors e;
+        e.penumbra = meanError(outputs.filtered, 2, reference,
+                               [&](std::size_t i) { return reference[i] > 0.05f && reference[i] < 0.95f; });
+        REQUIRE(e.penumbra >= 0.0);
+        if (index > kLastStatic) {
+            const auto changed = [&](std::size_t i) { return std::abs(reference[i] - before[i]) > 0.5f; };
+            for (std::size_t i = 0; i < reference.size(); ++i) e.changed += changed(i) ? 1u : 0u;
+            std::vector<float> average(sum.size());
+            for (std::size_t i = 0; i < sum.size(); ++i) average[i] = sum[i] / static_cast<float>(index + 1);
+            e.ghost = meanError(outputs.filtered, 2, reference, changed);
+            e.ghostAverage = meanError(average, 1, reference, changed);
+            e.stale = meanError(outputs.filtered, 2, before, changed);
+            e.settled = meanError(settledOutput, 2, before, changed);
+            std::size_t nearer = 0;
+            for (std::size_t i = 0; i < reference.size(); ++i)
+                if (changed(i) && std::abs(outputs.filtered[2 * i] - reference[i]) <
+                                      std::abs(outputs.filtered[2 * i] - before[i]))
+                    ++nearer;
+            e.switched =
+                static_cast<double>(nearer) / static_cast<double>(std::max<std::size_t>(e.changed, 1));
+        }
+        errors.push_back(e);
+        previousDepth = inputs.depth;
+    }
+    return errors;
+}
+
+std::string table(const std::vector<FrameErrors>& errors) {
+    std::ostringstream s;
+    s.precision(4);
+    s << "frame penumbra ghost ghost(plain average) stale settled changed switched\n";
+    for (std::size_t f = 0; f < errors.size(); ++f)
+        s << f << " " << errors[f].penumbra << " " << errors[f].ghost << " " << errors[f].ghostAverage << " "
+          << errors[f].stale << " " << errors[f].settled << " " << errors[f].changed << " "
+          << errors[f].switched << "\n";
+    return s.str();
+}
+
+// The first frame from which `holds` is true up to the last frame (errors.size() if none).
+template <typename Holds> std::size_t holdsFrom(const std::vector<FrameErrors>& errors, Holds holds) {
+    std::size_t first = errors.size();
+    for (std::size_t f = errors.size(); f-- > kMoveFrame && holds(errors[f]);) first = f;
+    return first;
+}
+
+// GLINT_TRACK_MOVE: frames the motion takes (1 = a step); GLINT_TRACK_HOLD: frames after it.
+std::uint32_t environmentCount(const char* name, std::uint32_t fallback) {
+    const char* value = std::getenv(name);
+    return value ? static_cast<std::uint32_t>(std::strtoul(value, nullptr, 10)) : fallback;
+}
+
+} // namespace
+
+// A step of 0.6 units, then 47 still frames. Measured (frame: ghost / plain average / switched):
+//   11 (before the move): these pixels' error 0.022, whole-penumbra error 0.090
+//   12: 0.477 / 0.841 / 0.47    17: 0.321 / 0.606 / 0.55    22: 0.242 / 0.475 / 0.82
+//   23: 0.230 / 0.455 / 0.96    31: 0.167 / 0.341 / 1       41: 0.124 / 0.258 / 1
+//   50: 0.1003 / 0.212 / 1      51: 0.0990 / 0.208 / 1      59: 0.085 / 0.180 / 1
+// 205 pixels changed. The ghost decays by about 6 % a frame (an effective history of ~16
+// frames): at the edges of the moved shadow the 17x17 neighbourhood holds both lit and shadowed
+// pixels, sigma is near 0.5 and the 2-sigma clamp spans all of [0, 1], so only the pixels deep
+// inside the old or new shadow are clamped at once. K = 11 frames to switch, 39 to get the
+// ghost under 0.1 (the whole-penumbra error of the static frames before the move).
+TEST_CASE("moving occluder: the moved penumbra is followed within a stated number of frames", "[tracking]") {
+    const std::vector<FrameErrors> errors = track(movingBall(1, kMoveFrame + 48), 1);
+    INFO(table(errors));
+    const FrameErrors& moved = errors[kMoveFrame];
+    // The pixels the move changed cover both crescents of the ball's shadow, and the history
+    // had converged there before the move: a ghost is the move's, not a slow start's.
+    REQUIRE(moved.changed > 150u);
+    CHECK(moved.settled < 0.05);
+    // Lag: 90 % of the changed pixels nearer the new reference than the old one, from then on.
+    // Measured 11 frames after the move; 3 frames of margin.
+    const std::size_t switched = holdsFrom(errors, [](const FrameErrors& e) { return e.switched >= 0.9; });
+    CHECK(switched - kMoveFrame <= 14u);
+    // Recovery: the ghost under 0.1 and staying there. Measured 39 frames; 4 of margin.
+    const std::size_t recovered = holdsFrom(errors, [](const FrameErrors& e) { return e.ghost < 0.1; });
+    CHECK(recovered - kMoveFrame <= 43u);
+    // The plain running average of the input over all frames (an independent baseline that
+    // never forgets) ghosts about twice as much on every frame: measured ratio 0.57 on the move
+    // frame, 0.47-0.55 after. At the last frame it is still far from recovered (0.180).
+    for (std::size_t f = kMoveFrame; f < errors.size(); ++f) {
+        INFO("frame " << f);
+        CHECK(errors[f].ghost < 0.65 * errors[f].ghostAverage);
+    }
+    CHECK(errors.back().ghostAverage > 0.15);
+    GLINT_REQUIRE_NO_VALIDATION_ERRORS();
+}
+
+// A 5 degree turn in one step, then 47 still frames. Measured (frame: ghost / plain average /
+// switched):
+//   11 (before the move): these pixels' error 0.074, whole-penumbra error 0.090
+//   12: 0.597 / 0.599 / 0       17: 0.407 / 0.426 / 0.11    22: 0.316 / 0.338 / 0.46
+//   28: 0.249 / 0.272 / 0.85    29: 0.240 / 0.262 / 0.92    41: 0.165 / 0.188 / 1
+//   43: 0.155 / 0.177 / 1       44: 0.1495 / 0.172 / 1      59: 0.110 / 0.130 / 1
+// 61 pixels changed: the shadow edges moved by one to three pixels, well inside the 17x17
+// neighbourhood, whose mean and sigma hardly change, so the clamp never bites and the damping
+// hardly shortens the history: the denoiser follows barely faster than the plain average of
+// every frame. K = 17 frames to switch, 32 to get the ghost under 0.15 (twice these pixels'
+// error before the move).
+TEST_CASE("moving light: the turned penumbra is followed within a stated number of frames", "[tracking]") {
+    const std::vector<FrameErrors> errors = track(turningSun(1, kMoveFrame + 48), 1);
+    INFO(table(errors));
+    const FrameErrors& moved = errors[kMoveFrame];
+    REQUIRE(moved.changed > 40u);
+    CHECK(moved.settled < 0.1);
+    // Lag: measured 17 frames; 3 of margin.
+    const std::size_t switched = holdsFrom(errors, [](const FrameErrors& e) { return e.switched >= 0.9; });
+    CHECK(switched - kMoveFrame <= 20u);
+    // Recovery: the ghost under 0.15 and staying there. Measured 32 frames; 4 of margin.
+    const std::size_t recovered = holdsFrom(errors, [](const FrameErrors& e) { return e.ghost < 0.15; });
+    CHECK(recovered - kMoveFrame <= 36u);
+    // Against the plain running average: measured ratio 0.998 on the move frame, 0.94 or less
+    // from 8 frames after it, 0.85 at the end. Only that small margin is asserted.
+    for (std::size_t f = kMoveFrame + 8; f < errors.size(); ++f) {
+        INFO("frame " << f);
+        CHECK(errors[f].ghost < 0.96 * errors[f].ghostAverage);
+    }
+    GLINT_REQUIRE_NO_VALIDATION_ERRORS();
+}
+
+// Prints the per-frame table, e.g. for a motion over 4 frames held for 30:
+//   GLINT_TRACK_MOVE=4 GLINT_TRACK_HOLD=30 glint_tests_shadow_denoiser_scene "[.measure-tracking]"
+TEST_CASE("tracking: per-frame errors of a moving occluder and a moving light", "[.measure-tracking]") {
+    const std::uint32_t moveFrames = std::max(environmentCount("GLINT_TRACK_MOVE", 1), 1u);
+    const std::uint32_t frames = kLastStatic + moveFrames + environmentCount("GLINT_TRACK_HOLD", 40) + 1;
+    WARN("moving occluder\n" << table(track(movingBall(moveFrames, frames), moveFrames)));
+    WARN("moving light\n" << table(track(turningSun(moveFrames, frames), moveFrames)));
+    GLINT_REQUIRE_NO_VALIDATION_ERRORS();
+}
