@@ -59,12 +59,15 @@ int runBenchSssr(const BenchOptions& options, const gpu::Context& context) {
     SssrDesc desc;
     gpu::SssrFrameInputs inputs;
     replay::sssrFromFrame(simulation.frames.at(0), simulation.environment.value(), desc, inputs);
-    replay::copySssrTunables(replay::parseSettings(options.settings).sssr, desc);
+    const replay::EffectSettings settings = replay::parseSettings(options.settings);
+    replay::copySssrTunables(settings.sssr, desc);
+    desc.storeRays = replay::needsSssrRays(settings);
     if (desc.materialChannel != 0)
         throw std::invalid_argument("bench: roughness must come from material channel 0");
     gpu::SssrRunner runner(context, desc, /*compactInputs=*/true);
     runner.upload(inputs);
-    const std::vector<std::string> passes = runner.passNames(desc, desc.denoise);
+    const std::vector<std::string> passes =
+        runner.passNames(desc, desc.denoise, settings.denoiser.spatialPath);
     // With denoise: a static camera, so last frame's view-projection is this frame's.
     ReflectionsDenoiserDesc denoiser;
     denoiser.size = desc.size;
@@ -80,6 +83,7 @@ int runBenchSssr(const BenchOptions& options, const gpu::Context& context) {
     denoiser.mirrorThreshold = desc.mirrorThreshold;
     denoiser.halfPrecisionStorage = desc.halfPrecisionStorage;
     denoiser.previousClipFromWorld = core::multiply(desc.projection, desc.viewFromWorld);
+    replay::copyDenoiserTunables(settings.denoiser, denoiser);
     std::vector<std::vector<double>> times(passes.size());
     for (std::uint32_t run = 0; run < std::min(options.runs, 10u) + options.runs; ++run) {
         desc.frameIndex = run;

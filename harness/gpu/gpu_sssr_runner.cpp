@@ -103,14 +103,22 @@ void SssrRunner::upload(const SssrFrameInputs& inputs) {
     }
 }
 
-std::vector<std::string> SssrRunner::passNames(const SssrDesc& frame, bool denoised) const {
+std::vector<std::string> SssrRunner::passNames(const SssrDesc& frame, bool denoised,
+                                               SpatialPath spatialPath) const {
     EffectPlan plan;
     std::vector<std::string> names;
     if (planSssr(frame, plan, nullptr) == Result::Ok)
         for (const Pass& pass : plan.passes) names.push_back(pass.name);
     if (denoised) { // dispatched between the intersection and the composite (vk_sssr.cpp)
+        ReflectionsDenoiserDesc denoiser;
+        denoiser.size = frame.size;
+        denoiser.spatialPath = spatialPath;
+        EffectPlan denoiserPlan;
+        std::vector<std::string> denoiserNames;
+        if (planReflectionsDenoiser(denoiser, denoiserPlan, nullptr) == Result::Ok)
+            for (const Pass& pass : denoiserPlan.passes) denoiserNames.push_back(pass.name);
         const auto composite = std::find(names.begin(), names.end(), "composite");
-        names.insert(composite, {"reproject", "prefilter", "resolve"});
+        names.insert(composite, denoiserNames.begin(), denoiserNames.end());
     }
     return names;
 }
@@ -131,7 +139,9 @@ void SssrRunner::run(const SssrDesc& frame, std::vector<double>* timings,
     inputs.motion = &images_[kMotion];
     inputs.baseColorMetallic = &images_[kBaseColor];
     inputs.environment = &images_[kEnvironment];
-    const std::size_t passCount = passNames(frame, denoiser != nullptr).size();
+    const std::size_t passCount =
+        passNames(frame, denoiser != nullptr, denoiser ? denoiser->spatialPath : SpatialPath::Prefilter)
+            .size();
     const bool timed = timings != nullptr && context_.device.timestamps;
     TimestampPool pool;
     if (timed) pool = createTimestampPool(context_.device, static_cast<std::uint32_t>(2 * passCount));
@@ -177,6 +187,7 @@ SssrFrameOutputs SssrRunner::readback() const {
     out.roughness = readbackImage(context_, images.at("sssr_roughness"));
     out.blueNoise = readbackImage(context_, images.at("sssr_blue_noise"));
     if (images.contains("sssr_ray_info")) out.rayInfo = readbackImage(context_, images.at("sssr_ray_info"));
+    if (images.contains("sssr_rays")) out.rays = readbackImage(context_, images.at("sssr_rays"));
     if (images.contains("composite")) out.composite = readbackImage(context_, images.at("composite"));
     const std::vector<std::uint32_t> counters = readWords(context_, buffers.at("sssr_counters"), 4);
     const std::vector<std::uint32_t> arguments = readWords(context_, buffers.at("sssr_indirect_args"), 6);

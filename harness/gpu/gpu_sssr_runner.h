@@ -32,6 +32,7 @@ struct SssrFrameOutputs {
     std::vector<float> confidence;       // R
     std::vector<float> roughness;        // R, GGX alpha
     std::vector<float> rayInfo;          // RGBA, debugOutput only
+    std::vector<float> rays;             // RGBA: direction, pdf; storeRays only
     std::vector<float> composite;        // RGBA, composite only
     std::vector<float> blueNoise;        // RG 128 x 128
     std::vector<std::uint32_t> rayList;  // counters[1] entries
@@ -62,7 +63,9 @@ class SssrRunner {
     SssrFrameOutputs readback() const;
     // The four counters alone (rays, tiles...), cheap enough to read between timed frames.
     std::array<std::uint32_t, 4> counters() const;
-    std::vector<std::string> passNames(const SssrDesc& frame, bool denoised = false) const;
+    // With `denoised`, the denoiser's passes for `spatialPath` follow the intersection.
+    std::vector<std::string> passNames(const SssrDesc& frame, bool denoised = false,
+                                       SpatialPath spatialPath = SpatialPath::Prefilter) const;
     // An owned image by name (e.g. "rd_radiance0"), for tests that poison histories.
     const vk::Image& ownedImage(const std::string& name) const;
 

@@ -177,6 +177,7 @@ struct Session::Reflections {
         sssrFromFrame(frame, environment, desc, inputs ? *inputs : scratch);
         copySssrTunables(tunables, desc);
         desc.mirrorThreshold = tunables.mirrorThreshold;
+        desc.storeRays = desc.denoise && denoiserTunables.spatialPath == SpatialPath::RatioEstimator;
         return desc;
     }
 
@@ -186,7 +187,8 @@ struct Session::Reflections {
 
     void dispatch(const SssrDesc& desc, const std::optional<ReflectionsDenoiserDesc>& denoiser,
                   FrameResult& result) {
-        const std::vector<std::string> passes = runner->passNames(desc, desc.denoise);
+        const std::vector<std::string> passes =
+            runner->passNames(desc, desc.denoise, denoiser ? denoiser->spatialPath : SpatialPath::Prefilter);
         const std::size_t intersect =
             static_cast<std::size_t>(std::find(passes.begin(), passes.end(), "intersect") - passes.begin());
         vk::PassHooks hooks;
@@ -224,8 +226,7 @@ struct Session::Reflections {
         std::optional<ReflectionsDenoiserDesc> denoiser;
         if (desc.denoise) {
             denoiser = denoiserFromFrame(frame, desc, index, reset);
-            denoiser->historyClipScale = denoiserTunables.historyClipScale;
-            denoiser->maxHistoryLength = denoiserTunables.maxHistoryLength;
+            copyDenoiserTunables(denoiserTunables, *denoiser);
         }
         last = desc;
         lastDenoiser = denoiser;
@@ -237,9 +238,12 @@ struct Session::Reflections {
             result.images.push_back({"reflections/" + name, "reflections/" + pass, std::move(image)});
         };
         add("input", "input", *layerImage(frame, "color", 3));
+        // The denoiser pass that writes the output last.
+        const char* denoisedBy =
+            denoiser && denoiser->spatialPath == SpatialPath::RatioEstimator ? "cleanup" : "resolve";
         if (noisy) {
             add("noisy", "intersect", channelsOf(w, h, gpu::readbackImage(context, noisy->image), 4, 3));
-            add("denoised", "resolve", channelsOf(w, h, out.radiance, 4, 3));
+            add("denoised", denoisedBy, channelsOf(w, h, out.radiance, 4, 3));
         } else {
             add("noisy", "intersect", channelsOf(w, h, out.radiance, 4, 3));
         }
@@ -249,7 +253,7 @@ struct Session::Reflections {
             add("reference", "input", *reference);
         if (!options.intermediates) return;
 
-        add("hit_distance", noisy ? "resolve" : "intersect", channelsOf(w, h, out.radiance, 4, 1, 3));
+        add("hit_distance", noisy ? denoisedBy : "intersect", channelsOf(w, h, out.radiance, 4, 1, 3));
         add("roughness", "classify", makeImage(w, h, 1, out.roughness));
         std::vector<float> rays(std::size_t{w} * h, 0.0f), tiles(std::size_t{w} * h, 0.0f);
         for (std::uint32_t entry : out.rayList) {

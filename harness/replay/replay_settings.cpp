@@ -28,6 +28,12 @@ std::uint32_t parseUint(const std::string& name, const std::string& value) {
     return static_cast<std::uint32_t>(parsed);
 }
 
+SpatialPath parseSpatialPath(const std::string& name, const std::string& value) {
+    if (value == "prefilter") return SpatialPath::Prefilter;
+    if (value == "ratio" || value == "ratioEstimator") return SpatialPath::RatioEstimator;
+    throw std::invalid_argument("--set denoiser." + name + " needs prefilter or ratio, got '" + value + "'");
+}
+
 bool applySssr(SssrDesc& desc, const std::string& name, const std::string& value) {
     if (name == "samplesPerQuad")
         desc.samplesPerQuad = parseUint(name, value);
@@ -89,6 +95,12 @@ bool applyDenoiser(ReflectionsDenoiserDesc& desc, const std::string& name, const
         desc.historyClipScale = parseFloat(name, value);
     else if (name == "maxHistoryLength")
         desc.maxHistoryLength = parseUint(name, value);
+    else if (name == "spatialPath")
+        desc.spatialPath = parseSpatialPath(name, value);
+    else if (name == "reconstructionRadius")
+        desc.reconstructionRadius = parseFloat(name, value);
+    else if (name == "cleanupSigma")
+        desc.cleanupSigma = parseFloat(name, value);
     else
         return false;
     return true;
@@ -119,8 +131,10 @@ void applySetting(EffectSettings& settings, const std::string& assignment) {
             "' (samplesPerQuad, maxTraversalIterations, mostDetailedMip, roughnessThreshold, "
             "occupancyExitFraction, importanceSampleBias, thickness, thicknessAware, halfResolution, "
             "previousFrameColor, halfPrecisionStorage, denoise, debugOutput, composite, varianceGuided, "
-            "varianceThreshold, denoiser.historyClipScale, "
-            "denoiser.maxHistoryLength, shadows.filter, shadows.classify, shadows.skipClearedTiles, "
+            "varianceThreshold, denoiser.historyClipScale, denoiser.maxHistoryLength, denoiser.spatialPath, "
+            "denoiser.reconstructionRadius, denoiser.cleanupSigma, shadows.filter, shadows.classify, "
+            "shadows.skipClearedTiles, "
+            "shadows.fusedFilter, "
             "shadows.depthSigma, shadows.normalPower)");
     settings.assignments.push_back(assignment);
 }
@@ -148,6 +162,18 @@ void copySssrTunables(const SssrDesc& from, SssrDesc& to) {
     to.composite = from.composite;
     to.varianceGuided = from.varianceGuided;
     to.varianceThreshold = from.varianceThreshold;
+}
+
+void copyDenoiserTunables(const ReflectionsDenoiserDesc& from, ReflectionsDenoiserDesc& to) {
+    to.historyClipScale = from.historyClipScale;
+    to.maxHistoryLength = from.maxHistoryLength;
+    to.spatialPath = from.spatialPath;
+    to.reconstructionRadius = from.reconstructionRadius;
+    to.cleanupSigma = from.cleanupSigma;
+}
+
+bool needsSssrRays(const EffectSettings& settings) {
+    return settings.sssr.denoise && settings.denoiser.spatialPath == SpatialPath::RatioEstimator;
 }
 
 } // namespace glint::replay

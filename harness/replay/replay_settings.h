@@ -5,7 +5,9 @@
 //                halfResolution, previousFrameColor, halfPrecisionStorage, denoise, debugOutput,
 //                composite, varianceGuided, varianceThreshold
 //                (also accepted with a "reflections." prefix)
-//   reflections denoiser: denoiser.historyClipScale, denoiser.maxHistoryLength
+//   reflections denoiser: denoiser.historyClipScale, denoiser.maxHistoryLength,
+//                         denoiser.spatialPath (prefilter | ratio), denoiser.reconstructionRadius,
+//                         denoiser.cleanupSigma
 //   shadows: shadows.filter, shadows.classify, shadows.skipClearedTiles, shadows.depthSigma,
 //            shadows.normalPower
 #pragma once
@@ -21,7 +23,7 @@ namespace glint::replay {
 
 struct EffectSettings {
     SssrDesc sssr;                        // only the tunables are read from it
-    ReflectionsDenoiserDesc denoiser;     // historyClipScale, maxHistoryLength
+    ReflectionsDenoiserDesc denoiser;     // the tunables copyDenoiserTunables copies
     ShadowDenoiserDesc shadows;           // filter, classify, skipClearedTiles, depthSigma, normalPower
     std::vector<std::string> assignments; // as given, for reports
 };
@@ -33,5 +35,12 @@ EffectSettings parseSettings(const std::vector<std::string>& assignments);
 
 // Copies the tunables (not the camera, size or decoding) of `from` onto `to`.
 void copySssrTunables(const SssrDesc& from, SssrDesc& to);
+
+// Copies the denoiser's tunables (history clip scale and length, spatial path, reconstruction
+// radius, cleanup sigma) of `from` onto `to`.
+void copyDenoiserTunables(const ReflectionsDenoiserDesc& from, ReflectionsDenoiserDesc& to);
+
+// Whether SSSR must store its rays (SssrDesc::storeRays) for the denoiser these settings ask for.
+bool needsSssrRays(const EffectSettings& settings);
 
 } // namespace glint::replay

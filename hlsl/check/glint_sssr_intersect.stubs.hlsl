@@ -1,5 +1,5 @@
 // Stub callbacks for the header check of glint_sssr_intersect.hlsli (no permutation defines;
-// the entry's permutations compile the thickness-aware and debug variants).
+// the entry's permutations compile the thickness-aware, debug and stored-ray variants).
 cbuffer g_glint_check_constants { GLINT_SssrConstants g_glint_sssr; };
 RWStructuredBuffer<float4> g_glint_check;
 RWStructuredBuffer<uint> g_glint_check_words;

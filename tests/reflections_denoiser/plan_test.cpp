@@ -1,6 +1,7 @@
 // The reflections denoiser's plan without a GPU: passes, indirect dispatch over SSSR's tile
 // list, history parity, validation messages.
 #include "glint/glint_reflections_denoiser.h"
+#include "glint/glint_sssr.h"
 
 #include <catch2/catch.hpp>
 
@@ -78,6 +79,13 @@ TEST_CASE("invalid denoiser descs are refused with a message naming the field", 
              d.previousClipFromWorld[0] = std::numeric_limits<double>::infinity();
          }},
         {"projection", [](ReflectionsDenoiserDesc& d) { d.projection.fill(0.0); }},
+        {"reconstructionRadius", [](ReflectionsDenoiserDesc& d) { d.reconstructionRadius = 9.0f; }},
+        {"reconstructionRadius",
+         [](ReflectionsDenoiserDesc& d) {
+             d.reconstructionRadius = std::numeric_limits<float>::quiet_NaN();
+         }},
+        {"cleanupSigma", [](ReflectionsDenoiserDesc& d) { d.cleanupSigma = 0.0f; }},
+        {"spatialPath", [](ReflectionsDenoiserDesc& d) { d.spatialPath = static_cast<SpatialPath>(7); }},
     };
     for (const Case& c : cases) {
         ReflectionsDenoiserDesc desc = validDesc();
@@ -88,4 +96,77 @@ TEST_CASE("invalid denoiser descs are refused with a message naming the field", 
         INFO(error);
         CHECK(error.find(c.field) != std::string::npos);
     }
+}
+
+TEST_CASE("the ratio-estimator path: reconstruct instead of prefilter, cleanup after resolve, SSSR's rays in",
+          "[reflections_denoiser]") {
+    for (std::uint32_t frame : {0u, 1u}) {
+        INFO("frame " << frame);
+        ReflectionsDenoiserDesc desc = validDesc();
+        desc.frameIndex = frame;
+        desc.spatialPath = SpatialPath::RatioEstimator;
+        EffectPlan plan;
+        REQUIRE(planReflectionsDenoiser(desc, plan, nullptr) == Result::Ok);
+        REQUIRE(plan.passes.size() == 4);
+        CHECK(plan.passes[0].name == "reproject");
+        CHECK(plan.passes[1].name == "reconstruct");
+        CHECK(plan.passes[2].name == "resolve");
+        CHECK(plan.passes[3].name == "cleanup");
+        const std::string now = frame % 2 ? "1" : "0";
+        CHECK(uses(plan.passes[1], "g_glint_rays", "sssr_rays"));
+        CHECK(uses(plan.passes[1], "g_glint_clamped", "rd_clamped"));
+        CHECK(uses(plan.passes[1], "g_glint_variance", "rd_variance" + now));
+        CHECK(uses(plan.passes[1], "g_glint_reconstructed", "rd_prefiltered"));
+        CHECK(uses(plan.passes[2], "g_glint_prefiltered", "rd_prefiltered"));
+        CHECK(uses(plan.passes[3], "g_glint_resolved", "rd_radiance" + now));
+        CHECK(uses(plan.passes[3], "g_glint_output", "sssr_radiance"));
+        for (const Pass& pass : plan.passes) {
+            const auto& indirect = std::get<IndirectDispatch>(pass.dispatch);
+            CHECK(indirect.offset == 12);
+        }
+        // The ratio passes carry the larger constants (common + rotation + path parameters).
+        CHECK(plan.passes[1].constants.size() == 272);
+        CHECK(plan.passes[0].constants.size() == 208);
+        // No resource beyond the default path's: the reconstruction reuses the prefilter's image.
+        EffectPlan defaults;
+        desc.spatialPath = SpatialPath::Prefilter;
+        REQUIRE(planReflectionsDenoiser(desc, defaults, nullptr) == Result::Ok);
+        CHECK(defaults.images.size() == plan.images.size());
+        CHECK(defaults.buffers.size() == plan.buffers.size());
+    }
+    ReflectionsDenoiserDesc half = validDesc();
+    half.spatialPath = SpatialPath::RatioEstimator;
+    half.halfPrecisionStorage = true;
+    EffectPlan plan;
+    REQUIRE(planReflectionsDenoiser(half, plan, nullptr) == Result::Ok);
+    CHECK(plan.passes[1].pipeline == "rd_reconstruct.half");
+    CHECK(plan.passes[3].pipeline == "rd_cleanup.half");
+}
+
+TEST_CASE("SSSR stores its rays only when asked, in a permutation of the intersection",
+          "[reflections_denoiser]") {
+    SssrDesc desc;
+    desc.size = {64, 32};
+    EffectPlan plan;
+    REQUIRE(planSssr(desc, plan, nullptr) == Result::Ok);
+    auto intersect = [](const EffectPlan& p) {
+        for (const Pass& pass : p.passes)
+            if (pass.name == "intersect") return pass;
+        return Pass{};
+    };
+    CHECK(intersect(plan).pipeline == "sssr_intersect");
+    for (const ImageDesc& image : plan.images) CHECK(image.name != "sssr_rays");
+    desc.storeRays = true;
+    desc.halfPrecisionStorage = true;
+    REQUIRE(planSssr(desc, plan, nullptr) == Result::Ok);
+    CHECK(intersect(plan).pipeline == "sssr_intersect.ray_half");
+    CHECK(uses(intersect(plan), "g_glint_rays", "sssr_rays"));
+    bool found = false;
+    for (const ImageDesc& image : plan.images)
+        if (image.name == "sssr_rays") found = image.format == Format::RGBA16Float;
+    CHECK(found);
+    desc.thicknessAware = true;
+    desc.debugOutput = true;
+    REQUIRE(planSssr(desc, plan, nullptr) == Result::Ok);
+    CHECK(intersect(plan).pipeline == "sssr_intersect.thick_debug_ray_half");
 }

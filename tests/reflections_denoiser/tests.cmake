@@ -6,7 +6,10 @@ glint_add_test_suite(NAME reflections_denoiser LABELS gpu
     reflections_denoiser/ghosting_test.cpp
     reflections_denoiser/denoiser_scene.cpp
     reflections_denoiser/reference_test.cpp
+    reflections_denoiser/ratio_test.cpp
+    reflections_denoiser/ratio_scene_test.cpp
     reference/reflections_denoiser_reference.cpp
+    reference/reflections_denoiser_ratio_reference.cpp
   LIBS glint_replay glint_scene glint_gpu_test_support glint_gpu)
 
 glint_add_test_suite(NAME reflections_denoiser_unit LABELS unit

@@ -4,7 +4,8 @@
 // integration example for glint/sssr/glint_sssr_intersect.hlsli.
 //
 // Permutations: GLINT_SSSR_THICKNESS_AWARE=1 (RG32F closest+farthest pyramid),
-// GLINT_SSSR_DEBUG_OUTPUT=1 (per-ray class and iteration count).
+// GLINT_SSSR_DEBUG_OUTPUT=1 (per-ray class and iteration count), GLINT_SSSR_STORE_RAY=1 (the
+// sampled direction and pdf, for the denoiser's ratio-estimator path).
 #include "entry/common/glint_entry_common.hlsli"
 #include "glint/sssr/glint_sssr_constants.h"
 #include "glint/sssr/glint_sssr_intersect.hlsli"
@@ -40,6 +41,16 @@
 #if GLINT_SSSR_DEBUG_OUTPUT
 [[vk::binding(14, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_ray_info;
 void GLINT_SSSR_StoreRayInfo(int2 pixel, float4 info) { g_glint_ray_info[pixel] = info; }
+#endif
+#if GLINT_SSSR_STORE_RAY
+#if GLINT_SSSR_HALF_STORAGE
+[[vk::binding(15, 0)]] GLINT_IMAGE_FORMAT(rgba16f) RWTexture2D<float4> g_glint_rays;
+// The pdf of a near-mirror sample exceeds the fp16 range: clamped before narrowing.
+void GLINT_SSSR_StoreRay(int2 pixel, float4 ray) { g_glint_rays[pixel] = float4(ray.xyz, min(ray.w, 65504.0)); }
+#else
+[[vk::binding(15, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_rays;
+void GLINT_SSSR_StoreRay(int2 pixel, float4 ray) { g_glint_rays[pixel] = ray; }
+#endif
 #endif
 
 // Level 0 is the input depth itself: the pyramid is built without its level-0 copy. Both

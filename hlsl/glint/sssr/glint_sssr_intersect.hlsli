@@ -24,6 +24,10 @@
 //   void   GLINT_SSSR_StoreConfidence(int2 pixel, float confidence);
 //   void   GLINT_SSSR_StoreRayInfo(int2 pixel, float4 info);   (GLINT_SSSR_DEBUG_OUTPUT=1 only)
 //       (hit x, hit y in pixels, GLINT_SSSR_RAY_* class, iterations)
+//   void   GLINT_SSSR_StoreRay(int2 pixel, float4 directionAndPdf);   (GLINT_SSSR_STORE_RAY=1 only)
+//       the sampled direction (world, unit) and its density per steradian (bias-free VNDF pdf,
+//       finite, > 0), written to the pixel and to its copies like the radiance; read by the
+//       reflections denoiser's ratio-estimator path
 //
 // Dispatch: [numthreads(64, 1, 1)], indirect from the arguments pass: (min(g, 1024), ceil(g / 1024), 1)
 // groups for g = ceil(rays / 64); ray index = (group.y * 1024 + group.x) * 64 + thread.
@@ -41,6 +45,9 @@
 #endif
 #ifndef GLINT_SSSR_DEBUG_OUTPUT
 #define GLINT_SSSR_DEBUG_OUTPUT 0
+#endif
+#ifndef GLINT_SSSR_STORE_RAY
+#define GLINT_SSSR_STORE_RAY 0
 #endif
 #define GLINT_SSSR_OCCUPANCY_INTERVAL 8u
 #define GLINT_SSSR_BIG 3.0e38
@@ -62,6 +69,9 @@ void GLINT_SSSR_StoreRadiance(int2 pixel, float4 radianceAndHitDistance);
 void GLINT_SSSR_StoreConfidence(int2 pixel, float confidence);
 #if GLINT_SSSR_DEBUG_OUTPUT
 void GLINT_SSSR_StoreRayInfo(int2 pixel, float4 info);
+#endif
+#if GLINT_SSSR_STORE_RAY
+void GLINT_SSSR_StoreRay(int2 pixel, float4 directionAndPdf);
 #endif
 
 // Live-ray counters, three so that one barrier per interval suffices: slot i is counted in
@@ -451,20 +461,37 @@ void GLINT_SSSR_Intersect(GLINT_SssrConstants c, uint groupIndex, uint rayIndex)
 
     GLINT_SSSR_StoreRadiance(ipixel, result);
     GLINT_SSSR_StoreConfidence(ipixel, confidence);
+#if GLINT_SSSR_STORE_RAY
+    // The sample's own density (the one the environment LOD uses), bias-free even with the
+    // importance-sample bias (reference: the ratio estimator stays deliberately biased). A copy
+    // carries its donor's ray: the copied radiance is that ray's sample.
+    float pdf = GLINT_GGX_ReflectionPdf(NdotV, NdotH, alpha);
+    float4 sampledRay = float4(worldDirection, clamp(GLINT_FiniteOr(pdf, 3.0e38), 1e-30, 3.0e38));
+    GLINT_SSSR_StoreRay(ipixel, sampledRay);
+#endif
     if ((entry & GLINT_SSSR_RAY_COPY_H) != 0)
     {
         GLINT_SSSR_StoreRadiance(int2(pixel ^ uint2(1, 0)), result);
         GLINT_SSSR_StoreConfidence(int2(pixel ^ uint2(1, 0)), confidence);
+#if GLINT_SSSR_STORE_RAY
+        GLINT_SSSR_StoreRay(int2(pixel ^ uint2(1, 0)), sampledRay);
+#endif
     }
     if ((entry & GLINT_SSSR_RAY_COPY_V) != 0)
     {
         GLINT_SSSR_StoreRadiance(int2(pixel ^ uint2(0, 1)), result);
         GLINT_SSSR_StoreConfidence(int2(pixel ^ uint2(0, 1)), confidence);
+#if GLINT_SSSR_STORE_RAY
+        GLINT_SSSR_StoreRay(int2(pixel ^ uint2(0, 1)), sampledRay);
+#endif
     }
     if ((entry & GLINT_SSSR_RAY_COPY_D) != 0)
     {
         GLINT_SSSR_StoreRadiance(int2(pixel ^ uint2(1, 1)), result);
         GLINT_SSSR_StoreConfidence(int2(pixel ^ uint2(1, 1)), confidence);
+#if GLINT_SSSR_STORE_RAY
+        GLINT_SSSR_StoreRay(int2(pixel ^ uint2(1, 1)), sampledRay);
+#endif
     }
 #if GLINT_SSSR_DEBUG_OUTPUT
     GLINT_SSSR_StoreRayInfo(ipixel, float4(hit.xy, float(state.rayClass), float(state.iterations)));

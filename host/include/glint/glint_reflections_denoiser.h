@@ -7,6 +7,11 @@
 // listed are processed, indirectly from SSSR's arguments at byte offset 12. The result is
 // written over "sssr_radiance" in place, so the effect's output is defined everywhere:
 // unlisted tiles keep classification's environment or 0.
+//
+// Optional spatial path (spatialPath = RatioEstimator): reproject, then a ratio-estimator
+// reconstruction from the neighbours' rays (Frostbite / DiligentFX) instead of the prefilter,
+// the same resolve, then a small bilateral cleanup of the output. It needs SSSR's rays
+// (SssrDesc::storeRays, "sssr_rays").
 #pragma once
 
 #include "glint/glint_depth_pyramid.h"
@@ -17,6 +22,12 @@
 #include <string>
 
 namespace glint {
+
+// The spatial filter between reproject and resolve.
+enum class SpatialPath : std::uint8_t {
+    Prefilter,      // edge-aware, variance-guided 15-tap filter of the samples (FidelityFX)
+    RatioEstimator, // BRDF/pdf-weighted reuse of the neighbours' rays, plus a bilateral cleanup
+};
 
 struct ReflectionsDenoiserDesc {
     Extent2D size; // 1..16384 each
@@ -39,6 +50,12 @@ struct ReflectionsDenoiserDesc {
     bool halfPrecisionStorage = false; // 16-bit radiance, variance and length; must match SSSR's
     bool resetHistory = false;         // first frame, camera cut or resize: every history is ignored
     std::uint32_t frameIndex = 0;      // histories ping-pong on its parity
+    SpatialPath spatialPath = SpatialPath::Prefilter;
+    // RatioEstimator only: the reconstruction's disk radius at perceptual roughness >= 0.2, in
+    // pixels (1..8; smoother roughness scales it by 5 r), and the cleanup's spatial sigma in
+    // pixels ((0, 2]; 0.9 gives a 3x3 footprint).
+    float reconstructionRadius = 4.0f;
+    float cleanupSigma = 0.9f;
 };
 
 // Resources (inputs first): "sssr_radiance" (read and overwritten), "depth", "normals",
@@ -48,6 +65,9 @@ struct ReflectionsDenoiserDesc {
 // normal, view depth, alpha), "rd_average" (RGBA32F, one texel per tile) and
 // "rd_tile_mask0/1" (4 bytes per tile). Parity p = frameIndex & 1 is written, 1 - p read.
 // Every owned resource must start zeroed (a zero mask means "no history").
+// RatioEstimator: the passes are reproject, reconstruct, resolve and cleanup; the same owned
+// resources ("rd_prefiltered" holds the reconstruction) plus the input "sssr_rays" (SSSR's
+// storeRays), and the camera's viewFromWorld rotation.
 Result planReflectionsDenoiser(const ReflectionsDenoiserDesc& desc, EffectPlan& plan, std::string* error);
 
 // The variance this frame's resolve wrote ("rd_variance0" or "rd_variance1"): next frame's

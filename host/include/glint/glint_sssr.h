@@ -58,6 +58,7 @@ struct SssrDesc {
     float importanceSampleBias = 0.0f; // 0..1 (Frostbite; DiligentFX uses 0.3): sharper, biased
     bool previousFrameColor = false;   // "color" is last frame's final colour, fetched through motion
     bool debugOutput = false;          // writes "sssr_ray_info": (hit x, hit y, class, iterations)
+    bool storeRays = false; // writes "sssr_rays": direction and pdf (the denoiser's ratio-estimator path)
     bool halfPrecisionStorage =
         false; // roughness, radiance, confidence in 16-bit float (radiance clamped to 65504)
 
@@ -95,6 +96,8 @@ struct SssrDesc {
 //   "sssr_counters"          16 bytes, zero at creation, kept zero between frames by the passes
 //   "sssr_indirect_args"     24 bytes: intersection (offset 0), denoiser (offset 12)
 //   "sssr_ray_info"          RGBA32F, with debugOutput
+//   "sssr_rays"              RGBA32F (RGBA16F), with storeRays: world unit direction of each glossy
+//                            pixel's sample (its quad donor's for a copy), a = its bias-free pdf
 //   "composite"              RGBA32F, with composite
 Result planSssr(const SssrDesc& desc, EffectPlan& plan, std::string* error);
 

@@ -5,6 +5,7 @@
 #include "core/dispatch.h"
 #include "core/plan_checks.h"
 #include "glint/reflections_denoiser/glint_reflections_denoiser_constants.h"
+#include "glint/reflections_denoiser/glint_reflections_denoiser_ratio_constants.h"
 
 #include <cmath>
 
@@ -36,6 +37,12 @@ std::string checkDesc(const ReflectionsDenoiserDesc& desc) {
     if (!(desc.historyClipScale > 0.0f && desc.historyClipScale <= 100.0f))
         return "historyClipScale must be in (0, 100]";
     if (desc.maxHistoryLength < 8 || desc.maxHistoryLength > 1024) return "maxHistoryLength must be 8..1024";
+    if (desc.spatialPath != SpatialPath::Prefilter && desc.spatialPath != SpatialPath::RatioEstimator)
+        return "spatialPath must be Prefilter or RatioEstimator";
+    if (!(desc.reconstructionRadius >= 1.0f &&
+          desc.reconstructionRadius <= static_cast<float>(GLINT_RD_RATIO_MAX_RADIUS)))
+        return "reconstructionRadius must be 1..8 pixels";
+    if (!(desc.cleanupSigma > 0.0f && desc.cleanupSigma <= 2.0f)) return "cleanupSigma must be in (0, 2]";
     return {};
 }
 
@@ -138,7 +145,35 @@ Result planReflectionsDenoiser(const ReflectionsDenoiserDesc& desc, EffectPlan& 
                                              {"g_glint_output", "sssr_radiance", Access::ReadWrite},
                                              {"g_glint_radiance_history", "rd_radiance" + now, Access::Write},
                                              {"g_glint_variance", "rd_variance" + now, Access::ReadWrite}});
-    plan.passes = {reproject, prefilter, resolve};
+    if (desc.spatialPath == SpatialPath::Prefilter) {
+        plan.passes = {reproject, prefilter, resolve};
+        return Result::Ok;
+    }
+
+    // Ratio-estimator path: the reconstruction takes the prefilter's place (and its output image),
+    // the cleanup follows the resolve.
+    shaders::GLINT_ReflectionsDenoiserRatioConstants ratio{};
+    ratio.common = c;
+    for (std::size_t row = 0; row < 3; ++row)
+        ratio.worldFromView[row] = {static_cast<float>(worldFromView[4 * row]),
+                                    static_cast<float>(worldFromView[4 * row + 1]),
+                                    static_cast<float>(worldFromView[4 * row + 2]), 0.0f};
+    ratio.frameIndex = desc.frameIndex;
+    ratio.reconstructionRadius = desc.reconstructionRadius;
+    ratio.cleanupSigma = desc.cleanupSigma;
+    const std::vector<std::byte> ratioConstants = core::packConstants(ratio);
+    Pass reconstruct =
+        tilePass("reconstruct", half ? "rd_reconstruct.half" : "rd_reconstruct", ratioConstants);
+    reconstruct.uses.insert(reconstruct.uses.end(),
+                            {{"g_glint_clamped", "rd_clamped", Access::Read},
+                             {"g_glint_rays", "sssr_rays", Access::Read},
+                             {"g_glint_variance", "rd_variance" + now, Access::Read},
+                             {"g_glint_reconstructed", "rd_prefiltered", Access::Write}});
+    Pass cleanup = tilePass("cleanup", half ? "rd_cleanup.half" : "rd_cleanup", ratioConstants);
+    cleanup.uses.insert(cleanup.uses.end(), {{"g_glint_resolved", "rd_radiance" + now, Access::Read},
+                                             {"g_glint_variance", "rd_variance" + now, Access::Read},
+                                             {"g_glint_output", "sssr_radiance", Access::ReadWrite}});
+    plan.passes = {reproject, reconstruct, resolve, cleanup};
     return Result::Ok;
 }
 

@@ -145,7 +145,7 @@ Pass blueNoisePass(const std::vector<std::byte>& constants) {
 
 Pass intersectPass(const SssrDesc& desc, const std::vector<std::byte>& constants) {
     const std::string suffix = std::string(desc.thicknessAware ? "_thick" : "") +
-                               (desc.debugOutput ? "_debug" : "") +
+                               (desc.debugOutput ? "_debug" : "") + (desc.storeRays ? "_ray" : "") +
                                (desc.halfPrecisionStorage ? "_half" : "");
     const std::string pipeline = suffix.empty() ? "sssr_intersect" : "sssr_intersect." + suffix.substr(1);
     Pass pass = sssrPass("intersect", pipeline.c_str(), GLINT_SSSR_RAYS_PER_GROUP, 1, constants);
@@ -163,6 +163,7 @@ Pass intersectPass(const SssrDesc& desc, const std::vector<std::byte>& constants
                  {"g_glint_radiance", "sssr_radiance", Access::ReadWrite},
                  {"g_glint_confidence", "sssr_confidence", Access::ReadWrite}};
     if (desc.debugOutput) pass.uses.push_back({"g_glint_ray_info", "sssr_ray_info", Access::Write});
+    if (desc.storeRays) pass.uses.push_back({"g_glint_rays", "sssr_rays", Access::Write});
     return pass;
 }
 
@@ -215,6 +216,8 @@ Result planSssr(const SssrDesc& desc, EffectPlan& plan, std::string* error) {
     plan.images.push_back(
         {"sssr_blue_noise", GLINT_SSSR_BLUE_NOISE_SIZE, GLINT_SSSR_BLUE_NOISE_SIZE, 1, Format::RG32Float});
     if (desc.debugOutput) plan.images.push_back({"sssr_ray_info", w, h, 1, Format::RGBA32Float});
+    if (desc.storeRays)
+        plan.images.push_back({"sssr_rays", w, h, 1, half ? Format::RGBA16Float : Format::RGBA32Float});
     plan.buffers.push_back({"sssr_ray_list", std::uint64_t{w} * h * 4u, false});
     plan.buffers.push_back({"sssr_tile_list", tiles * 4u, false});
     plan.buffers.push_back({"sssr_counters", GLINT_SSSR_COUNTER_WORDS * 4u, false});

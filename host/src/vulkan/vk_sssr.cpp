@@ -24,7 +24,8 @@ bool sameResources(const SssrDesc& a, const SssrDesc& b) {
     return a.size.width == b.size.width && a.size.height == b.size.height &&
            a.thicknessAware == b.thicknessAware && a.debugOutput == b.debugOutput &&
            a.composite == b.composite && a.depth == b.depth &&
-           a.halfPrecisionStorage == b.halfPrecisionStorage && a.denoise == b.denoise;
+           a.halfPrecisionStorage == b.halfPrecisionStorage && a.denoise == b.denoise &&
+           a.storeRays == b.storeRays;
 }
 
 // Every owned image to GENERAL (contents zeroed), counters zeroed, tables copied in.
@@ -133,8 +134,8 @@ Result dispatchSssr(SssrEffect& effect, Executor& executor, VkCommandBuffer cmd,
     SssrDesc desc = frame;
     desc.compositeReflection = effect.desc.compositeReflection;
     if (!sameResources(desc, effect.desc))
-        return fail(error, "size, depth convention, thicknessAware, debugOutput, halfPrecisionStorage and "
-                           "composite and denoise are fixed at create");
+        return fail(error, "size, depth convention, thicknessAware, debugOutput, halfPrecisionStorage, "
+                           "storeRays, composite and denoise are fixed at create");
     const std::pair<const char*, const Image*> required[] = {
         {"depth", inputs.depth}, {"normals", inputs.normals}, {"material", inputs.material},
         {"color", inputs.color}, {"motion", inputs.motion},   {"environment", inputs.environment}};
@@ -170,6 +171,8 @@ Result dispatchSssr(SssrEffect& effect, Executor& executor, VkCommandBuffer cmd,
             return fail(error, "the denoiser's size differs from the effect's");
         if (denoiser->halfPrecisionStorage != desc.halfPrecisionStorage)
             return fail(error, "the denoiser's halfPrecisionStorage must equal the effect's");
+        if (denoiser->spatialPath == SpatialPath::RatioEstimator && !desc.storeRays)
+            return fail(error, "the denoiser's ratio-estimator path needs the effect created with storeRays");
         EffectPlan denoiserPlan;
         if (const Result result = planReflectionsDenoiser(*denoiser, denoiserPlan, error);
             result != Result::Ok)

@@ -39,8 +39,9 @@ struct SssrEffect {
 Result createSssr(const Device& device, const SssrDesc& desc, SssrEffect& effect, std::string* error);
 
 // Records one frame. `frame` may change per frame everything but the size and the options
-// that change resources (thicknessAware, debugOutput, halfPrecisionStorage, composite,
-// denoise); frameIndex, camera and thresholds are read from it. With `denoiser` (the effect
+// that change resources (thicknessAware, debugOutput, halfPrecisionStorage, storeRays,
+// composite, denoise); frameIndex, camera and thresholds are read from it. The denoiser's
+// ratio-estimator path needs the effect created with storeRays. With `denoiser` (the effect
 // created with denoise), the reflections denoiser runs after the intersection and overwrites
 // "sssr_radiance" with the denoised result; its variance is next frame's TVGT history. A plan that does not
 // match its shaders (a bug, not an input error) returns Unsupported with the executor's message.

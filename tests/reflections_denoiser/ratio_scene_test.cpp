@@ -1,0 +1,218 @@
+// The ratio-estimator path on simulated scenes: SSSR's stored rays, static convergence on the
+// glossy room next to the default (prefilter) path, and non-finite histories and inputs.
+#include "reflections_denoiser/denoiser_scene.h"
+#include "replay/replay_sssr.h"
+#include "support/gpu_test_context.h"
+
+#include <gpu/gpu_transfer.h>
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <string>
+
+using namespace glint;
+
+namespace {
+
+ReflectionsDenoiserDesc ratioDenoiser(const capture::Frame& frame, const SssrDesc& desc,
+                                      std::uint32_t index) {
+    ReflectionsDenoiserDesc denoiser = replay::denoiserFromFrame(frame, desc, index, index == 0);
+    denoiser.spatialPath = SpatialPath::RatioEstimator;
+    return denoiser;
+}
+
+std::string traceOf(const std::vector<double>& values) {
+    std::string trace;
+    for (double e : values) trace += std::to_string(e).substr(0, 5) + " ";
+    return trace;
+}
+
+} // namespace
+
+TEST_CASE("SSSR's stored rays: the radiance is unchanged, every glossy pixel has a unit direction and a "
+          "positive pdf, and copies carry their donor's ray",
+          "[reflections_denoiser][ratio]") {
+    test::DenoiserScene scene = test::simulateDenoiserScene("glossy_room", 96, 54, 1);
+    for (const bool half : {false, true}) {
+        INFO((half ? "16-bit storage" : "32-bit storage"));
+        SssrDesc plain = scene.desc;
+        plain.halfPrecisionStorage = half;
+        SssrDesc storing = plain;
+        storing.storeRays = true;
+        gpu::SssrRunner plainRunner(test::testContext(), plain), storingRunner(test::testContext(), storing);
+        plainRunner.upload(scene.inputs);
+        storingRunner.upload(scene.inputs);
+        for (std::uint32_t index = 0; index < 2; ++index) {
+            plain.frameIndex = storing.frameIndex = index;
+            plainRunner.run(plain);
+            storingRunner.run(storing);
+            const gpu::SssrFrameOutputs a = plainRunner.readback(), b = storingRunner.readback();
+            REQUIRE(a.rays.empty());
+            REQUIRE(b.rays.size() == a.radiance.size());
+            REQUIRE(std::memcmp(a.radiance.data(), b.radiance.data(), a.radiance.size() * sizeof(float)) ==
+                    0);
+            const std::uint32_t w = b.width;
+            std::size_t glossy = 0;
+            for (std::size_t i = 0; i < b.roughness.size(); ++i) {
+                const float depth = scene.inputs.depth[i];
+                if (!(b.roughness[i] < storing.roughnessThreshold) || !(depth < 1.0f - 1e-6f)) continue;
+                ++glossy;
+                const float* ray = &b.rays[4 * i];
+                const double length =
+                    std::sqrt(double{ray[0]} * double{ray[0]} + double{ray[1]} * double{ray[1]} +
+                              double{ray[2]} * double{ray[2]});
+                INFO("pixel " << i % w << ", " << i / w);
+                REQUIRE(std::abs(length - 1.0) < (half ? 2e-3 : 1e-5));
+                REQUIRE(std::isfinite(ray[3]));
+                REQUIRE(ray[3] > 0.0f);
+            }
+            REQUIRE(glossy > 500u);
+            std::size_t copies = 0;
+            for (std::uint32_t entry : b.rayList) {
+                const std::uint32_t x = entry & 0x7FFFu, y = (entry >> 15) & 0x3FFFu;
+                const std::uint32_t flips[3][2] = {{1, 0}, {0, 1}, {1, 1}};
+                for (std::uint32_t k = 0; k < 3; ++k) {
+                    if ((entry & (0x20000000u << k)) == 0) continue;
+                    const std::size_t donor = std::size_t{y} * w + x,
+                                      target = std::size_t{y ^ flips[k][1]} * w + (x ^ flips[k][0]);
+                    for (std::size_t c = 0; c < 4; ++c)
+                        REQUIRE(b.rays[4 * target + c] == b.rays[4 * donor + c]);
+                    ++copies;
+                }
+            }
+            CHECK(copies > 100u);
+        }
+    }
+    GLINT_REQUIRE_NO_VALIDATION_ERRORS();
+}
+
+TEST_CASE("static glossy room: the ratio path's error falls over frames, next to the default path's",
+          "[reflections_denoiser][ratio][static]") {
+    test::DenoiserScene scene = test::simulateDenoiserScene("glossy_room", 160, 90, 1);
+    const capture::Frame& frame = scene.frames.at(0);
+    SssrDesc raw = scene.desc;
+    gpu::SssrRunner rawRunner(test::testContext(), raw);
+    rawRunner.upload(scene.inputs);
+    rawRunner.run(raw);
+    const double rawError = test::glossyError(frame, rawRunner.readback().radiance, raw.roughnessThreshold);
+    // SSSR's own expectation: the mean of 256 raw frames (the denoisers' noise-free target,
+    // without the bias SSSR has against the path-traced reference).
+    constexpr std::uint32_t kFrames = 24, kConvergedFrames = 256;
+    std::vector<float> converged(rawRunner.readback().radiance.size(), 0.0f);
+    for (std::uint32_t index = 0; index < kConvergedFrames; ++index) {
+        raw.frameIndex = index;
+        rawRunner.run(raw);
+        const std::vector<float> radiance = rawRunner.readback().radiance;
+        for (std::size_t i = 0; i < converged.size(); ++i)
+            converged[i] += radiance[i] / static_cast<float>(kConvergedFrames);
+    }
+
+    // Both paths on the same frames: errors against the reference and against SSSR's mean.
+    std::vector<double> errors[2], noise[2];
+    for (const SpatialPath path : {SpatialPath::Prefilter, SpatialPath::RatioEstimator}) {
+        const std::size_t p = path == SpatialPath::RatioEstimator ? 1 : 0;
+        SssrDesc desc = scene.desc;
+        desc.denoise = true;
+        desc.storeRays = path == SpatialPath::RatioEstimator;
+        gpu::SssrRunner runner(test::testContext(), desc);
+        runner.upload(scene.inputs);
+        for (std::uint32_t index = 0; index < kFrames; ++index) {
+            desc.frameIndex = index;
+            ReflectionsDenoiserDesc denoiser = ratioDenoiser(frame, desc, index);
+            denoiser.spatialPath = path;
+            runner.run(desc, nullptr, &denoiser);
+            const gpu::SssrFrameOutputs out = runner.readback();
+            for (float value : out.radiance) REQUIRE(std::isfinite(value));
+            errors[p].push_back(test::glossyError(frame, out.radiance, desc.roughnessThreshold));
+            noise[p].push_back(test::glossyError(frame, out.radiance, converged, desc.roughnessThreshold));
+        }
+    }
+    const double convergedError = test::glossyError(frame, converged, raw.roughnessThreshold);
+    WARN("raw single frame " << rawError << ", SSSR's converged mean " << convergedError
+                             << "\nagainst the reference per frame, prefilter: " << traceOf(errors[0])
+                             << "\n                                  ratio:     " << traceOf(errors[1])
+                             << "\nagainst SSSR's converged mean,    prefilter: " << traceOf(noise[0])
+                             << "\n                                  ratio:     " << traceOf(noise[1]));
+    REQUIRE(rawError > 0.0);
+    // Measured on lavapipe (docs/reflections_denoiser.md): against the reference the ratio path
+    // goes 0.437 -> 0.373 (the default path 0.358 -> 0.318), against SSSR's converged mean
+    // 0.148 -> 0.080 (default 0.140 -> 0.089). What is left against the reference is SSSR's own
+    // bias: its 256-frame mean is 0.424 away. The ratio path ends below that mean, and closer to
+    // it than the default path does; the default path's pull toward the tile average happens to
+    // cancel part of SSSR's bias on this metric.
+    const std::vector<double>& ratioErrors = errors[1];
+    const std::vector<double>& ratioNoise = noise[1];
+    CHECK(ratioErrors.back() < ratioErrors.front());
+    CHECK(ratioErrors.back() < 0.7 * rawError);
+    CHECK(ratioErrors.back() < convergedError);
+    CHECK(ratioErrors.back() < 0.40);
+    CHECK(ratioNoise.back() < 0.75 * ratioNoise.front());
+    CHECK(ratioNoise.back() < 0.10);
+    GLINT_REQUIRE_NO_VALIDATION_ERRORS();
+}
+
+TEST_CASE("non-finite histories and inputs never reach the ratio path's next output",
+          "[reflections_denoiser][ratio][hard]") {
+    test::DenoiserScene scene = test::simulateDenoiserScene("glossy_room", 96, 54, 1);
+    const capture::Frame& frame = scene.frames.at(0);
+    for (const bool half : {false, true}) {
+        INFO((half ? "16-bit storage" : "32-bit storage"));
+        SssrDesc desc = scene.desc;
+        desc.denoise = true;
+        desc.storeRays = true;
+        desc.halfPrecisionStorage = half;
+        gpu::Context& context = test::testContext();
+        gpu::SssrRunner runner(context, desc);
+        const float nan = std::numeric_limits<float>::quiet_NaN(),
+                    inf = std::numeric_limits<float>::infinity();
+        for (std::uint32_t index = 0; index < 4; ++index) {
+            INFO("frame " << index);
+            desc.frameIndex = index;
+            if (index == 1 || index == 2) {
+                const float value = index == 1 ? nan : inf;
+                const char* parity = (index & 1u) != 0 ? "0" : "1";
+                for (const char* name : {"rd_radiance", "rd_variance", "rd_length", "rd_guides"}) {
+                    VkClearColorValue fill{};
+                    for (float& channel : fill.float32) channel = value;
+                    gpu::clearImage(context, runner.ownedImage(std::string(name) + parity), fill);
+                }
+                gpu::SssrFrameInputs bad = scene.inputs;
+                for (std::size_t i = 0; i < bad.depth.size(); i += 7) {
+                    bad.color[4 * i] = value;
+                    bad.normals[4 * i + (i % 3)] = value;
+                    if (i % 21 == 0) bad.depth[i] = value;
+                    if (i % 35 == 0) bad.motion[2 * i] = value;
+                    if (i % 49 == 0) bad.material[4 * i] = value;
+                }
+                runner.upload(bad);
+            } else {
+                runner.upload(scene.inputs);
+            }
+            ReflectionsDenoiserDesc denoiser = ratioDenoiser(frame, desc, index);
+            denoiser.halfPrecisionStorage = half;
+            runner.run(desc, nullptr, &denoiser);
+            const gpu::SssrFrameOutputs out = runner.readback();
+            for (float value : out.radiance) REQUIRE(std::isfinite(value));
+            const char* written = (index & 1u) != 0 ? "1" : "0";
+            for (const char* name : {"rd_radiance", "rd_variance", "rd_prefiltered"}) {
+                const std::string image =
+                    std::string(name) + (std::string(name) == "rd_prefiltered" ? "" : written);
+                const std::vector<float> texels = gpu::readbackImage(context, runner.ownedImage(image));
+                const std::size_t channels = texels.size() / (std::size_t{out.width} * out.height);
+                for (std::uint32_t tile : out.tileList)
+                    for (std::uint32_t y = tile >> 16; y < std::min(out.height, (tile >> 16) + 8); ++y)
+                        for (std::uint32_t x = tile & 0xFFFFu; x < std::min(out.width, (tile & 0xFFFFu) + 8);
+                             ++x)
+                            for (std::size_t c = 0; c < channels; ++c)
+                                REQUIRE(
+                                    std::isfinite(texels[(std::size_t{y} * out.width + x) * channels + c]));
+            }
+            REQUIRE(!out.tileList.empty());
+        }
+    }
+    GLINT_REQUIRE_NO_VALIDATION_ERRORS();
+}
