@@ -45,13 +45,6 @@ void GLINT_RD_MarkTile(uint2 tile);
 // Noisy rgb (0 for pixels that are not glossy) and hit distance (-1: not glossy).
 groupshared float4 g_glint_rd_noisy[GLINT_RD_SPAN * GLINT_RD_SPAN];
 groupshared float4 g_glint_rd_average[GLINT_RD_TILE * GLINT_RD_TILE];
-// Horizontal 9-tap sums of the span's 16 rows at the tile's 8 columns: (G-weighted rgb, weight)
-// and G-weighted rgb^2.
-groupshared float4 g_glint_rd_row_sums[GLINT_RD_SPAN * GLINT_RD_TILE];
-groupshared float4 g_glint_rd_row_squares[GLINT_RD_SPAN * GLINT_RD_TILE];
-
-// exp(-3 i^2 / 25), i = 0..4: GLINT_RD_GaussianWeight as a table.
-static const float GLINT_RD_GAUSSIAN_9[5] = {1.0, 0.88692044, 0.61878339, 0.33959553, 0.14660696};
 
 struct GLINT_RD_History
 {
@@ -139,46 +132,23 @@ void GLINT_RD_Reproject(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint
     uint centre = (local.y + GLINT_RD_APRON) * GLINT_RD_SPAN + local.x + GLINT_RD_APRON;
     float3 current = g_glint_rd_noisy[centre].rgb;
 
-    // 9x9 Gaussian statistics over glossy neighbours, separably: each thread sums two of the
-    // span's 16 rows over 9 columns for its tile column, then 9 of those row sums. The weights
-    // are products G(x) G(y) and non-glossy taps contribute 0 to every sum, so this equals the
-    // 81-tap sum (up to rounding) at 27 taps a pixel instead of 81.
-    [unroll] for (uint part = 0; part < 2u; ++part)
-    {
-        uint row = local.y + part * GLINT_RD_TILE;
-        float4 rowSum = float4(0.0, 0.0, 0.0, 0.0);
-        float3 rowSquares = float3(0.0, 0.0, 0.0);
-        [unroll] for (int x = -GLINT_RD_APRON; x <= GLINT_RD_APRON; ++x)
-        {
-            float4 q = g_glint_rd_noisy[row * GLINT_RD_SPAN + local.x + GLINT_RD_APRON + x];
-            float w = q.a < 0.0 ? 0.0 : GLINT_RD_GAUSSIAN_9[abs(x)];
-            rowSum += w * float4(q.rgb, 1.0);
-            rowSquares += w * q.rgb * q.rgb;
-        }
-        g_glint_rd_row_sums[row * GLINT_RD_TILE + local.x] = rowSum;
-        g_glint_rd_row_squares[row * GLINT_RD_TILE + local.x] = float4(rowSquares, 0.0);
-    }
-    GroupMemoryBarrierWithGroupSync();
+    // 9x9 Gaussian statistics over glossy neighbours, and the nearest hit of the 3x3 (one noisy
+    // hit distance is a poor parallax estimate: reference defect 11).
     float3 sum = float3(0.0, 0.0, 0.0);
     float3 sumSquares = float3(0.0, 0.0, 0.0);
     float weightSum = 0.0;
-    [unroll] for (int y = -GLINT_RD_APRON; y <= GLINT_RD_APRON; ++y)
-    {
-        uint row = uint(int(local.y) + GLINT_RD_APRON + y);
-        float w = GLINT_RD_GAUSSIAN_9[abs(y)];
-        float4 rowSum = g_glint_rd_row_sums[row * GLINT_RD_TILE + local.x];
-        sum += w * rowSum.rgb;
-        weightSum += w * rowSum.a;
-        sumSquares += w * g_glint_rd_row_squares[row * GLINT_RD_TILE + local.x].rgb;
-    }
-    // The nearest hit of the 3x3 (one noisy hit distance is a poor parallax estimate: reference
-    // defect 11).
     float hitDistance = GLINT_RD_MISS_DISTANCE;
-    [unroll] for (int hy = -1; hy <= 1; ++hy)
-        [unroll] for (int hx = -1; hx <= 1; ++hx)
+    for (int y = -GLINT_RD_APRON; y <= GLINT_RD_APRON; ++y)
+        for (int x = -GLINT_RD_APRON; x <= GLINT_RD_APRON; ++x)
         {
-            float4 q = g_glint_rd_noisy[centre + hy * GLINT_RD_SPAN + hx];
-            if (q.a >= 0.0)
+            float4 q = g_glint_rd_noisy[centre + y * GLINT_RD_SPAN + x];
+            if (q.a < 0.0)
+                continue;
+            float w = GLINT_RD_GaussianWeight(x) * GLINT_RD_GaussianWeight(y);
+            sum += w * q.rgb;
+            sumSquares += w * q.rgb * q.rgb;
+            weightSum += w;
+            if (abs(x) <= 1 && abs(y) <= 1)
                 hitDistance = min(hitDistance, q.a);
         }
     float3 mean = weightSum > 0.0 ? sum / weightSum : current;
