@@ -26,6 +26,13 @@ bool finite(float v) {
     return std::isfinite(v);
 }
 
+// Anti-lag constants (docs/shadow_denoiser.md, "Convergence").
+constexpr int kAntiLagRadius = 2;         // a 5x5 window
+constexpr float kAntiLagThreshold = 1.5f; // binomial sigmas before the history is shortened
+constexpr float kAntiLagSlack = 1.0f;     // samples of slack in both variances
+constexpr float kAntiLagDepth = 0.1f;     // relative view depth of neighbours on the same surface
+constexpr float kAntiLagLength = 4.0f;    // cap = kAntiLagLength / (z - threshold)^2
+
 } // namespace
 
 ShadowClassifyOutputs shadowClassify(const ShadowClassifyInputs& in) {
@@ -50,6 +57,52 @@ ShadowClassifyOutputs shadowClassify(const ShadowClassifyInputs& in) {
         for (int k = 0; k <= 16; ++k)
             if ((window >> k) & 1u) sum += kGaussian[std::abs(k - 8)];
         return sum;
+    };
+
+    auto sampleBit = [&](int x, int y) {
+        return ((word(x >> 3, y >> 2) >> ((y & 3) * 8 + (x & 7))) & 1u) ? 1.0f : 0.0f;
+    };
+    // Anti-lag: a static history predicts this frame's bits; a window whose bits contradict
+    // last frame's accumulation (compared pixel for pixel, so the penumbra's own shape does not
+    // count) caps the history length. Returns the cap (large when the window agrees).
+    auto antiLagCap = [&](int x, int y, int px, int py, float zc) {
+        const float zPrevious = viewDepthOf(in.previousDepth[idx(px, py)], in.viewDepth);
+        float bits = 0.0f, predicted = 0.0f, signedVariance = 0.0f;
+        float mismatch = 0.0f, mismatchVariance = 0.0f;
+        for (int dy = -kAntiLagRadius; dy <= kAntiLagRadius; ++dy)
+            for (int dx = -kAntiLagRadius; dx <= kAntiLagRadius; ++dx) {
+                const int cx = x + dx, cy = y + dy, hx = px + dx, hy = py + dy;
+                if (cx < 0 || cy < 0 || cx >= w || cy >= h || hx < 0 || hy < 0 || hx >= w || hy >= h)
+                    continue;
+                // Same surface as the centre in this frame and in the last one.
+                const float zNow = z(cx, cy);
+                const float zThen = viewDepthOf(in.previousDepth[idx(hx, hy)], in.viewDepth);
+                if (!(zNow > 0.0f) || !(zThen > 0.0f) || std::abs(zNow - zc) > kAntiLagDepth * zc ||
+                    std::abs(zThen - zPrevious) > kAntiLagDepth * zPrevious)
+                    continue;
+                // A history: a receiver's finite accumulated shadow with n > 0 samples.
+                const float* history = &in.momentsHistory[4 * idx(hx, hy)];
+                if (!finite(history[2]) || !finite(history[3]) || !(history[2] > 0.0f)) continue;
+                const float n = std::min(history[2], 1023.0f);
+                const float hv = std::clamp(history[3], 0.0f, 1.0f);
+                const float b = sampleBit(cx, cy);
+                // Signed: the bit count against the histories' sum. Binomial variance of a
+                // probability regularised by a quarter sample on each side, widened by 1/(n+1)
+                // for the history's own estimation error.
+                const float p = (hv * n + 0.25f) / (n + 0.5f);
+                bits += b;
+                predicted += hv;
+                signedVariance += p * (1.0f - p) * (1.0f + 1.0f / (n + 1.0f));
+                // Absolute: |b - h| against its expectation under the Laplace-regularised
+                // probability q; its variance is q(1 - q)(1 - 2h)^2 (|b - h| takes 1 - h or h).
+                const float q = (hv * n + 1.0f) / (n + 2.0f);
+                mismatch += std::abs(b - hv) - (q * (1.0f - hv) + (1.0f - q) * hv);
+                mismatchVariance += q * (1.0f - q) * (1.0f - 2.0f * hv) * (1.0f - 2.0f * hv);
+            }
+        const float signedScore = std::abs(bits - predicted) / std::sqrt(signedVariance + kAntiLagSlack);
+        const float absoluteScore = mismatch / std::sqrt(mismatchVariance + kAntiLagSlack);
+        const float excess = std::max(signedScore, absoluteScore) - kAntiLagThreshold;
+        return excess > 0.0f ? std::max(kAntiLagLength / (excess * excess), 1.0f) : 1024.0f;
     };
 
     ShadowClassifyOutputs out;
@@ -137,6 +190,7 @@ ShadowClassifyOutputs shadowClassify(const ShadowClassifyInputs& in) {
                         disoccluded = !(zr > 0.0f) || !(zp > 0.0f) || !(relative < threshold);
                     }
                     float m = 0.0f, m2 = 0.0f, count = 0.0f, history = mean;
+                    bool found = false;
                     if (!disoccluded) {
                         const std::size_t q = idx(px, py);
                         const float* loaded = &in.momentsHistory[4 * q];
@@ -157,6 +211,7 @@ ShadowClassifyOutputs shadowClassify(const ShadowClassifyInputs& in) {
                             m2 = std::max(loaded[1], 0.0f);
                             count = std::clamp(loaded[2], 0.0f, 1023.0f);
                             history = std::clamp(bilinear, 0.0f, 1.0f);
+                            found = true;
                         }
                     }
                     float n = count + 1.0f;
@@ -169,6 +224,7 @@ ShadowClassifyOutputs shadowClassify(const ShadowClassifyInputs& in) {
                     const float clamped = std::clamp(history, mean - radius, mean + radius);
                     const float deviation = (history - mean) / std::max(radius, 0.001f);
                     n *= std::exp(-deviation * deviation / 20.0f);
+                    if (found) n = std::min(n, antiLagCap(x, y, px, py, zc));
                     const float samples = std::max(n, 1.0f);
                     const float spread =
                         n < 16.0f ? std::max(temporalVariance, spatialVariance) * std::max(16.0f - n, 1.0f)

@@ -1,6 +1,6 @@
 // glint shadow denoiser, pass 2 (tile classification + temporal accumulation): tile metadata,
 // local statistics from the visibility mask, disocclusion, Welford moments, history
-// reprojection with neighbourhood clamping (docs/shadow_denoiser.md).
+// reprojection with neighbourhood clamping and an anti-lag test (docs/shadow_denoiser.md).
 //
 // Integration: define these callbacks before or after including this header. Pixel and tile
 // arguments are always inside the image / mask.
@@ -99,6 +99,66 @@ float GLINT_SHADOW_DENOISER_BilinearHistory(float2 uv, uint2 inputSize, out bool
     float h = lerp(lerp(h00, h10, f.x), lerp(h01, h11, f.x), f.y);
     valid = GLINT_IsFinite(h);
     return valid ? clamp(h, 0.0, 1.0) : 0.0;
+}
+
+// Anti-lag (docs/shadow_denoiser.md, "Convergence"): the longest history that the 5x5 window
+// around the pixel still supports. This frame's mask bits b_j in the window are compared with
+// last frame's accumulated shadow h_j (n_j samples) of the same window around the previous
+// position, pixel by pixel, so the shape of a static penumbra cancels out. Two scores, each in
+// binomial sigmas with ANTILAG_SLACK samples of slack for the histories' own error:
+// - signed: |sum b_j - sum h_j| / sqrt(sum p_j (1 - p_j) (1 + 1/(n_j + 1)) + slack), with
+//   p_j = (h_j n_j + 1/4) / (n_j + 1/2); it sees a shadow that arrived or left as a whole;
+// - absolute: sum (|b_j - h_j| - E_j) / sqrt(sum q_j (1 - q_j) (1 - 2 h_j)^2 + slack), with
+//   q_j = (h_j n_j + 1) / (n_j + 2) and E_j = q_j (1 - h_j) + (1 - q_j) h_j the expected
+//   |b_j - h_j|; it sees bits that contradict confident histories in both directions (a thin
+//   shadow that moved sideways gains on one edge what it loses on the other).
+// Neighbours count when they are inside the image and receivers within ANTILAG_DEPTH relative
+// view depth of the centre in both frames (moments of non-receivers store n = 0). With z the
+// larger score: above ANTILAG_THRESHOLD the history length is capped at
+// ANTILAG_LENGTH / (z - ANTILAG_THRESHOLD)^2 (at least 1; continuous at the threshold).
+float GLINT_SHADOW_DENOISER_AntiLagLength(int2 pixel, int2 previousPixel, float z, float previousZ, uint2 inputSize,
+                                          float4 viewDepth)
+{
+    float observed = 0.0;
+    float expected = 0.0;
+    float variance = 0.0;
+    float surprise = 0.0;
+    float surpriseVariance = 0.0;
+    const int radius = GLINT_SHADOW_DENOISER_ANTILAG_RADIUS;
+    for (int dy = -radius; dy <= radius; ++dy)
+        for (int dx = -radius; dx <= radius; ++dx)
+        {
+            int2 current = pixel + int2(dx, dy);
+            int2 previous = previousPixel + int2(dx, dy);
+            if (any(current < 0) || any(previous < 0) || any(current >= int2(inputSize)) ||
+                any(previous >= int2(inputSize)))
+                continue;
+            float currentZ = GLINT_SHADOW_DENOISER_ClassifyViewDepth(GLINT_SHADOW_DENOISER_LoadDepth(current), viewDepth);
+            float pastZ =
+                GLINT_SHADOW_DENOISER_ClassifyViewDepth(GLINT_SHADOW_DENOISER_LoadPreviousDepth(previous), viewDepth);
+            float3 moments = GLINT_SHADOW_DENOISER_LoadMomentsHistory(previous);
+            float h = GLINT_SHADOW_DENOISER_LoadShadowHistory(previous);
+            bool valid = currentZ > 0.0 && pastZ > 0.0 && abs(currentZ - z) <= GLINT_SHADOW_DENOISER_ANTILAG_DEPTH * z &&
+                         abs(pastZ - previousZ) <= GLINT_SHADOW_DENOISER_ANTILAG_DEPTH * previousZ &&
+                         GLINT_IsFinite(moments.z) && GLINT_IsFinite(h) && moments.z > 0.0;
+            if (!valid)
+                continue;
+            float samples = min(moments.z, 1023.0);
+            h = clamp(h, 0.0, 1.0);
+            uint word = GLINT_SHADOW_DENOISER_LoadMask(int2(current.x >> 3, current.y >> 2));
+            float bit = ((word >> (uint(current.y & 3) * 8u + uint(current.x & 7))) & 1u) != 0u ? 1.0 : 0.0;
+            float p = (h * samples + 0.25) / (samples + 0.5);
+            observed += bit;
+            expected += h;
+            variance += p * (1.0 - p) * (1.0 + 1.0 / (samples + 1.0));
+            float q = (h * samples + 1.0) / (samples + 2.0);
+            surprise += abs(bit - h) - (q * (1.0 - h) + (1.0 - q) * h);
+            surpriseVariance += q * (1.0 - q) * (1.0 - 2.0 * h) * (1.0 - 2.0 * h);
+        }
+    float score = max(abs(observed - expected) * rsqrt(variance + GLINT_SHADOW_DENOISER_ANTILAG_SLACK),
+                      surprise * rsqrt(surpriseVariance + GLINT_SHADOW_DENOISER_ANTILAG_SLACK));
+    float excess = score - GLINT_SHADOW_DENOISER_ANTILAG_THRESHOLD;
+    return excess > 0.0 ? max(GLINT_SHADOW_DENOISER_ANTILAG_LENGTH / (excess * excess), 1.0) : 1024.0;
 }
 
 // Constants as in GLINT_ShadowDenoiserClassifyConstants; the matrices are built from its rows
@@ -225,13 +285,15 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint2 groupThreadId, uint gro
     float2 uvPrevious = uv + motion;
     bool disoccluded = (c.flags & GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_RESET) != 0u || !GLINT_IsFinite(uvPrevious.x) || !GLINT_IsFinite(uvPrevious.y) ||
                        any(uvPrevious < 0.0) || any(uvPrevious > 1.0);
+    int2 previousPixel = int2(0, 0);
+    float previousZ = -1.0;
     if (!disoccluded)
     {
         float4 ndc = float4(2.0 * uv.x - 1.0, c.ndcYSign * (2.0 * uv.y - 1.0), depth, 1.0);
         float4 previousClip = mul(c.reproject, ndc);
         float reprojectedZ = GLINT_SHADOW_DENOISER_ClassifyViewDepth(previousClip.z / previousClip.w, c.viewDepth);
-        int2 previousPixel = min(int2(uvPrevious * float2(c.inputSize)), int2(c.inputSize) - 1);
-        float previousZ =
+        previousPixel = min(int2(uvPrevious * float2(c.inputSize)), int2(c.inputSize) - 1);
+        previousZ =
             GLINT_SHADOW_DENOISER_ClassifyViewDepth(GLINT_SHADOW_DENOISER_LoadPreviousDepth(previousPixel), c.viewDepth);
         float4 world = mul(c.inverseViewProj, ndc);
         float3 toEye = c.eyePosition.xyz - world.xyz / world.w;
@@ -250,9 +312,9 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint2 groupThreadId, uint gro
 
     float3 moments = float3(0.0, 0.0, 0.0);
     float history = mean;
+    bool historyFound = false;
     if (!disoccluded)
     {
-        int2 previousPixel = min(int2(uvPrevious * float2(c.inputSize)), int2(c.inputSize) - 1);
         float3 loaded = GLINT_SHADOW_DENOISER_LoadMomentsHistory(previousPixel);
         bool historyValid;
         float bilinear = GLINT_SHADOW_DENOISER_BilinearHistory(uvPrevious, c.inputSize, historyValid);
@@ -260,6 +322,7 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint2 groupThreadId, uint gro
         {
             moments = float3(clamp(loaded.x, 0.0, 1.0), max(loaded.y, 0.0), clamp(loaded.z, 0.0, 1023.0));
             history = bilinear;
+            historyFound = true;
         }
     }
 
@@ -277,6 +340,9 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint2 groupThreadId, uint gro
     float clamped = clamp(history, mean - clampRadius, mean + clampRadius);
     float deviation = (history - mean) / max(clampRadius, 0.001);
     n *= exp(-deviation * deviation / 20.0);
+    // Anti-lag: the 17x17 clamp cannot see a shadow edge that moved inside its window.
+    if (historyFound)
+        n = min(n, GLINT_SHADOW_DENOISER_AntiLagLength(pixel, previousPixel, z, previousZ, c.inputSize, c.viewDepth));
     float count = max(n, 1.0);
     // Variance of the accumulated mean (boosted while young): the filter's edge stop tightens as
     // samples accumulate, so the spatial filter fades out instead of biasing the penumbra.

@@ -46,6 +46,16 @@ GLINT_CONSTANTS_END(GLINT_ShadowDenoiserFilterConstants);
 #define GLINT_SHADOW_DENOISER_CLAMP_SIGMAS 2.0
 #define GLINT_SHADOW_DENOISER_HISTORY_CAP 64.0
 #define GLINT_SHADOW_DENOISER_FILTER_VARIANCE_SCALE 0.0625
+// Anti-lag (docs/shadow_denoiser.md, "Convergence"): this frame's mask bits in a
+// (2 RADIUS + 1)^2 window against last frame's accumulated shadow of the same window; when the
+// larger of two binomial scores (with SLACK samples of slack; neighbours within DEPTH relative
+// view depth) exceeds THRESHOLD sigmas, the history length is capped at
+// LENGTH / (z - THRESHOLD)^2.
+#define GLINT_SHADOW_DENOISER_ANTILAG_RADIUS 2
+#define GLINT_SHADOW_DENOISER_ANTILAG_THRESHOLD 1.5
+#define GLINT_SHADOW_DENOISER_ANTILAG_SLACK 1.0
+#define GLINT_SHADOW_DENOISER_ANTILAG_DEPTH 0.1
+#define GLINT_SHADOW_DENOISER_ANTILAG_LENGTH 4.0
 
 // Tile metadata bits (one word per 8x8 tile).
 #define GLINT_SHADOW_DENOISER_TILE_CLEAR 1u
