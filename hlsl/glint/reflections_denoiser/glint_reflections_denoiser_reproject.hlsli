@@ -64,40 +64,57 @@ GLINT_RD_History GLINT_RD_SampleHistory(GLINT_ReflectionsDenoiserConstants c, fl
 {
     GLINT_RD_History h = (GLINT_RD_History)0;
     h.valid = false;
-    if (!(all(uv > 0.0) && all(uv < 1.0)) || (c.flags & GLINT_RD_FLAG_RESET) != 0)
-        return h;
-    float2 p = uv * float2(c.inputSize) - 0.5;
+    // Tested after the loads, so that no branch stands between the two candidates' loads: the
+    // taps are clamped to the image whatever uv is (a non-finite one included).
+    bool usable = all(uv > 0.0) && all(uv < 1.0) && (c.flags & GLINT_RD_FLAG_RESET) == 0;
+    float2 p = clamp(uv, -1.0, 2.0) * float2(c.inputSize) - 0.5;
     float2 base = floor(p);
     float2 f = p - base;
-    float total = 0.0;
-    float3 normalSum = float3(0.0, 0.0, 0.0);
-    for (uint tap = 0; tap < 4; ++tap)
+    // All loads of the four taps are issued before any of them is tested, so their latencies
+    // overlap (testing a tap's guides before fetching its radiance serialised three memory
+    // round trips per tap). A rejected tap's values are selected away, never multiplied by 0:
+    // they may be NaN.
+    int2 pixels[4];
+    float weights[4];
+    float4 guides[4];
+    bool listed[4];
+    float3 radiances[4];
+    float variances[4];
+    float lengths[4];
+    [unroll] for (uint tap = 0; tap < 4; ++tap)
     {
         int2 offset = int2(tap & 1u, tap >> 1);
-        int2 pixel = clamp(int2(base) + offset, int2(0, 0), int2(c.inputSize) - 1);
-        float w = (offset.x == 1 ? f.x : 1.0 - f.x) * (offset.y == 1 ? f.y : 1.0 - f.y);
-        if (w <= 0.0 || !GLINT_RD_HistoryTileListed(uint2(pixel) / GLINT_RD_TILE))
-            continue;
-        float4 guides = GLINT_RD_LoadHistoryGuides(pixel);
-        if (!(guides.z > 0.0) || !GLINT_IsFinite(guides.z))
-            continue;
-        float3 n = GLINT_RD_DecodeNormal(clamp(GLINT_RD_Finite3(float3(guides.xy, 0.0)).xy, -1.0, 1.0));
+        pixels[tap] = clamp(int2(base) + offset, int2(0, 0), int2(c.inputSize) - 1);
+        weights[tap] = (offset.x == 1 ? f.x : 1.0 - f.x) * (offset.y == 1 ? f.y : 1.0 - f.y);
+        listed[tap] = GLINT_RD_HistoryTileListed(uint2(pixels[tap]) / GLINT_RD_TILE);
+        guides[tap] = GLINT_RD_LoadHistoryGuides(pixels[tap]);
+        radiances[tap] = GLINT_RD_LoadHistoryRadiance(pixels[tap]);
+        variances[tap] = GLINT_RD_LoadHistoryVariance(pixels[tap]);
+        lengths[tap] = GLINT_RD_LoadHistoryLength(pixels[tap]);
+    }
+    float total = 0.0;
+    float3 normalSum = float3(0.0, 0.0, 0.0);
+    [unroll] for (uint t = 0; t < 4; ++t)
+    {
+        float w = weights[t];
+        // Taps that were glossy last frame, in a tile listed last frame, whose normal and depth
+        // match this pixel's (disocclusion weight >= 0.9).
+        bool accepted = w > 0.0 && listed[t] && guides[t].z > 0.0 && GLINT_IsFinite(guides[t].z);
+        float3 n = GLINT_RD_DecodeNormal(clamp(GLINT_RD_Finite3(float3(guides[t].xy, 0.0)).xy, -1.0, 1.0));
         float fit = exp(-abs(1.0 - max(0.0, dot(n, surface.normal))) * 1.4) *
-                    exp(-abs(guides.z - expectedViewDepth) / expectedViewDepth);
-        if (!(fit >= 0.9))
+                    exp(-abs(guides[t].z - expectedViewDepth) / expectedViewDepth);
+        accepted = accepted && fit >= 0.9;
+        if (!accepted)
             continue;
-        float3 radiance = GLINT_RD_SanitizeRadiance(GLINT_RD_LoadHistoryRadiance(pixel));
-        float variance = clamp(GLINT_FiniteOr(GLINT_RD_LoadHistoryVariance(pixel), 1.0), 0.0, 65504.0);
-        float historyLength = clamp(GLINT_FiniteOr(GLINT_RD_LoadHistoryLength(pixel), 0.0), 0.0, 65504.0);
-        h.radiance += w * radiance;
-        h.variance += w * variance;
-        h.length += w * historyLength;
-        h.alpha += w * GLINT_Saturate(GLINT_FiniteOr(guides.w, 1.0));
+        h.radiance += w * GLINT_RD_SanitizeRadiance(radiances[t]);
+        h.variance += w * clamp(GLINT_FiniteOr(variances[t], 1.0), 0.0, 65504.0);
+        h.length += w * clamp(GLINT_FiniteOr(lengths[t], 0.0), 0.0, 65504.0);
+        h.alpha += w * GLINT_Saturate(GLINT_FiniteOr(guides[t].w, 1.0));
         normalSum += w * n;
         total += w;
     }
-    if (total < 0.5)
-        return h;
+    if (!usable || total < 0.5)
+        return (GLINT_RD_History)0;
     float inverse = 1.0 / total;
     h.radiance *= inverse;
     h.variance *= inverse;
@@ -168,13 +185,14 @@ void GLINT_RD_Reproject(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint
         expectedViewDepth = max(expectedViewDepth, 1e-6);
         float2 motion = GLINT_RD_LoadMotion(ipixel) * c.motionScale;
         float2 surfaceUv = uv + float2(GLINT_FiniteOr(motion.x, 1e9), GLINT_FiniteOr(motion.y, 1e9));
-        GLINT_RD_History onSurface = GLINT_RD_SampleHistory(c, surfaceUv, surface, expectedViewDepth);
         // Parallax: the reflected point continued behind the mirror, reprojected. A miss's
-        // "infinite" distance makes it rotation-only.
+        // "infinite" distance makes it rotation-only. Both positions first, so that the two
+        // candidates' loads can be in flight together.
         float viewLength = length(viewPosition);
         float3 virtualPoint = viewPosition / max(viewLength, 1e-12) * (viewLength + hitDistance);
         float unused;
         float2 virtualUv = GLINT_RD_PreviousUv(c, virtualPoint, unused);
+        GLINT_RD_History onSurface = GLINT_RD_SampleHistory(c, surfaceUv, surface, expectedViewDepth);
         GLINT_RD_History virtualHistory = GLINT_RD_SampleHistory(c, virtualUv, surface, expectedViewDepth);
         float virtualFit = dot(virtualHistory.normal, surface.normal);
         float surfaceFit = onSurface.valid ? dot(onSurface.normal, surface.normal) : -1.0;
