@@ -64,6 +64,8 @@ std::vector<Point> pointsFor(const std::string& effect, bool quick) {
     return {{"defaults", {}},
             {"filter_off", {"shadows.filter=false"}},
             {"no_tile_skip", {"shadows.skipClearedTiles=false"}},
+            {"fused_filter", {"shadows.fusedFilter=true"}},
+            {"no_anti_lag", {"shadows.antiLag=false"}},
             {"depth_sigma_0.01", {"shadows.depthSigma=0.01"}},
             {"depth_sigma_0.05", {"shadows.depthSigma=0.05"}},
             {"normal_power_8", {"shadows.normalPower=8"}},

@@ -81,6 +81,8 @@ bool applyShadow(ShadowDenoiserDesc& desc, const std::string& name, const std::s
         desc.skipClearedTiles = parseBool(name, value);
     else if (name == "fusedFilter")
         desc.fusedFilter = parseBool(name, value);
+    else if (name == "antiLag")
+        desc.antiLag = parseBool(name, value);
     else if (name == "depthSigma")
         desc.depthSigma = parseFloat(name, value);
     else if (name == "normalPower")
@@ -134,7 +136,7 @@ void applySetting(EffectSettings& settings, const std::string& assignment) {
             "varianceThreshold, denoiser.historyClipScale, denoiser.maxHistoryLength, denoiser.spatialPath, "
             "denoiser.reconstructionRadius, denoiser.cleanupSigma, shadows.filter, shadows.classify, "
             "shadows.skipClearedTiles, "
-            "shadows.fusedFilter, "
+            "shadows.fusedFilter, shadows.antiLag, "
             "shadows.depthSigma, shadows.normalPower)");
     settings.assignments.push_back(assignment);
 }

@@ -224,7 +224,7 @@ ShadowClassifyOutputs shadowClassify(const ShadowClassifyInputs& in) {
                     const float clamped = std::clamp(history, mean - radius, mean + radius);
                     const float deviation = (history - mean) / std::max(radius, 0.001f);
                     n *= std::exp(-deviation * deviation / 20.0f);
-                    if (found) n = std::min(n, antiLagCap(x, y, px, py, zc));
+                    if (found && in.antiLag) n = std::min(n, antiLagCap(x, y, px, py, zc));
                     const float samples = std::max(n, 1.0f);
                     const float spread =
                         n < 16.0f ? std::max(temporalVariance, spatialVariance) * std::max(16.0f - n, 1.0f)

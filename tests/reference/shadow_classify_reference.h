@@ -22,6 +22,7 @@ struct ShadowClassifyInputs {
     float viewDepth[3] = {0.1f, 1.0f, -1.0f};
     float ndcYSign = 1.0f;
     bool reset = false;
+    bool antiLag = true; // the 5x5 anti-lag test
 };
 
 struct ShadowClassifyOutputs {

@@ -57,6 +57,7 @@ reference::ShadowClassifyInputs referenceInputs(const ShadowDenoiserDesc& desc,
     ref.viewDepth[2] = -1.0f;
     ref.ndcYSign = desc.vulkanNdc ? 1.0f : -1.0f;
     ref.reset = desc.resetHistory;
+    ref.antiLag = desc.antiLag;
     return ref;
 }
 
@@ -153,6 +154,9 @@ TEST_CASE("classify 64x48 with history and motion: matches the CPU reference", "
     checkClassify(desc, movingInputs(64, 48, 11), 1);
     desc.frameIndex = 1;
     desc.vulkanNdc = false;
+    checkClassify(desc, movingInputs(64, 48, 12), 2);
+    // Without the anti-lag test (the reference skips its cap too).
+    desc.antiLag = false;
     checkClassify(desc, movingInputs(64, 48, 12), 2);
 }
 

@@ -57,7 +57,8 @@ TEST_CASE("shadow plan: passes, resources and sizes", "[plan]") {
         std::memcpy(&flags, plan.passes[1].constants.data() + offsetof(Constants, flags), 4);
         return flags;
     };
-    CHECK(classifyFlags() == GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_SKIP_CLEAR);
+    CHECK(classifyFlags() ==
+          (GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_SKIP_CLEAR | GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_ANTI_LAG));
 
     // Three dispatches (the default): filter0..2 of 8x8 groups, indirect over the tiles
     // classification lists (prepare resets the list), two scratch images.
@@ -77,7 +78,7 @@ TEST_CASE("shadow plan: passes, resources and sizes", "[plan]") {
     CHECK(plan.buffers[4].name == "shadow_filter_args");
     CHECK(plan.buffers[4].indirectArgs);
     CHECK(plan.images.size() == 5);
-    CHECK(classifyFlags() == 0u);
+    CHECK(classifyFlags() == GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_ANTI_LAG);
     // Without tile skipping: a direct grid over every tile, no list.
     desc.skipClearedTiles = false;
     REQUIRE(planShadowDenoiser(desc, plan, &error) == Result::Ok);
@@ -87,8 +88,13 @@ TEST_CASE("shadow plan: passes, resources and sizes", "[plan]") {
     desc.skipClearedTiles = true;
     desc.resetHistory = true;
     REQUIRE(planShadowDenoiser(desc, plan, &error) == Result::Ok);
-    CHECK(classifyFlags() == GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_RESET);
+    CHECK(classifyFlags() ==
+          (GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_RESET | GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_ANTI_LAG));
     desc.resetHistory = false;
+    desc.antiLag = false;
+    REQUIRE(planShadowDenoiser(desc, plan, &error) == Result::Ok);
+    CHECK(classifyFlags() == 0u);
+    desc.antiLag = true;
 
     desc.filter = false;
     desc.classify = false;

@@ -341,7 +341,7 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint2 groupThreadId, uint gro
     float deviation = (history - mean) / max(clampRadius, 0.001);
     n *= exp(-deviation * deviation / 20.0);
     // Anti-lag: the 17x17 clamp cannot see a shadow edge that moved inside its window.
-    if (historyFound)
+    if (historyFound && (c.flags & GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_ANTI_LAG) != 0u)
         n = min(n, GLINT_SHADOW_DENOISER_AntiLagLength(pixel, previousPixel, z, previousZ, c.inputSize, c.viewDepth));
     float count = max(n, 1.0);
     // Variance of the accumulated mean (boosted while young): the filter's edge stop tightens as

@@ -66,6 +66,8 @@ GLINT_CONSTANTS_END(GLINT_ShadowDenoiserFilterConstants);
 // never reads them); their moments are stored as always.
 #define GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_RESET 1u
 #define GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_SKIP_CLEAR 2u
+// ANTI_LAG: the 5x5 anti-lag test shortens contradicted histories (docs/shadow_denoiser.md).
+#define GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_ANTI_LAG 4u
 
 // Matrices are column-vector (q = M p) and passed as four rows: q.i = dot(row_i, p).
 GLINT_CONSTANTS_BEGIN(GLINT_ShadowDenoiserClassifyConstants)

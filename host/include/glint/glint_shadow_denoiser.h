@@ -39,6 +39,10 @@ struct ShadowDenoiserDesc {
     // FidelityFX's "contrast recovery" mean^max(1.2 - variance, 1) in the last pass. Off by
     // default: it darkens penumbrae (docs/shadow_denoiser.md, "Convergence").
     bool contrastRemap = false;
+    // Classification's anti-lag test: a history its 5x5 neighbourhood contradicts is shortened,
+    // so moving shadows are followed within a few frames (docs/shadow_denoiser.md, "Motion").
+    // Costs about 13 us at 1080p on an H100 (docs/performance.md).
+    bool antiLag = true;
 
     // Classification (temporal) inputs. Matrices are row-major 4x4 with column vectors (q = M p).
     std::array<double, 16> reprojection{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}; // VP_prev VP^-1

@@ -121,6 +121,7 @@ Pass classifyPass(const ShadowDenoiserDesc& desc, Extent2D tiles) {
     constants.normalUnpack = {desc.normalUnpackMul, desc.normalUnpackAdd};
     constants.ndcYSign = desc.vulkanNdc ? 1.0f : -1.0f;
     constants.flags = desc.resetHistory ? GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_RESET : 0u;
+    if (desc.antiLag) constants.flags |= GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_ANTI_LAG;
     // The fused filter with tile skipping rebuilds clear tiles from the metadata.
     if (desc.filter && desc.fusedFilter && desc.skipClearedTiles)
         constants.flags |= GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_SKIP_CLEAR;
