@@ -40,8 +40,11 @@ void GLINT_RD_Prefilter(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint
     uint entry = GLINT_RD_LoadTile(groupId);
     uint2 tileOrigin = uint2(entry & 0xFFFFu, entry >> 16);
     uint localIndex = local.y * GLINT_RD_TILE + local.x;
-    for (uint i = localIndex; i < GLINT_RD_SPAN * GLINT_RD_SPAN; i += GLINT_RD_TILE * GLINT_RD_TILE)
+    // Unrolled (exactly 4 span slots a thread) so that the loads of all four are in flight
+    // together instead of one slot's round trip after the other.
+    [unroll] for (uint k = 0; k < GLINT_RD_SPAN * GLINT_RD_SPAN / (GLINT_RD_TILE * GLINT_RD_TILE); ++k)
     {
+        uint i = localIndex + k * GLINT_RD_TILE * GLINT_RD_TILE;
         int2 pixel = GLINT_RD_SpanPixel(c, tileOrigin, i);
         GLINT_RD_Surface s = GLINT_RD_LoadSurface(c, pixel);
         float4 clamped = GLINT_RD_LoadClamped(pixel);

@@ -119,8 +119,13 @@ uint GLINT_SHADOW_DENOISER_FilterSlot(int2 pixel, int2 spanOrigin, uint2 inputSi
 void GLINT_SHADOW_DENOISER_LoadSpan(uint groupIndex, uint groupThreads, int2 spanOrigin, uint2 inputSize,
                                     float4 viewDepth)
 {
-    for (uint slot = groupIndex; slot < GLINT_SHADOW_DENOISER_FILTER_SLOTS; slot += groupThreads)
+    // At most 4 slots a thread (256 / 64, or 900 / 256 fused), unrolled so that their loads
+    // are in flight together.
+    [unroll] for (uint k = 0; k < 4u; ++k)
     {
+        uint slot = groupIndex + k * groupThreads;
+        if (slot >= GLINT_SHADOW_DENOISER_FILTER_SLOTS)
+            break;
         int2 local = int2(slot % GLINT_SHADOW_DENOISER_FILTER_SPAN, slot / GLINT_SHADOW_DENOISER_FILTER_SPAN);
         int2 pixel = clamp(spanOrigin + local, int2(0, 0), int2(inputSize) - 1);
         g_glint_shadow_denoiser_filter_values[slot] =
@@ -248,8 +253,13 @@ bool GLINT_SHADOW_DENOISER_FixedValue(int2 pixel, int2 spanOrigin, uint2 inputSi
 // fused filter, classification and the earlier passes do not store clear tiles.
 void GLINT_SHADOW_DENOISER_FixClearInputs(uint groupIndex, uint groupThreads, int2 spanOrigin, uint2 inputSize)
 {
-    for (uint slot = groupIndex; slot < GLINT_SHADOW_DENOISER_FILTER_SLOTS; slot += groupThreads)
+    // At most 4 slots a thread (256 / 64, or 900 / 256 fused), unrolled so that their loads
+    // are in flight together.
+    [unroll] for (uint k = 0; k < 4u; ++k)
     {
+        uint slot = groupIndex + k * groupThreads;
+        if (slot >= GLINT_SHADOW_DENOISER_FILTER_SLOTS)
+            break;
         int2 pixel = spanOrigin + int2(slot % GLINT_SHADOW_DENOISER_FILTER_SPAN, slot / GLINT_SHADOW_DENOISER_FILTER_SPAN);
         float2 value;
         if (all(uint2(pixel) < inputSize) && GLINT_SHADOW_DENOISER_FixedValue(pixel, spanOrigin, inputSize, value))
