@@ -44,20 +44,23 @@ groupshared float3 g_glint_rd_cleanup_radiance[GLINT_RD_CLEANUP_SPAN * GLINT_RD_
 
 // d(view depth)/d(pixel) along one axis: the one-sided difference of smaller magnitude among
 // the glossy sides (the forward one on a tie), 0 when neither side is glossy.
-float GLINT_RD_CleanupSlope(float before, float centre, float after) {
+float GLINT_RD_CleanupSlope(float before, float centre, float after)
+{
     float backward = before > 0.0 ? centre - before : 3.0e38;
     float forward = after > 0.0 ? after - centre : 3.0e38;
     float slope = abs(backward) < abs(forward) ? backward : forward;
     return abs(slope) < 1.0e38 ? slope : 0.0;
 }
 
-void GLINT_RD_Cleanup(GLINT_ReflectionsDenoiserRatioConstants r, uint groupId, uint2 local) {
+void GLINT_RD_Cleanup(GLINT_ReflectionsDenoiserRatioConstants r, uint groupId, uint2 local)
+{
     GLINT_ReflectionsDenoiserConstants c = r.common;
     uint entry = GLINT_RD_LoadTile(groupId);
     uint2 tileOrigin = uint2(entry & 0xFFFFu, entry >> 16);
     uint localIndex = local.y * GLINT_RD_TILE + local.x;
     for (uint i = localIndex; i < GLINT_RD_CLEANUP_SPAN * GLINT_RD_CLEANUP_SPAN;
-         i += GLINT_RD_TILE * GLINT_RD_TILE) {
+         i += GLINT_RD_TILE * GLINT_RD_TILE)
+    {
         int2 q = int2(tileOrigin) + int2(i % GLINT_RD_CLEANUP_SPAN, i / GLINT_RD_CLEANUP_SPAN) -
                  GLINT_RD_CLEANUP_APRON;
         bool inImage = all(q >= 0) && all(q < int2(c.inputSize));
@@ -95,7 +98,8 @@ void GLINT_RD_Cleanup(GLINT_ReflectionsDenoiserRatioConstants r, uint groupId, u
     float3 sum = float3(0.0, 0.0, 0.0);
     float weightSum = 0.0;
     for (int y = -radius; y <= radius; ++y)
-        for (int x = -radius; x <= radius; ++x) {
+        for (int x = -radius; x <= radius; ++x)
+        {
             int index = centre + y * GLINT_RD_CLEANUP_SPAN + x;
             float4 q = g_glint_rd_cleanup_geometry[index];
             if (!(q.w > 0.0)) continue;

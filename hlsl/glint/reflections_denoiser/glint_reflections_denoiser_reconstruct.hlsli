@@ -46,13 +46,15 @@ static const uint g_glint_rd_ratio_bayer[16] = {0u, 8u,  2u, 10u, 12u, 4u, 14u, 
                                                 3u, 11u, 1u, 9u,  15u, 7u, 13u, 5u};
 
 // The taps' rotation at a pixel: 2 pi ((Bayer4x4(p) + frame) mod 16) / 16.
-float GLINT_RD_RatioAngle(uint2 pixel, uint frameIndex) {
+float GLINT_RD_RatioAngle(uint2 pixel, uint frameIndex)
+{
     uint step = (g_glint_rd_ratio_bayer[(pixel.y & 3u) * 4u + (pixel.x & 3u)] + frameIndex) & 15u;
     return float(step) * (2.0 * GLINT_GGX_PI / 16.0);
 }
 
 // Height-correlated Smith visibility G2 / (4 N.L N.V) for GGX (Heitz 2014), for N.L, N.V > 0.
-float GLINT_RD_SmithVisibility(float NdotL, float NdotV, float alpha) {
+float GLINT_RD_SmithVisibility(float NdotL, float NdotV, float alpha)
+{
     float a = GLINT_GGX_ClampAlpha(alpha);
     float a2 = a * a;
     float lambdaV = NdotL * sqrt(NdotV * NdotV * (1.0 - a2) + a2);
@@ -63,7 +65,8 @@ float GLINT_RD_SmithVisibility(float NdotL, float NdotV, float alpha) {
 // The ratio-estimator weight of a sample drawn along L with density pdf, for the centre's
 // lobe (unit N, V with N.V > 0, alpha): D(N.H) Vis(N.L, N.V) N.L / max(pdf, 1e-5); 0 below the
 // centre's horizon.
-float GLINT_RD_RatioWeight(float3 N, float3 V, float NdotV, float alpha, float3 L, float pdf) {
+float GLINT_RD_RatioWeight(float3 N, float3 V, float NdotV, float alpha, float3 L, float pdf)
+{
     float NdotL = dot(N, L);
     if (!(NdotL > 0.0)) return 0.0;
     float3 H = GLINT_GGX_SafeNormalize(V + L, N);
@@ -72,14 +75,16 @@ float GLINT_RD_RatioWeight(float3 N, float3 V, float NdotV, float alpha, float3 
 }
 
 // The view direction of a pixel in world space (towards the camera).
-float3 GLINT_RD_WorldView(GLINT_ReflectionsDenoiserRatioConstants r, float3 viewPosition) {
+float3 GLINT_RD_WorldView(GLINT_ReflectionsDenoiserRatioConstants r, float3 viewPosition)
+{
     float3 toPoint =
         float3(dot(r.worldFromView[0].xyz, viewPosition), dot(r.worldFromView[1].xyz, viewPosition),
                dot(r.worldFromView[2].xyz, viewPosition));
     return -GLINT_GGX_SafeNormalize(toPoint, float3(0.0, 0.0, 1.0));
 }
 
-void GLINT_RD_Reconstruct(GLINT_ReflectionsDenoiserRatioConstants r, uint groupId, uint2 local) {
+void GLINT_RD_Reconstruct(GLINT_ReflectionsDenoiserRatioConstants r, uint groupId, uint2 local)
+{
     GLINT_ReflectionsDenoiserConstants c = r.common;
     uint entry = GLINT_RD_LoadTile(groupId);
     uint2 tileOrigin = uint2(entry & 0xFFFFu, entry >> 16);
@@ -87,13 +92,15 @@ void GLINT_RD_Reconstruct(GLINT_ReflectionsDenoiserRatioConstants r, uint groupI
     if (any(pixel >= c.inputSize)) return;
     int2 ipixel = int2(pixel);
     GLINT_RD_Surface surface = GLINT_RD_LoadSurface(c, ipixel);
-    if (!surface.glossy) {
+    if (!surface.glossy)
+    {
         GLINT_RD_StoreReconstructed(ipixel, float4(0.0, 0.0, 0.0, 0.0));
         return;
     }
     float3 own = GLINT_RD_SanitizeRadiance(GLINT_RD_LoadClamped(ipixel).rgb);
     float temporalVariance = clamp(GLINT_FiniteOr(GLINT_RD_LoadVariance(ipixel), 1.0), 0.0, 65504.0);
-    if (surface.alpha < c.mirrorThreshold) {
+    if (surface.alpha < c.mirrorThreshold)
+    {
         // Mirrors keep their own sample (no spatial reuse), as in the prefilter.
         GLINT_RD_StoreReconstructed(ipixel, float4(own, temporalVariance));
         return;
@@ -115,7 +122,8 @@ void GLINT_RD_Reconstruct(GLINT_ReflectionsDenoiserRatioConstants r, uint groupI
     float weightSum = 0.0;
     float lumaMean = 0.0;
     float lumaM2 = 0.0;
-    for (uint tap = 0; tap < 9; ++tap) {
+    for (uint tap = 0; tap < 9; ++tap)
+    {
         // Tap 0 is the centre itself; taps 1..8 the rotated disk, Gaussian-weighted by their
         // radius in the unit disk (sigma 0.9).
         float2 unit = tap == 0 ? float2(0.0, 0.0) : g_glint_rd_ratio_taps[tap - 1];
@@ -128,7 +136,8 @@ void GLINT_RD_Reconstruct(GLINT_ReflectionsDenoiserRatioConstants r, uint groupI
         float lengthSquared = dot(L, L);
         // An empty ray (not traced, or not a usable ray) still counts, barely.
         float w = 1e-6;
-        if (lengthSquared > 0.25 && GLINT_IsFinite(ray.w) && ray.w >= 0.0) {
+        if (lengthSquared > 0.25 && GLINT_IsFinite(ray.w) && ray.w >= 0.0)
+        {
             float spatial = exp(-dot(unit, unit) / (2.0 * 0.9 * 0.9));
             w = spatial * GLINT_RD_RatioWeight(N, V, NdotV, surface.alpha, L * rsqrt(lengthSquared), ray.w);
         }
@@ -143,7 +152,8 @@ void GLINT_RD_Reconstruct(GLINT_ReflectionsDenoiserRatioConstants r, uint groupI
     }
     float3 result = own;
     float spatialVariance = 0.0;
-    if (weightSum > 0.0 && GLINT_IsFinite(weightSum)) {
+    if (weightSum > 0.0 && GLINT_IsFinite(weightSum))
+    {
         result = sum / weightSum;
         float lumaFloor = max(lumaMean, 0.5);
         spatialVariance = max(lumaM2 / weightSum, 0.0) / (lumaFloor * lumaFloor);
