@@ -6,8 +6,12 @@
 #include "scene/scene_simulate.h"
 #include "support/gpu_test_context.h"
 
+#include <gpu/gpu_transfer.h>
+
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <string>
 
 namespace glint::test {
 
@@ -65,6 +69,31 @@ double glossyError(const capture::Frame& frame, const std::vector<float>& radian
         ++count;
     }
     return count ? sum / static_cast<double>(count) : -1.0;
+}
+
+void uploadPoisonedFrame(gpu::SssrRunner& runner, const gpu::SssrFrameInputs& clean, std::uint32_t index) {
+    if (index != 1 && index != 2) {
+        runner.upload(clean);
+        return;
+    }
+    const float value =
+        index == 1 ? std::numeric_limits<float>::quiet_NaN() : std::numeric_limits<float>::infinity();
+    // The histories are read from the other parity.
+    const char* parity = (index & 1u) != 0 ? "0" : "1";
+    for (const char* name : {"rd_radiance", "rd_variance", "rd_length", "rd_guides"}) {
+        VkClearColorValue fill{};
+        for (float& channel : fill.float32) channel = value;
+        gpu::clearImage(testContext(), runner.ownedImage(std::string(name) + parity), fill);
+    }
+    gpu::SssrFrameInputs bad = clean;
+    for (std::size_t i = 0; i < bad.depth.size(); i += 7) {
+        bad.color[4 * i] = value;
+        bad.normals[4 * i + (i % 3)] = value;
+        if (i % 21 == 0) bad.depth[i] = value;
+        if (i % 35 == 0) bad.motion[2 * i] = value;
+        if (i % 49 == 0) bad.material[4 * i] = value;
+    }
+    runner.upload(bad);
 }
 
 } // namespace glint::test

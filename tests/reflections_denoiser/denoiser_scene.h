@@ -35,4 +35,9 @@ double glossyError(const capture::Frame& frame, const std::vector<float>& radian
 double glossyError(const capture::Frame& frame, const std::vector<float>& radianceRgba,
                    const std::vector<float>& targetRgba, float roughnessThreshold);
 
+// Frame `index` of the non-finite tests: frames 1 and 2 fill every history the denoiser reads
+// that frame with NaN (frame 1) or Inf (frame 2) and upload `clean` with that value scattered
+// over colour, normals, depth, motion and roughness; other frames upload `clean` as it is.
+void uploadPoisonedFrame(gpu::SssrRunner& runner, const gpu::SssrFrameInputs& clean, std::uint32_t index);
+
 } // namespace glint::test

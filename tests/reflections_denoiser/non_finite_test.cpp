@@ -26,33 +26,11 @@ TEST_CASE("non-finite histories and inputs never reach the next frame's output",
         gpu::Context& context = test::testContext();
         gpu::SssrRunner runner(context, desc);
         runner.upload(scene.inputs);
-        const float nan = std::numeric_limits<float>::quiet_NaN(),
-                    inf = std::numeric_limits<float>::infinity();
         for (std::uint32_t index = 0; index < 4; ++index) {
             INFO("frame " << index);
             desc.frameIndex = index;
-            if (index == 1 || index == 2) {
-                // Every history this frame reads, poisoned (NaN on frame 1, Inf on frame 2).
-                const float value = index == 1 ? nan : inf;
-                const char* parity = (index & 1u) != 0 ? "0" : "1";
-                for (const char* name : {"rd_radiance", "rd_variance", "rd_length", "rd_guides"}) {
-                    VkClearColorValue fill{};
-                    for (float& channel : fill.float32) channel = value;
-                    gpu::clearImage(context, runner.ownedImage(std::string(name) + parity), fill);
-                }
-                // And scattered inputs.
-                gpu::SssrFrameInputs bad = scene.inputs;
-                for (std::size_t i = 0; i < bad.depth.size(); i += 7) {
-                    bad.color[4 * i] = value;
-                    bad.normals[4 * i + (i % 3)] = value;
-                    if (i % 21 == 0) bad.depth[i] = value;
-                    if (i % 35 == 0) bad.motion[2 * i] = value;
-                    if (i % 49 == 0) bad.material[4 * i] = value;
-                }
-                runner.upload(bad);
-            } else {
-                runner.upload(scene.inputs);
-            }
+            // Every history this frame reads, and scattered inputs, poisoned on frames 1 and 2.
+            test::uploadPoisonedFrame(runner, scene.inputs, index);
             ReflectionsDenoiserDesc denoiser = replay::denoiserFromFrame(frame, desc, index, index == 0);
             denoiser.halfPrecisionStorage = half;
             runner.run(desc, nullptr, &denoiser);
