@@ -2,10 +2,11 @@
 // bindings, callbacks, main. Engines read this file as the integration example for
 // glint/shadow_denoiser/glint_shadow_denoiser_filter.hlsli.
 //
-// Permutations: GLINT_SHADOW_DENOISER_TILE_SKIP=1 skips tiles the classification cleared and
-// counts the tiles it filters; GLINT_SHADOW_DENOISER_FILTER_FUSED=1 runs the three iterations in
+// Permutations: GLINT_SHADOW_DENOISER_FILTER_FUSED=1 runs the three iterations in
 // one dispatch of 16x16 groups (finalPass then selects the contrast remap);
-// GLINT_SHADOW_DENOISER_TILE_LIST=1 dispatches indirectly over the tiles classification listed.
+// GLINT_SHADOW_DENOISER_TILE_LIST=1 dispatches indirectly over the tiles classification listed;
+// GLINT_SHADOW_DENOISER_TILE_SKIP=1 (fused only) skips groups of cleared tiles. Both count the
+// tiles they filter.
 #include "entry/common/glint_entry_common.hlsli"
 #include "glint/shadow_denoiser/glint_shadow_denoiser_constants.h"
 #include "glint/shadow_denoiser/glint_shadow_denoiser_filter.hlsli"

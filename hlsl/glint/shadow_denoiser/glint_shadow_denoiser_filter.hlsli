@@ -16,17 +16,16 @@
 //   void   GLINT_SHADOW_DENOISER_StoreFiltered(int2 pixel, float2 meanVariance);
 //       Writes the result; the final pass writes (remapped mean, variance).
 //
-// With GLINT_SHADOW_DENOISER_TILE_SKIP=1 (tile metadata from the classification pass):
+// Tile skipping (tile metadata from the classification pass) takes these callbacks too:
 //   uint   GLINT_SHADOW_DENOISER_LoadTileMetadata(uint tileIndex);   one word per 8x8 tile
 //   void   GLINT_SHADOW_DENOISER_CountFilteredTile();                called once per filtered tile
-// A CLEAR tile skips the filter: passes with step 1 and the final pass write the constant
-// (1 for receivers of a LIGHT tile, else 0; variance 0), the step-2 pass writes nothing (its
-// output image already holds the constant from classification).
-//
-// With GLINT_SHADOW_DENOISER_TILE_LIST=1 (three-dispatch form only; implies tile skipping), the
-// dispatch is indirect, one group per tile classification listed:
+// - three dispatches, GLINT_SHADOW_DENOISER_TILE_LIST=1: the dispatch is indirect, one group
+//   per tile classification listed (never a CLEAR one), with
 //   uint2  GLINT_SHADOW_DENOISER_LoadFilterTile(uint listIndex);       8x8 tile coordinates
-// and the passes write listed tiles only: clear tiles' neighbours are rebuilt from the metadata.
+//   The passes write listed tiles only; CLEAR neighbours are rebuilt from the metadata, and
+//   classification wrote the CLEAR tiles' output.
+// - fused, GLINT_SHADOW_DENOISER_TILE_SKIP=1: a group whose four tiles are CLEAR writes their
+//   constant (1 for receivers of a LIGHT tile, else 0; variance 0) and stops.
 //
 // Weights, for a receiver c and a receiver neighbour q at step * (i, j), i, j in {-1, 0, 1}:
 //   w = k(i) k(j) exp(-|s_c - s_q| / sigma) exp(-|z_c - z_q| / (depthSigma z_c)) max(0, N_c . N_q)^normalPower
@@ -276,22 +275,6 @@ void GLINT_SHADOW_DENOISER_Filter(uint2 groupId, uint2 groupThreadId, uint group
     // Only the tiles classification listed (never clear ones) are dispatched; the others hold
     // their constant in the output already (classification wrote it).
     groupId = GLINT_SHADOW_DENOISER_LoadFilterTile(groupId.x);
-    if (groupIndex == 0)
-        GLINT_SHADOW_DENOISER_CountFilteredTile();
-#elif GLINT_SHADOW_DENOISER_TILE_SKIP
-    // Uniform across the group, so returning here keeps the barrier below legal.
-    uint tilesX = (inputSize.x + GLINT_SHADOW_DENOISER_FILTER_TILE - 1) / GLINT_SHADOW_DENOISER_FILTER_TILE;
-    uint metadata = GLINT_SHADOW_DENOISER_LoadTileMetadata(groupId.y * tilesX + groupId.x);
-    if ((metadata & GLINT_SHADOW_DENOISER_TILE_CLEAR) != 0u)
-    {
-        int2 clearPixel = int2(groupId * GLINT_SHADOW_DENOISER_FILTER_TILE + groupThreadId);
-        if (step == 2u || any(uint2(clearPixel) >= inputSize))
-            return;
-        bool lit = (metadata & GLINT_SHADOW_DENOISER_TILE_LIGHT) != 0u &&
-                   GLINT_SHADOW_DENOISER_ReceiverViewDepth(GLINT_SHADOW_DENOISER_LoadDepth(clearPixel), viewDepth) > 0.0;
-        GLINT_SHADOW_DENOISER_StoreFiltered(clearPixel, float2(lit ? 1.0 : 0.0, 0.0));
-        return;
-    }
     if (groupIndex == 0)
         GLINT_SHADOW_DENOISER_CountFilteredTile();
 #endif

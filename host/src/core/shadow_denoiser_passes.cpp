@@ -78,11 +78,12 @@ Pass filterPass(const ShadowDenoiserDesc& desc, std::uint32_t index, const char*
                  {"g_glint_normals", "shadow_normals", Access::Read},
                  {"g_glint_filter_output", output, Access::Write}};
     if (desc.classify && desc.skipClearedTiles) {
-        pass.pipeline = "shadow_denoiser_filter.skip";
         pass.uses.push_back({"g_glint_tile_metadata", "shadow_tile_metadata", Access::Read});
         pass.uses.push_back({"g_glint_filter_work", "shadow_filter_work", Access::ReadWrite});
         if (index == 0) pass.zeroBuffers = {"shadow_filter_work"};
     }
+    // Three dispatches with tile skipping always go through the tile list (fusedFilterPass
+    // picks its own pipeline).
     if (usesTileList(desc)) {
         pass.pipeline = "shadow_denoiser_filter.list";
         pass.dispatch = IndirectDispatch{"shadow_filter_args", 0};
