@@ -8,6 +8,8 @@
 
 #include <gpu/gpu_transfer.h>
 
+#include <catch2/catch.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -69,6 +71,18 @@ double glossyError(const capture::Frame& frame, const std::vector<float>& radian
         ++count;
     }
     return count ? sum / static_cast<double>(count) : -1.0;
+}
+
+void requireFiniteOverTiles(const gpu::SssrRunner& runner, const gpu::SssrFrameOutputs& out,
+                            const std::string& name) {
+    INFO(name);
+    const std::vector<float> texels = gpu::readbackImage(testContext(), runner.ownedImage(name));
+    const std::size_t channels = texels.size() / (std::size_t{out.width} * out.height);
+    for (std::uint32_t tile : out.tileList)
+        for (std::uint32_t y = tile >> 16; y < std::min(out.height, (tile >> 16) + 8); ++y)
+            for (std::uint32_t x = tile & 0xFFFFu; x < std::min(out.width, (tile & 0xFFFFu) + 8); ++x)
+                for (std::size_t c = 0; c < channels; ++c)
+                    REQUIRE(std::isfinite(texels[(std::size_t{y} * out.width + x) * channels + c]));
 }
 
 void uploadPoisonedFrame(gpu::SssrRunner& runner, const gpu::SssrFrameInputs& clean, std::uint32_t index) {

@@ -38,6 +38,11 @@ double glossyError(const capture::Frame& frame, const std::vector<float>& radian
 // Frame `index` of the non-finite tests: frames 1 and 2 fill every history the denoiser reads
 // that frame with NaN (frame 1) or Inf (frame 2) and upload `clean` with that value scattered
 // over colour, normals, depth, motion and roughness; other frames upload `clean` as it is.
+// Requires every channel of the runner's image `name` to be finite over the 8x8 tiles of
+// out.tileList (the only texels the denoiser writes).
+void requireFiniteOverTiles(const gpu::SssrRunner& runner, const gpu::SssrFrameOutputs& out,
+                            const std::string& name);
+
 void uploadPoisonedFrame(gpu::SssrRunner& runner, const gpu::SssrFrameInputs& clean, std::uint32_t index);
 
 } // namespace glint::test

@@ -39,18 +39,8 @@ TEST_CASE("non-finite histories and inputs never reach the next frame's output",
             // The histories this frame wrote, over the tiles it listed (the only texels the
             // denoiser writes, and the only ones next frame reads: the tile mask guards the rest).
             const char* written = (index & 1u) != 0 ? "1" : "0";
-            for (const char* name : {"rd_radiance", "rd_variance", "rd_length", "rd_guides"}) {
-                const std::vector<float> texels =
-                    gpu::readbackImage(context, runner.ownedImage(std::string(name) + written));
-                const std::size_t channels = texels.size() / (std::size_t{out.width} * out.height);
-                for (std::uint32_t tile : out.tileList)
-                    for (std::uint32_t y = tile >> 16; y < std::min(out.height, (tile >> 16) + 8); ++y)
-                        for (std::uint32_t x = tile & 0xFFFFu; x < std::min(out.width, (tile & 0xFFFFu) + 8);
-                             ++x)
-                            for (std::size_t c = 0; c < channels; ++c)
-                                REQUIRE(
-                                    std::isfinite(texels[(std::size_t{y} * out.width + x) * channels + c]));
-            }
+            for (const char* name : {"rd_radiance", "rd_variance", "rd_length", "rd_guides"})
+                test::requireFiniteOverTiles(runner, out, std::string(name) + written);
             REQUIRE(!out.tileList.empty());
         }
     }

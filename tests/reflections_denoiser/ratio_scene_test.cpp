@@ -177,19 +177,9 @@ TEST_CASE("non-finite histories and inputs never reach the ratio path's next out
             const gpu::SssrFrameOutputs out = runner.readback();
             for (float value : out.radiance) REQUIRE(std::isfinite(value));
             const char* written = (index & 1u) != 0 ? "1" : "0";
-            for (const char* name : {"rd_radiance", "rd_variance", "rd_prefiltered"}) {
-                const std::string image =
-                    std::string(name) + (std::string(name) == "rd_prefiltered" ? "" : written);
-                const std::vector<float> texels = gpu::readbackImage(context, runner.ownedImage(image));
-                const std::size_t channels = texels.size() / (std::size_t{out.width} * out.height);
-                for (std::uint32_t tile : out.tileList)
-                    for (std::uint32_t y = tile >> 16; y < std::min(out.height, (tile >> 16) + 8); ++y)
-                        for (std::uint32_t x = tile & 0xFFFFu; x < std::min(out.width, (tile & 0xFFFFu) + 8);
-                             ++x)
-                            for (std::size_t c = 0; c < channels; ++c)
-                                REQUIRE(
-                                    std::isfinite(texels[(std::size_t{y} * out.width + x) * channels + c]));
-            }
+            for (const char* name : {"rd_radiance", "rd_variance", "rd_prefiltered"})
+                test::requireFiniteOverTiles(
+                    runner, out, std::string(name) + (std::string(name) == "rd_prefiltered" ? "" : written));
             REQUIRE(!out.tileList.empty());
         }
     }
