@@ -1,10 +1,9 @@
 // Static scene from the simulator: the denoised shadow's error against reference.shadow over
 // penumbra pixels, frame by frame. The error must keep falling and end at the plain average of
 // the input over the same frames (see the numbers below and docs/shadow_denoiser.md).
-#include "shadow_denoiser/shadow_runner.h"
+#include "shadow_denoiser/scene_replay.h"
 #include "support/gpu_test_context.h"
 
-#include "replay/replay_shadow.h"
 #include "replay/replay_sssr.h"
 #include "scene/scene_file.h"
 #include "scene/scene_simulate.h"
@@ -13,7 +12,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
 
 using namespace glint;
 
@@ -45,17 +43,12 @@ TEST_CASE("static courtyard: the penumbra error converges to the plain input ave
     scene::Simulation sim = scene::simulate(test::testContext(), scene);
     REQUIRE(sim.frames.size() == kFrames);
 
-    std::optional<test::ShadowRunner> runner;
-    std::vector<float> previousDepth;
+    test::SceneShadowReplay replayer;
     std::vector<float> average;
     double first = 0.0, last = 0.0, averaged = 0.0, early = 0.0, late = 0.0;
     for (std::uint32_t index = 0; index < kFrames; ++index) {
         const capture::Frame& frame = sim.frames[index];
-        ShadowDenoiserDesc desc;
-        replay::shadowDescFromFrame(frame, index, index == 0, desc);
-        if (!runner) runner.emplace(desc);
-        const test::ShadowInputs inputs = replay::shadowInputsFromFrame(frame, previousDepth);
-        const test::ShadowOutputs outputs = runner->run(desc, inputs);
+        const auto [inputs, outputs] = replayer.run(frame, index);
         const std::vector<float> reference = replay::layerChannels(frame, "reference.shadow", 1);
         const double error = penumbraError(outputs.filtered, 2, reference);
         if (index == 0) first = error;
@@ -65,7 +58,6 @@ TEST_CASE("static courtyard: the penumbra error converges to the plain input ave
         if (average.empty()) average.assign(inputs.visibility.size(), 0.0f);
         for (std::size_t i = 0; i < average.size(); ++i) average[i] += inputs.visibility[i] / float(kFrames);
         if (index + 1 == kFrames) averaged = penumbraError(average, 1, reference);
-        previousDepth = inputs.depth;
     }
     INFO("penumbra MAE: frame 0 " << first << ", frame " << kFrames - 1 << " " << last << ", plain "
                                   << kFrames << "-frame average of the input " << averaged);

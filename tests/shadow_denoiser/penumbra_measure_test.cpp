@@ -5,10 +5,9 @@
 // The reference is rendered once (frame 0 of the same static scene, its own random numbers):
 // rendering it for every frame costs most of the time at large sizes and only the last frame's
 // error is wanted.
-#include "shadow_denoiser/shadow_runner.h"
+#include "shadow_denoiser/scene_replay.h"
 #include "support/gpu_test_context.h"
 
-#include "replay/replay_shadow.h"
 #include "replay/replay_sssr.h"
 #include "scene/scene_file.h"
 #include "scene/scene_simulate.h"
@@ -19,7 +18,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <optional>
 #include <string>
 
 using namespace glint;
@@ -70,21 +68,15 @@ TEST_CASE("penumbra error after 32 static frames at a given size and light", "[.
         replay::layerChannels(referenceSim.frames.at(0), "reference.shadow", 1);
     const auto simulated = std::chrono::steady_clock::now();
 
-    std::optional<test::ShadowRunner> runner;
-    std::vector<float> previousDepth, average;
+    test::SceneShadowReplay replayer;
+    std::vector<float> average;
     std::vector<float> last;
     for (std::uint32_t index = 0; index < kFrames; ++index) {
-        const capture::Frame& frame = sim.frames[index];
-        ShadowDenoiserDesc desc;
-        replay::shadowDescFromFrame(frame, index, index == 0, desc);
-        if (!runner) runner.emplace(desc);
-        const test::ShadowInputs inputs = replay::shadowInputsFromFrame(frame, previousDepth);
-        const test::ShadowOutputs outputs = runner->run(desc, inputs);
+        const auto [inputs, outputs] = replayer.run(sim.frames[index], index);
         if (average.empty()) average.assign(inputs.visibility.size(), 0.0f);
         for (std::size_t i = 0; i < average.size(); ++i)
             average[i] += inputs.visibility[i] / static_cast<float>(kFrames);
         if (index + 1 == kFrames) last = outputs.filtered;
-        previousDepth = inputs.depth;
     }
     std::size_t count = 0;
     const double denoised = penumbraError(last, 2, reference, count);

@@ -16,10 +16,9 @@
 // prints the table): "ghost" is the error over the pixels whose reference changed by more than
 // 0.5 with the move (the shadow left or arrived there), "switched" the fraction of those pixels
 // whose output is already nearer the new reference than the old one.
-#include "shadow_denoiser/shadow_runner.h"
+#include "shadow_denoiser/scene_replay.h"
 #include "support/gpu_test_context.h"
 
-#include "replay/replay_shadow.h"
 #include "replay/replay_sssr.h"
 #include "scene/scene_file.h"
 #include "scene/scene_simulate.h"
@@ -30,7 +29,6 @@
 #include <cmath>
 #include <cstdlib>
 #include <numbers>
-#include <optional>
 #include <sstream>
 
 using namespace glint;
@@ -139,16 +137,11 @@ std::vector<FrameErrors> track(const scene::Scene& scene, std::uint32_t moveFram
     std::vector<std::vector<float>> references;
     for (const capture::Frame& frame : referenceSim.frames)
         references.push_back(replay::layerChannels(frame, "reference.shadow", 1));
-    std::optional<test::ShadowRunner> runner;
-    std::vector<float> previousDepth, sum, before, settledOutput;
+    test::SceneShadowReplay replayer;
+    std::vector<float> sum, before, settledOutput;
     std::vector<FrameErrors> errors;
     for (std::uint32_t index = 0; index < scene.frameCount; ++index) {
-        const capture::Frame& frame = sim.frames[index];
-        ShadowDenoiserDesc desc;
-        replay::shadowDescFromFrame(frame, index, index == 0, desc);
-        if (!runner) runner.emplace(desc);
-        const test::ShadowInputs inputs = replay::shadowInputsFromFrame(frame, previousDepth);
-        const test::ShadowOutputs outputs = runner->run(desc, inputs);
+        const auto [inputs, outputs] = replayer.run(sim.frames[index], index);
         const std::vector<float>& reference =
             references[std::min(index, kLastStatic + moveFrames) - std::min(index, kLastStatic)];
         if (sum.empty()) sum.assign(inputs.visibility.size(), 0.0f);
@@ -180,7 +173,6 @@ std::vector<FrameErrors> track(const scene::Scene& scene, std::uint32_t moveFram
                 static_cast<double>(nearer) / static_cast<double>(std::max<std::size_t>(e.changed, 1));
         }
         errors.push_back(e);
-        previousDepth = inputs.depth;
     }
     return errors;
 }
