@@ -61,6 +61,10 @@ void ShadowRunner::setHistory(std::uint32_t frameIndex, const std::vector<float>
                               const std::vector<float>& shadow) {
     const char* read = (frameIndex & 1u) != 0 ? "shadow_moments0" : "shadow_moments1";
     uploadImage(context_, owned_.images.at(read), moments, 4);
+    // Last frame's metadata all zero (no tile clear): every history texel is read as uploaded,
+    // none rebuilt (rebuildClearHistory).
+    const vk::Buffer& metadata = owned_.buffers.at(shadowTileMetadataName(frameIndex + 1));
+    uploadBuffer(context_, metadata, std::span<const std::byte>(std::vector<std::byte>(metadata.size)));
     if (owned_.images.contains("shadow_scratch1"))
         uploadImage(context_, owned_.images.at("shadow_scratch1"), shadow, 2);
 }
@@ -84,7 +88,7 @@ ShadowOutputs ShadowRunner::run(const ShadowDenoiserDesc& desc, const ShadowInpu
     if (!readback) return outputs;
     outputs.mask = readWords(context_, owned_.buffers.at("shadow_mask"));
     if (desc.classify) {
-        outputs.metadata = readWords(context_, owned_.buffers.at("shadow_tile_metadata"));
+        outputs.metadata = readWords(context_, owned_.buffers.at(shadowTileMetadataName(desc.frameIndex)));
         const char* written = (desc.frameIndex & 1u) != 0 ? "shadow_moments1" : "shadow_moments0";
         outputs.moments = readbackImage(context_, owned_.images.at(written));
         if (!desc.filter) outputs.classified = readbackImage(context_, owned_.images.at("shadow_scratch0"));

@@ -37,6 +37,11 @@ float GLINT_SHADOW_DENOISER_LoadShadowHistory(int2 pixel)
     return g_glint_check[pixel.y + 4].w;
 }
 
+uint GLINT_SHADOW_DENOISER_LoadPreviousMetadata(uint tileIndex)
+{
+    return asuint(g_glint_check[tileIndex + 5].x);
+}
+
 void GLINT_SHADOW_DENOISER_StoreMetadata(uint tileIndex, uint metadata)
 {
     g_glint_check[tileIndex] = asfloat(uint4(metadata, 0, 0, 0));

@@ -28,24 +28,30 @@ TEST_CASE("shadow plan: passes, resources and sizes", "[plan]") {
     CHECK(std::get<DirectDispatch>(plan.passes[0].dispatch).groupsX == 1);
     CHECK(std::get<DirectDispatch>(plan.passes[1].dispatch).groupsX == 2);
     CHECK(std::get<DirectDispatch>(plan.passes[1].dispatch).groupsY == 1);
-    REQUIRE(plan.buffers.size() == 3);
-    CHECK(plan.buffers[2].name == "shadow_filter_work");
+    REQUIRE(plan.buffers.size() == 4);
+    CHECK(plan.buffers[3].name == "shadow_filter_work");
     CHECK(plan.passes[2].pipeline == "shadow_denoiser_filter.fused_skip");
     CHECK(plan.passes[2].zeroBuffers == std::vector<std::string>{"shadow_filter_work"});
     CHECK(plan.passes[2].groupSize[0] == 16);
     CHECK(std::get<DirectDispatch>(plan.passes[2].dispatch).groupsX == 1);
     CHECK(plan.buffers[0].name == "shadow_mask");
     CHECK(plan.buffers[0].size == 2 * 2 * 4);
-    CHECK(plan.buffers[1].name == "shadow_tile_metadata");
+    CHECK(plan.buffers[1].name == "shadow_tile_metadata0");
     CHECK(plan.buffers[1].size == 2 * 1 * 4);
+    CHECK(plan.buffers[2].name == "shadow_tile_metadata1");
     // scratch 0, moments 0/1, output: the fused filter needs no second scratch image.
     CHECK(plan.images.size() == 4);
-    // Moments ping-pong on the frame parity.
-    CHECK(plan.passes[1].uses[8].resource == "shadow_moments0");
+    // Moments and metadata ping-pong on the frame parity; the filter reads this frame's.
+    CHECK(plan.passes[1].uses[9].resource == "shadow_moments0");
+    CHECK(plan.passes[1].uses[6].resource == "shadow_tile_metadata1");
+    CHECK(plan.passes[1].uses[7].resource == "shadow_tile_metadata0");
     desc.frameIndex = 1;
     REQUIRE(planShadowDenoiser(desc, plan, &error) == Result::Ok);
-    CHECK(plan.passes[1].uses[8].resource == "shadow_moments1");
+    CHECK(plan.passes[1].uses[9].resource == "shadow_moments1");
     CHECK(plan.passes[1].uses[5].resource == "shadow_moments0");
+    CHECK(plan.passes[1].uses[6].resource == "shadow_tile_metadata0");
+    CHECK(plan.passes[1].uses[7].resource == "shadow_tile_metadata1");
+    CHECK(plan.passes[2].uses[4].resource == "shadow_tile_metadata1");
     CHECK(shadowMaskTiles({1917, 1077}).width == 240);
     CHECK(shadowMaskTiles({1917, 1077}).height == 270);
 
@@ -57,8 +63,9 @@ TEST_CASE("shadow plan: passes, resources and sizes", "[plan]") {
         std::memcpy(&flags, plan.passes[1].constants.data() + offsetof(Constants, flags), 4);
         return flags;
     };
-    CHECK(classifyFlags() ==
-          (GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_SKIP_CLEAR | GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_ANTI_LAG));
+    constexpr std::uint32_t kDefaults =
+        GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_ANTI_LAG | GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_REBUILD_CLEAR;
+    CHECK(classifyFlags() == (GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_SKIP_CLEAR | kDefaults));
 
     // Three dispatches (the default): filter0..2 of 8x8 groups, indirect over the tiles
     // classification lists (prepare resets the list), two scratch images.
@@ -72,13 +79,13 @@ TEST_CASE("shadow plan: passes, resources and sizes", "[plan]") {
     CHECK(plan.passes[2].pipeline == "shadow_denoiser_filter.list");
     CHECK(plan.passes[2].zeroBuffers == std::vector<std::string>{"shadow_filter_work"});
     CHECK(std::get<IndirectDispatch>(plan.passes[2].dispatch).resource == "shadow_filter_args");
-    REQUIRE(plan.buffers.size() == 5);
-    CHECK(plan.buffers[3].name == "shadow_filter_tiles");
-    CHECK(plan.buffers[3].size == 2 * 1 * 4);
-    CHECK(plan.buffers[4].name == "shadow_filter_args");
-    CHECK(plan.buffers[4].indirectArgs);
+    REQUIRE(plan.buffers.size() == 6);
+    CHECK(plan.buffers[4].name == "shadow_filter_tiles");
+    CHECK(plan.buffers[4].size == 2 * 1 * 4);
+    CHECK(plan.buffers[5].name == "shadow_filter_args");
+    CHECK(plan.buffers[5].indirectArgs);
     CHECK(plan.images.size() == 5);
-    CHECK(classifyFlags() == GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_ANTI_LAG);
+    CHECK(classifyFlags() == kDefaults);
     // Without tile skipping: a direct grid over every tile, no list.
     desc.skipClearedTiles = false;
     REQUIRE(planShadowDenoiser(desc, plan, &error) == Result::Ok);
@@ -88,13 +95,14 @@ TEST_CASE("shadow plan: passes, resources and sizes", "[plan]") {
     desc.skipClearedTiles = true;
     desc.resetHistory = true;
     REQUIRE(planShadowDenoiser(desc, plan, &error) == Result::Ok);
-    CHECK(classifyFlags() ==
-          (GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_RESET | GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_ANTI_LAG));
+    CHECK(classifyFlags() == (GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_RESET | kDefaults));
     desc.resetHistory = false;
     desc.antiLag = false;
+    desc.rebuildClearHistory = false;
     REQUIRE(planShadowDenoiser(desc, plan, &error) == Result::Ok);
     CHECK(classifyFlags() == 0u);
     desc.antiLag = true;
+    desc.rebuildClearHistory = true;
 
     desc.filter = false;
     desc.classify = false;

@@ -12,6 +12,7 @@
 [[vk::binding(4, 0)]] Texture2D<float4> g_glint_normals;
 [[vk::binding(5, 0)]] Texture2D<float2> g_glint_motion;
 [[vk::binding(6, 0)]] Texture2D<float4> g_glint_moments_history;
+[[vk::binding(7, 0)]] StructuredBuffer<uint> g_glint_previous_metadata;
 [[vk::binding(8, 0)]] RWStructuredBuffer<uint> g_glint_tile_metadata;
 [[vk::binding(9, 0)]] GLINT_IMAGE_FORMAT(rg32f) RWTexture2D<float2> g_glint_shadow_variance;
 [[vk::binding(10, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_moments;
@@ -69,6 +70,11 @@ float3 GLINT_SHADOW_DENOISER_LoadMomentsHistory(int2 pixel)
 float GLINT_SHADOW_DENOISER_LoadShadowHistory(int2 pixel)
 {
     return g_glint_moments_history.Load(int3(pixel, 0)).w;
+}
+
+uint GLINT_SHADOW_DENOISER_LoadPreviousMetadata(uint tileIndex)
+{
+    return g_glint_previous_metadata[tileIndex];
 }
 
 void GLINT_SHADOW_DENOISER_StoreMetadata(uint tileIndex, uint metadata)

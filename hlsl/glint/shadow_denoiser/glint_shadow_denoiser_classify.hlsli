@@ -13,6 +13,9 @@
 //   float3 GLINT_SHADOW_DENOISER_LoadMomentsHistory(int2 pixel);(mean, M2, n) of last frame
 //   float  GLINT_SHADOW_DENOISER_LoadShadowHistory(int2 pixel); last frame's accumulated shadow
 //                                                               (the .w of StoreMoments)
+//   uint   GLINT_SHADOW_DENOISER_LoadPreviousMetadata(uint tileIndex); last frame's tile metadata
+//          (read only with GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_REBUILD_CLEAR: its clear tiles
+//          stored no moments, and LoadPreviousDepth must then return last frame's LoadDepth)
 //   void   GLINT_SHADOW_DENOISER_StoreMetadata(uint tileIndex, uint metadata);
 //   void   GLINT_SHADOW_DENOISER_StoreShadowVariance(int2 pixel, float2 value);
 //   void   GLINT_SHADOW_DENOISER_StoreMoments(int2 pixel, float4 moments);  (mean, M2, n, shadow)
@@ -37,6 +40,7 @@ float3 GLINT_SHADOW_DENOISER_LoadNormal(int2 pixel);
 float2 GLINT_SHADOW_DENOISER_LoadMotion(int2 pixel);
 float3 GLINT_SHADOW_DENOISER_LoadMomentsHistory(int2 pixel);
 float GLINT_SHADOW_DENOISER_LoadShadowHistory(int2 pixel);
+uint GLINT_SHADOW_DENOISER_LoadPreviousMetadata(uint tileIndex);
 void GLINT_SHADOW_DENOISER_StoreMetadata(uint tileIndex, uint metadata);
 void GLINT_SHADOW_DENOISER_StoreShadowVariance(int2 pixel, float2 value);
 void GLINT_SHADOW_DENOISER_StoreMoments(int2 pixel, float4 moments);
@@ -46,6 +50,9 @@ void GLINT_SHADOW_DENOISER_StoreClearOutput(int2 pixel, float2 value);
 #endif
 
 groupshared uint g_glint_shadow_denoiser_classify_receivers;
+// OR and AND of the 3x6 mask words around the block, one word loaded per thread.
+groupshared uint g_glint_shadow_denoiser_classify_or;
+groupshared uint g_glint_shadow_denoiser_classify_and;
 // Horizontal sums of rows groupOrigin.y - 8 .. groupOrigin.y + 15 (24 x 8 columns).
 groupshared float g_glint_shadow_denoiser_classify_rows[24 * 8];
 
@@ -85,17 +92,38 @@ float GLINT_SHADOW_DENOISER_RowSum(int x, int y, uint2 inputSize, uint2 maskTile
     return sum;
 }
 
-float GLINT_SHADOW_DENOISER_BilinearHistory(float2 uv, uint2 inputSize, out bool valid)
+// Last frame's (mean, M2, n, accumulated shadow) of an in-image pixel. With REBUILD_CLEAR a
+// pixel of a tile that was clear stored nothing: its history is what the clear branch of
+// GLINT_SHADOW_DENOISER_Classify would have stored, from the tile's LIGHT bit and whether the
+// pixel was a receiver (its depth then is this frame's previous depth).
+float4 GLINT_SHADOW_DENOISER_LoadHistory(int2 pixel, uint2 inputSize, float4 viewDepth, uint flags)
+{
+    if ((flags & GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_REBUILD_CLEAR) != 0u)
+    {
+        uint tilesX = (inputSize.x + 7u) / 8u;
+        uint metadata = GLINT_SHADOW_DENOISER_LoadPreviousMetadata(uint(pixel.y >> 3) * tilesX + uint(pixel.x >> 3));
+        if ((metadata & GLINT_SHADOW_DENOISER_TILE_CLEAR) != 0u)
+        {
+            bool receiver =
+                GLINT_SHADOW_DENOISER_ClassifyViewDepth(GLINT_SHADOW_DENOISER_LoadPreviousDepth(pixel), viewDepth) > 0.0;
+            float value = receiver && (metadata & GLINT_SHADOW_DENOISER_TILE_LIGHT) != 0u ? 1.0 : 0.0;
+            return float4(value, 0.0, receiver ? 1.0 : 0.0, value);
+        }
+    }
+    return float4(GLINT_SHADOW_DENOISER_LoadMomentsHistory(pixel), GLINT_SHADOW_DENOISER_LoadShadowHistory(pixel));
+}
+
+float GLINT_SHADOW_DENOISER_BilinearHistory(float2 uv, uint2 inputSize, float4 viewDepth, uint flags, out bool valid)
 {
     float2 p = uv * float2(inputSize) - 0.5;
     float2 base = floor(p);
     float2 f = p - base;
     int2 b = int2(base);
     int2 last = int2(inputSize) - 1;
-    float h00 = GLINT_SHADOW_DENOISER_LoadShadowHistory(clamp(b, int2(0, 0), last));
-    float h10 = GLINT_SHADOW_DENOISER_LoadShadowHistory(clamp(b + int2(1, 0), int2(0, 0), last));
-    float h01 = GLINT_SHADOW_DENOISER_LoadShadowHistory(clamp(b + int2(0, 1), int2(0, 0), last));
-    float h11 = GLINT_SHADOW_DENOISER_LoadShadowHistory(clamp(b + int2(1, 1), int2(0, 0), last));
+    float h00 = GLINT_SHADOW_DENOISER_LoadHistory(clamp(b, int2(0, 0), last), inputSize, viewDepth, flags).w;
+    float h10 = GLINT_SHADOW_DENOISER_LoadHistory(clamp(b + int2(1, 0), int2(0, 0), last), inputSize, viewDepth, flags).w;
+    float h01 = GLINT_SHADOW_DENOISER_LoadHistory(clamp(b + int2(0, 1), int2(0, 0), last), inputSize, viewDepth, flags).w;
+    float h11 = GLINT_SHADOW_DENOISER_LoadHistory(clamp(b + int2(1, 1), int2(0, 0), last), inputSize, viewDepth, flags).w;
     float h = lerp(lerp(h00, h10, f.x), lerp(h01, h11, f.x), f.y);
     valid = GLINT_IsFinite(h);
     return valid ? clamp(h, 0.0, 1.0) : 0.0;
@@ -117,7 +145,7 @@ float GLINT_SHADOW_DENOISER_BilinearHistory(float2 uv, uint2 inputSize, out bool
 // larger score: above ANTILAG_THRESHOLD the history length is capped at
 // ANTILAG_LENGTH / (z - ANTILAG_THRESHOLD)^2 (at least 1; continuous at the threshold).
 float GLINT_SHADOW_DENOISER_AntiLagLength(int2 pixel, int2 previousPixel, float z, float previousZ, uint2 inputSize,
-                                          float4 viewDepth)
+                                          float4 viewDepth, uint flags)
 {
     float observed = 0.0;
     float expected = 0.0;
@@ -136,8 +164,9 @@ float GLINT_SHADOW_DENOISER_AntiLagLength(int2 pixel, int2 previousPixel, float 
             float currentZ = GLINT_SHADOW_DENOISER_ClassifyViewDepth(GLINT_SHADOW_DENOISER_LoadDepth(current), viewDepth);
             float pastZ =
                 GLINT_SHADOW_DENOISER_ClassifyViewDepth(GLINT_SHADOW_DENOISER_LoadPreviousDepth(previous), viewDepth);
-            float3 moments = GLINT_SHADOW_DENOISER_LoadMomentsHistory(previous);
-            float h = GLINT_SHADOW_DENOISER_LoadShadowHistory(previous);
+            float4 loaded = GLINT_SHADOW_DENOISER_LoadHistory(previous, inputSize, viewDepth, flags);
+            float3 moments = loaded.xyz;
+            float h = loaded.w;
             bool valid = currentZ > 0.0 && pastZ > 0.0 && abs(currentZ - z) <= GLINT_SHADOW_DENOISER_ANTILAG_DEPTH * z &&
                          abs(pastZ - previousZ) <= GLINT_SHADOW_DENOISER_ANTILAG_DEPTH * previousZ &&
                          GLINT_IsFinite(moments.z) && GLINT_IsFinite(h) && moments.z > 0.0;
@@ -186,27 +215,29 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint2 groupThreadId, uint gro
     bool receiver = inside && z > 0.0;
 
     if (groupIndex == 0)
+    {
         g_glint_shadow_denoiser_classify_receivers = 0u;
+        g_glint_shadow_denoiser_classify_or = 0u;
+        g_glint_shadow_denoiser_classify_and = 0xFFFFFFFFu;
+    }
     GroupMemoryBarrierWithGroupSync();
     if (receiver)
         InterlockedOr(g_glint_shadow_denoiser_classify_receivers, 1u);
+    // Uniform region: the 3x6 mask tiles around the block (24x24 pixels), clamped; threads
+    // 0..17 load one word each instead of every thread loading all 18.
+    if (groupIndex < 18u)
+    {
+        int2 firstTile = int2(groupId.x, groupId.y * 2u);
+        int2 tile = clamp(firstTile + int2(int(groupIndex % 3u) - 1, int(groupIndex / 3u) - 2), int2(0, 0),
+                          int2(c.maskTiles) - 1);
+        uint word = GLINT_SHADOW_DENOISER_LoadMask(tile);
+        InterlockedOr(g_glint_shadow_denoiser_classify_or, word);
+        InterlockedAnd(g_glint_shadow_denoiser_classify_and, word);
+    }
     GroupMemoryBarrierWithGroupSync();
     bool anyReceiver = g_glint_shadow_denoiser_classify_receivers != 0u;
-
-    // Uniform region: the 3x6 mask tiles around the block (24x24 pixels), clamped.
-    uint orMask = 0u;
-    uint andMask = 0xFFFFFFFFu;
-    int2 firstTile = int2(groupId.x, groupId.y * 2u);
-    for (int j = -2; j <= 3; ++j)
-        for (int i = -1; i <= 1; ++i)
-        {
-            int2 tile = clamp(firstTile + int2(i, j), int2(0, 0), int2(c.maskTiles) - 1);
-            uint word = GLINT_SHADOW_DENOISER_LoadMask(tile);
-            orMask |= word;
-            andMask &= word;
-        }
-    bool allLit = andMask == 0xFFFFFFFFu;
-    bool clear = !anyReceiver || allLit || orMask == 0u;
+    bool allLit = g_glint_shadow_denoiser_classify_and == 0xFFFFFFFFu;
+    bool clear = !anyReceiver || allLit || g_glint_shadow_denoiser_classify_or == 0u;
 
     if (groupIndex == 0)
     {
@@ -245,7 +276,8 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint2 groupThreadId, uint gro
         if ((c.flags & GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_SKIP_CLEAR) == 0u)
             GLINT_SHADOW_DENOISER_StoreShadowVariance(pixel, float2(value, 0.0));
 #endif
-        GLINT_SHADOW_DENOISER_StoreMoments(pixel, float4(value, 0.0, receiver ? 1.0 : 0.0, value));
+        if ((c.flags & GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_REBUILD_CLEAR) == 0u)
+            GLINT_SHADOW_DENOISER_StoreMoments(pixel, float4(value, 0.0, receiver ? 1.0 : 0.0, value));
         return;
     }
     if (!receiver)
@@ -315,9 +347,9 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint2 groupThreadId, uint gro
     bool historyFound = false;
     if (!disoccluded)
     {
-        float3 loaded = GLINT_SHADOW_DENOISER_LoadMomentsHistory(previousPixel);
+        float3 loaded = GLINT_SHADOW_DENOISER_LoadHistory(previousPixel, c.inputSize, c.viewDepth, c.flags).xyz;
         bool historyValid;
-        float bilinear = GLINT_SHADOW_DENOISER_BilinearHistory(uvPrevious, c.inputSize, historyValid);
+        float bilinear = GLINT_SHADOW_DENOISER_BilinearHistory(uvPrevious, c.inputSize, c.viewDepth, c.flags, historyValid);
         if (GLINT_IsFinite(loaded.x) && GLINT_IsFinite(loaded.y) && GLINT_IsFinite(loaded.z) && historyValid)
         {
             moments = float3(clamp(loaded.x, 0.0, 1.0), max(loaded.y, 0.0), clamp(loaded.z, 0.0, 1023.0));
@@ -342,7 +374,7 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint2 groupThreadId, uint gro
     n *= exp(-deviation * deviation / 20.0);
     // Anti-lag: the 17x17 clamp cannot see a shadow edge that moved inside its window.
     if (historyFound && (c.flags & GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_ANTI_LAG) != 0u)
-        n = min(n, GLINT_SHADOW_DENOISER_AntiLagLength(pixel, previousPixel, z, previousZ, c.inputSize, c.viewDepth));
+        n = min(n, GLINT_SHADOW_DENOISER_AntiLagLength(pixel, previousPixel, z, previousZ, c.inputSize, c.viewDepth, c.flags));
     float count = max(n, 1.0);
     // Variance of the accumulated mean (boosted while young): the filter's edge stop tightens as
     // samples accumulate, so the spatial filter fades out instead of biasing the penumbra.

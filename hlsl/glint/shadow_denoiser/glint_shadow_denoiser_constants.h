@@ -68,6 +68,12 @@ GLINT_CONSTANTS_END(GLINT_ShadowDenoiserFilterConstants);
 #define GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_SKIP_CLEAR 2u
 // ANTI_LAG: the 5x5 anti-lag test shortens contradicted histories (docs/shadow_denoiser.md).
 #define GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_ANTI_LAG 4u
+// REBUILD_CLEAR: clear tiles store no moments. Their history is rebuilt from last frame's tile
+// metadata and previous depth instead: (v, 0, receiver, v) with v = LIGHT && receiver, exactly
+// what they would have stored. Saves 16 bytes a pixel of writes on the ~90 % of a frame that is
+// clear. Set it on every frame of a sequence or on none (a frame that stores nothing for a
+// clear tile cannot be followed by one that reads the stored value).
+#define GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_REBUILD_CLEAR 8u
 
 // Matrices are column-vector (q = M p) and passed as four rows: q.i = dot(row_i, p).
 GLINT_CONSTANTS_BEGIN(GLINT_ShadowDenoiserClassifyConstants)

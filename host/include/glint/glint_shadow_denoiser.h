@@ -43,6 +43,10 @@ struct ShadowDenoiserDesc {
     // so moving shadows are followed within a few frames (docs/shadow_denoiser.md, "Motion").
     // Costs about 13 us at 1080p on an H100 (docs/performance.md).
     bool antiLag = true;
+    // Clear tiles store no moments; next frame rebuilds their history from this frame's tile
+    // metadata and depth (both frames' "shadow_previous_depth" must be the frame before's
+    // "shadow_depth"). Same results, 16 bytes a pixel fewer writes on clear tiles.
+    bool rebuildClearHistory = true;
 
     // Classification (temporal) inputs. Matrices are row-major 4x4 with column vectors (q = M p).
     std::array<double, 16> reprojection{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}; // VP_prev VP^-1
@@ -50,11 +54,14 @@ struct ShadowDenoiserDesc {
     std::array<float, 3> eyePosition{0.0f, 0.0f, 0.0f};
     bool vulkanNdc = true;        // y_n = 2v - 1 (true) or 1 - 2v (D3D-style)
     bool resetHistory = false;    // first frame, camera cut or resize: every history is ignored
-    std::uint32_t frameIndex = 0; // moments ping-pong on its parity
+    std::uint32_t frameIndex = 0; // moments and metadata ping-pong on its parity
 };
 
 // Words of the visibility mask: ceil(W / 8) x ceil(H / 4).
 Extent2D shadowMaskTiles(Extent2D size);
+
+// The tile metadata buffer frame `frameIndex` writes ("shadow_tile_metadata0" or "...1").
+std::string shadowTileMetadataName(std::uint32_t frameIndex);
 
 // Resources of the plan (application's inputs first):
 //   "shadow_visibility"     R32F W x H, sampled; 1 = lit, >= 0.5 counts as lit, NaN as shadowed
@@ -64,9 +71,11 @@ Extent2D shadowMaskTiles(Extent2D size);
 //   "shadow_motion"         RG W x H, convention A: uv_prev = uv + mv
 //   "shadow_filter_input"   RG32F W x H (mean, variance), only when classify is false
 //   "shadow_mask"           buffer, 4 bytes per mask word, written by "prepare"
-//   "shadow_tile_metadata"  buffer, 4 bytes per 8x8 tile: bit 0 CLEAR, bit 1 LIGHT
+//   "shadow_tile_metadata0/1" buffer, 4 bytes per 8x8 tile: bit 0 CLEAR, bit 1 LIGHT; written on
+//                           frame parity, the other read back as last frame's (rebuildClearHistory)
 //   "shadow_moments0/1"     RGBA32F (mean, M2, n, accumulated shadow): written on frame parity, read
-//                           on the other; .w is the next frame's shadow history
+//                           on the other; .w is the next frame's shadow history. With
+//                           rebuildClearHistory, texels of clear tiles are not written.
 //   "shadow_scratch0/1"     RG32F (shadow, variance): classification writes 0 (with the fused
 //                           filter and tile skipping, not in clear tiles); "filter0" writes 1,
 //                           "filter1" writes 0; scratch 1 only without fusedFilter

@@ -78,7 +78,7 @@ Pass filterPass(const ShadowDenoiserDesc& desc, std::uint32_t index, const char*
                  {"g_glint_normals", "shadow_normals", Access::Read},
                  {"g_glint_filter_output", output, Access::Write}};
     if (desc.classify && desc.skipClearedTiles) {
-        pass.uses.push_back({"g_glint_tile_metadata", "shadow_tile_metadata", Access::Read});
+        pass.uses.push_back({"g_glint_tile_metadata", shadowTileMetadataName(desc.frameIndex), Access::Read});
         pass.uses.push_back({"g_glint_filter_work", "shadow_filter_work", Access::ReadWrite});
         if (index == 0) pass.zeroBuffers = {"shadow_filter_work"};
     }
@@ -123,6 +123,7 @@ Pass classifyPass(const ShadowDenoiserDesc& desc, Extent2D tiles) {
     constants.ndcYSign = desc.vulkanNdc ? 1.0f : -1.0f;
     constants.flags = desc.resetHistory ? GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_RESET : 0u;
     if (desc.antiLag) constants.flags |= GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_ANTI_LAG;
+    if (desc.rebuildClearHistory) constants.flags |= GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_REBUILD_CLEAR;
     // The fused filter with tile skipping rebuilds clear tiles from the metadata.
     if (desc.filter && desc.fusedFilter && desc.skipClearedTiles)
         constants.flags |= GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_SKIP_CLEAR;
@@ -135,7 +136,8 @@ Pass classifyPass(const ShadowDenoiserDesc& desc, Extent2D tiles) {
                  {"g_glint_normals", "shadow_normals", Access::Read},
                  {"g_glint_motion", "shadow_motion", Access::Read},
                  {"g_glint_moments_history", odd ? "shadow_moments0" : "shadow_moments1", Access::Read},
-                 {"g_glint_tile_metadata", "shadow_tile_metadata", Access::Write},
+                 {"g_glint_previous_metadata", shadowTileMetadataName(desc.frameIndex + 1), Access::Read},
+                 {"g_glint_tile_metadata", shadowTileMetadataName(desc.frameIndex), Access::Write},
                  {"g_glint_shadow_variance", "shadow_scratch0", Access::Write},
                  {"g_glint_moments", odd ? "shadow_moments1" : "shadow_moments0", Access::Write}};
     if (usesTileList(desc)) {
@@ -148,6 +150,10 @@ Pass classifyPass(const ShadowDenoiserDesc& desc, Extent2D tiles) {
 }
 
 } // namespace
+
+std::string shadowTileMetadataName(std::uint32_t frameIndex) {
+    return (frameIndex & 1u) != 0 ? "shadow_tile_metadata1" : "shadow_tile_metadata0";
+}
 
 Extent2D shadowMaskTiles(Extent2D size) {
     return {core::divideRoundUp(size.width, GLINT_SHADOW_DENOISER_MASK_TILE_WIDTH),
@@ -185,7 +191,8 @@ Result planShadowDenoiser(const ShadowDenoiserDesc& desc, EffectPlan& plan, std:
         const std::uint64_t tileCount =
             std::uint64_t{core::divideRoundUp(w, GLINT_SHADOW_DENOISER_FILTER_TILE)} *
             core::divideRoundUp(h, GLINT_SHADOW_DENOISER_FILTER_TILE);
-        plan.buffers.push_back({"shadow_tile_metadata", tileCount * 4u, false});
+        plan.buffers.push_back({"shadow_tile_metadata0", tileCount * 4u, false});
+        plan.buffers.push_back({"shadow_tile_metadata1", tileCount * 4u, false});
         plan.images.push_back({"shadow_moments0", w, h, 1, Format::RGBA32Float});
         plan.images.push_back({"shadow_moments1", w, h, 1, Format::RGBA32Float});
         plan.passes.push_back(classifyPass(desc, tiles));
