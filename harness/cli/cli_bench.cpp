@@ -8,7 +8,6 @@
 #include "glint/glint_shadow_denoiser.h"
 
 #include <gpu/gpu_context.h>
-#include <gpu/gpu_lead_in.h>
 #include <gpu/gpu_plan_runner.h>
 #include <gpu/gpu_transfer.h>
 
@@ -16,7 +15,6 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
-#include <optional>
 #include <stdexcept>
 
 namespace glint::cli {
@@ -148,8 +146,6 @@ int runBench(const BenchOptions& options) {
     vk::Executor executor = vk::createExecutor(context.device);
     const vk::ResourceTable table = gpu::resourceTable(owned, external);
 
-    std::optional<gpu::BusyLeadIn> busy;
-    if (options.leadIn) busy.emplace(context);
     // Warm-up runs settle clocks and pipeline creation before anything is measured.
     gpu::executePlan(context, executor, setup.plan, table, std::min(options.runs, 10u));
     const gpu::PlanTimings timings = gpu::executePlan(context, executor, setup.plan, table, options.runs);
@@ -182,7 +178,6 @@ int runBench(const BenchOptions& options) {
         std::printf("  %-20s %9.2f us (sum of the medians)\n", "all passes", 1000.0 * total);
     }
 
-    busy.reset();
     vk::destroyExecutor(executor);
     gpu::destroyPlanResources(context, owned);
     for (vk::Image& input : inputs) vk::destroyImage(context.device, input);

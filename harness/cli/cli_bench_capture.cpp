@@ -7,7 +7,6 @@
 #include "cli_capture.h"
 #include "cli_commands.h"
 
-#include "gpu/gpu_lead_in.h"
 #include "scene/scene_file.h"
 #include "scene/scene_simulate.h"
 
@@ -91,7 +90,7 @@ void printCounters(std::FILE* out, const std::vector<replay::Counter>& counters)
 
 Measurement measureFrames(const gpu::Context& context, const std::vector<capture::Frame>& frames,
                           const capture::Environment& environment, replay::SessionOptions options,
-                          std::uint32_t runs, bool leadIn) {
+                          std::uint32_t runs) {
     if (frames.empty() || runs == 0) throw std::invalid_argument("nothing to time: no frames or no runs");
     options.readback = false;
     replay::Session session(context, frames.front(), environment, options);
@@ -105,8 +104,6 @@ Measurement measureFrames(const gpu::Context& context, const std::vector<capture
     // last frame back to back: uploads between timed frames would let the GPU clock down and
     // charge the passes for it (about 4x at 1080p on an H100).
     for (const capture::Frame& frame : frames) session.run(frame);
-    std::optional<gpu::BusyLeadIn> busy;
-    if (leadIn) busy.emplace(context);
     const std::uint32_t all = measurement.warmup + runs;
     for (std::uint32_t run = 0; run < all; ++run) {
         const replay::FrameResult result = session.repeat();
@@ -194,13 +191,12 @@ int runBenchCaptures(const BenchOptions& options) {
             }
             const capture::Frame& first = target.frames.front();
             const std::vector<std::string> effects = replay::effectsToRun(first, options.effects);
-            const Measurement measurement = measureFrames(context, target.frames, target.environment,
-                                                          sessionOptions, options.runs, options.leadIn);
+            const Measurement measurement =
+                measureFrames(context, target.frames, target.environment, sessionOptions, options.runs);
             std::fprintf(out, "%s %s: %ux%u, %zu frame(s), effects:", target.kind.c_str(),
                          target.path.c_str(), first.width, first.height, target.frames.size());
             for (const std::string& effect : effects) std::fprintf(out, " %s", effect.c_str());
-            std::fprintf(out, "; %u warm-up + %u measured runs%s\n", measurement.warmup, measurement.runs,
-                         options.leadIn ? ", each after 0.5 ms of other GPU work" : ", idle GPU");
+            std::fprintf(out, "; %u warm-up + %u measured runs\n", measurement.warmup, measurement.runs);
             printMeasurement(out, measurement);
             printCounters(out, measurement.counters);
             nlohmann::json entry = measurementJson(measurement);

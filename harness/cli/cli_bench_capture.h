@@ -36,7 +36,7 @@ struct Measurement {
 // sequence rather than of a first frame.
 Measurement measureFrames(const gpu::Context& context, const std::vector<capture::Frame>& frames,
                           const capture::Environment& environment, replay::SessionOptions options,
-                          std::uint32_t runs, bool leadIn = true);
+                          std::uint32_t runs);
 
 nlohmann::json deviceJson(const gpu::Context& context);
 nlohmann::json measurementJson(const Measurement& measurement);

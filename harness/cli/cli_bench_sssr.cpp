@@ -9,12 +9,10 @@
 #include "scene/scene_file.h"
 #include "scene/scene_simulate.h"
 
-#include <gpu/gpu_lead_in.h>
 #include <gpu/gpu_sssr_runner.h>
 
 #include <algorithm>
 #include <cstdio>
-#include <optional>
 #include <stdexcept>
 
 namespace glint::cli {
@@ -87,8 +85,6 @@ int runBenchSssr(const BenchOptions& options, const gpu::Context& context) {
     denoiser.previousClipFromWorld = core::multiply(desc.projection, desc.viewFromWorld);
     replay::copyDenoiserTunables(settings.denoiser, denoiser);
     std::vector<std::vector<double>> times(passes.size());
-    std::optional<gpu::BusyLeadIn> busy;
-    if (options.leadIn) busy.emplace(context);
     for (std::uint32_t run = 0; run < std::min(options.runs, 10u) + options.runs; ++run) {
         desc.frameIndex = run;
         denoiser.frameIndex = run;

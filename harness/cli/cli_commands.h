@@ -26,7 +26,6 @@ struct BenchOptions {
     std::string scene;                 // sssr: the scene to simulate (default the glossy room)
     std::vector<std::string> settings; // sssr: "name=value" desc overrides
     bool validate = false;
-    bool leadIn = true; // --no-lead-in: time on an idle GPU (gpu/gpu_lead_in.h)
     // Captures (cli_bench_capture.cpp): frame .exr files, sequence folders or scene .toml files
     // named instead of a synthetic effect.
     std::vector<std::string> captures;

@@ -51,8 +51,6 @@ int main(int argc, char** argv) {
         ->add_option("--effects", bench.effects,
                      "captures: depth_pyramid, reflections, shadows (default: declared)")
         ->delimiter(',');
-    benchCommand->add_flag("!--no-lead-in", bench.leadIn,
-                           "time each run on an idle GPU instead of after 0.5 ms of other GPU work");
     benchCommand->add_option("--json", bench.json,
                              "captures: also write the results as JSON to FILE ('-': stdout)");
 

@@ -37,9 +37,6 @@ struct Context {
     VkCommandPool commandPool = VK_NULL_HANDLE; // for submitAndWait; resettable buffers
     // Non-null when validation is on. Heap-allocated because the messenger holds its address.
     std::unique_ptr<ValidationStats> validation;
-    // Benchmarks only: recorded ahead of every timed run, set for a scope by gpu::BusyLeadIn
-    // (gpu_lead_in.h), hence mutable; empty otherwise.
-    mutable std::function<void(VkCommandBuffer)> timedLeadIn;
 };
 
 // Throws glint::vk::VulkanError or std::runtime_error with a one-line message on failure,

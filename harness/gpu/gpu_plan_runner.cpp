@@ -1,6 +1,5 @@
 #include "gpu/gpu_plan_runner.h"
 
-#include "gpu/gpu_lead_in.h"
 #include "gpu/gpu_timestamps.h"
 #include "gpu/gpu_transfer.h"
 
@@ -78,10 +77,7 @@ PlanTimings executePlan(const Context& context, vk::Executor& executor, const Ef
         for (uint32_t run = 0; run < runs; ++run) {
             vk::resetExecutor(executor);
             submitAndWait(context, [&](VkCommandBuffer cmd) {
-                if (timed) {
-                    recordTimedLeadIn(context, cmd);
-                    resetTimestamps(cmd, pool);
-                }
+                if (timed) resetTimestamps(cmd, pool);
                 vk::recordPlan(executor, cmd, plan, resources, hooks);
             });
             if (!timed) continue;

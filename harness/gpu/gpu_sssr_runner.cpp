@@ -1,6 +1,5 @@
 #include "gpu/gpu_sssr_runner.h"
 
-#include "gpu/gpu_lead_in.h"
 #include "gpu/gpu_timestamps.h"
 #include "gpu/gpu_transfer.h"
 
@@ -159,10 +158,7 @@ void SssrRunner::run(const SssrDesc& frame, std::vector<double>* timings,
     std::string error;
     Result result = Result::Ok;
     submitAndWait(context_, [&](VkCommandBuffer cmd) {
-        if (timed) {
-            recordTimedLeadIn(context_, cmd);
-            resetTimestamps(cmd, pool);
-        }
+        if (timed) resetTimestamps(cmd, pool);
         result = vk::dispatchSssr(effect_, executor_, cmd, frame, inputs, hooks, &error, denoiser);
     });
     if (timed) {
