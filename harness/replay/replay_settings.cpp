@@ -85,6 +85,8 @@ bool applyShadow(ShadowDenoiserDesc& desc, const std::string& name, const std::s
         desc.antiLag = parseBool(name, value);
     else if (name == "rebuildClearHistory")
         desc.rebuildClearHistory = parseBool(name, value);
+    else if (name == "fusedPrepare")
+        desc.fusedPrepare = parseBool(name, value);
     else if (name == "depthSigma")
         desc.depthSigma = parseFloat(name, value);
     else if (name == "normalPower")
@@ -138,7 +140,7 @@ void applySetting(EffectSettings& settings, const std::string& assignment) {
             "varianceThreshold, denoiser.historyClipScale, denoiser.maxHistoryLength, denoiser.spatialPath, "
             "denoiser.reconstructionRadius, denoiser.cleanupSigma, shadows.filter, shadows.classify, "
             "shadows.skipClearedTiles, "
-            "shadows.fusedFilter, shadows.antiLag, shadows.rebuildClearHistory, "
+            "shadows.fusedFilter, shadows.antiLag, shadows.rebuildClearHistory, shadows.fusedPrepare, "
             "shadows.depthSigma, shadows.normalPower)");
     settings.assignments.push_back(assignment);
 }
