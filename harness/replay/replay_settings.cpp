@@ -85,8 +85,6 @@ bool applyShadow(ShadowDenoiserDesc& desc, const std::string& name, const std::s
         desc.antiLag = parseBool(name, value);
     else if (name == "rebuildClearHistory")
         desc.rebuildClearHistory = parseBool(name, value);
-    else if (name == "fusedPrepare")
-        desc.fusedPrepare = parseBool(name, value);
     else if (name == "depthSigma")
         desc.depthSigma = parseFloat(name, value);
     else if (name == "normalPower")
@@ -140,7 +138,7 @@ void applySetting(EffectSettings& settings, const std::string& assignment) {
             "varianceThreshold, denoiser.historyClipScale, denoiser.maxHistoryLength, denoiser.spatialPath, "
             "denoiser.reconstructionRadius, denoiser.cleanupSigma, shadows.filter, shadows.classify, "
             "shadows.skipClearedTiles, "
-            "shadows.fusedFilter, shadows.antiLag, shadows.rebuildClearHistory, shadows.fusedPrepare, "
+            "shadows.fusedFilter, shadows.antiLag, shadows.rebuildClearHistory, "
             "shadows.depthSigma, shadows.normalPower)");
     settings.assignments.push_back(assignment);
 }

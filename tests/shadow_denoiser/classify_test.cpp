@@ -177,10 +177,6 @@ TEST_CASE("classify 64x48 with history and motion: matches the CPU reference", "
     // Without the anti-lag test (the reference skips its cap too).
     desc.antiLag = false;
     checkClassify(desc, movingInputs(64, 48, 12), 2);
-    // With a prepare pass: classification reads the stored mask instead of packing its own.
-    desc.antiLag = true;
-    desc.fusedPrepare = false;
-    checkClassify(desc, movingInputs(64, 48, 12), 2);
 }
 
 // The CPU reference stores every tile's moments and feeds them back; the device stores none for

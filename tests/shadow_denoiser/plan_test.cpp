@@ -17,28 +17,8 @@ TEST_CASE("shadow plan: passes, resources and sizes", "[plan]") {
     desc.size = {13, 7};
     EffectPlan plan;
     std::string error;
-    // By default classification packs the mask itself: no prepare pass, the mask written by
-    // classification, the list's arguments zeroed before it.
     REQUIRE(planShadowDenoiser(desc, plan, &error) == Result::Ok);
-    REQUIRE(plan.passes.size() == 4);
-    CHECK(plan.passes[0].pipeline == "shadow_denoiser_classify.visibility_list");
-    CHECK(plan.passes[0].zeroBuffers == std::vector<std::string>{"shadow_filter_args"});
-    CHECK(plan.passes[0].uses[0].resource == "shadow_mask");
-    CHECK(plan.passes[0].uses[0].access == Access::Write);
-    CHECK(plan.passes[0].uses[10].resource == "shadow_visibility");
-    CHECK(plan.passes[1].name == "filter0");
-    desc.skipClearedTiles = false;
-    REQUIRE(planShadowDenoiser(desc, plan, &error) == Result::Ok);
-    CHECK(plan.passes[0].pipeline == "shadow_denoiser_classify.visibility");
-    CHECK(plan.passes[0].zeroBuffers.empty());
-    desc.skipClearedTiles = true;
-    desc.classify = false;
-    REQUIRE(planShadowDenoiser(desc, plan, &error) == Result::Ok);
-    CHECK(plan.passes[0].name == "prepare");
-    desc.classify = true;
-
-    // With a prepare pass: prepare, classify, one filter dispatch of 16x16 groups (fused).
-    desc.fusedPrepare = false;
+    // Fused: prepare, classify, one filter dispatch of 16x16 groups.
     desc.fusedFilter = true;
     REQUIRE(planShadowDenoiser(desc, plan, &error) == Result::Ok);
     REQUIRE(plan.passes.size() == 3);

@@ -1,5 +1,5 @@
 // Prepare on the device against the CPU packer, bit for bit, at odd sizes; NaN visibility
-// counts as shadowed. The same for the words classification packs itself (fusedPrepare).
+// counts as shadowed.
 #include "reference/shadow_denoiser_reference.h"
 #include "shadow_denoiser/shadow_runner.h"
 #include "support/gpu_test_context.h"
@@ -13,12 +13,11 @@ using namespace glint;
 
 namespace {
 
-void checkPrepare(std::uint32_t width, std::uint32_t height, bool inClassify = false) {
+void checkPrepare(std::uint32_t width, std::uint32_t height) {
     ShadowDenoiserDesc desc;
     desc.size = {width, height};
     desc.filter = false;
-    desc.classify = inClassify;
-    desc.resetHistory = true;
+    desc.classify = false;
     test::ShadowInputs inputs = test::makeShadowInputs(width, height, width * 31u + height);
     // Values other than 0 and 1 exercise the threshold; NaN is shadowed.
     for (std::size_t i = 0; i < inputs.visibility.size(); i += 7) inputs.visibility[i] = 0.5f;
@@ -27,7 +26,7 @@ void checkPrepare(std::uint32_t width, std::uint32_t height, bool inClassify = f
         inputs.visibility[i] = std::numeric_limits<float>::quiet_NaN();
     const test::ShadowOutputs outputs = test::runShadowDenoiser(desc, inputs);
     const std::vector<std::uint32_t> expected = reference::packShadowMask(inputs.visibility, width, height);
-    INFO(width << "x" << height << (inClassify ? ", packed by classification" : ""));
+    INFO(width << "x" << height);
     REQUIRE(outputs.mask.size() == expected.size());
     std::size_t mismatches = 0;
     for (std::size_t i = 0; i < expected.size(); ++i) mismatches += outputs.mask[i] != expected[i] ? 1u : 0u;
@@ -39,19 +38,14 @@ void checkPrepare(std::uint32_t width, std::uint32_t height, bool inClassify = f
 
 TEST_CASE("prepare 1x1: bit-exact mask", "[prepare]") {
     checkPrepare(1, 1);
-    checkPrepare(1, 1, true);
 }
 TEST_CASE("prepare 13x7: bit-exact mask", "[prepare]") {
     checkPrepare(13, 7);
-    checkPrepare(13, 7, true);
 }
 TEST_CASE("prepare 8x4 and 33x17 (group edges): bit-exact mask", "[prepare]") {
     checkPrepare(8, 4);
     checkPrepare(33, 17);
-    checkPrepare(8, 4, true);
-    checkPrepare(33, 17, true);
 }
 TEST_CASE("prepare 1917x1077: bit-exact mask", "[prepare]") {
     checkPrepare(1917, 1077);
-    checkPrepare(1917, 1077, true);
 }

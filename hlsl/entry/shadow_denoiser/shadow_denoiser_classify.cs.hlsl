@@ -6,28 +6,7 @@
 #include "glint/shadow_denoiser/glint_shadow_denoiser_classify.hlsli"
 
 [[vk::binding(0, 0)]] ConstantBuffer<GLINT_ShadowDenoiserClassifyConstants> g_glint_constants;
-#if GLINT_SHADOW_DENOISER_CLASSIFY_FROM_VISIBILITY
-// Permutation "visibility": no prepare pass; the mask is packed here (and stored for the record).
-[[vk::binding(1, 0)]] RWStructuredBuffer<uint> g_glint_shadow_mask;
-[[vk::binding(14, 0)]] Texture2D<float> g_glint_visibility;
-
-float GLINT_SHADOW_DENOISER_LoadVisibility(int2 pixel)
-{
-    return g_glint_visibility.Load(int3(pixel, 0));
-}
-
-void GLINT_SHADOW_DENOISER_StoreMask(uint tileIndex, uint mask)
-{
-    g_glint_shadow_mask[tileIndex] = mask;
-}
-#else
 [[vk::binding(1, 0)]] StructuredBuffer<uint> g_glint_shadow_mask;
-
-uint GLINT_SHADOW_DENOISER_LoadMask(int2 tile)
-{
-    return g_glint_shadow_mask[uint(tile.y) * g_glint_constants.maskTiles.x + uint(tile.x)];
-}
-#endif
 [[vk::binding(2, 0)]] Texture2D<float> g_glint_depth;
 [[vk::binding(3, 0)]] Texture2D<float> g_glint_previous_depth;
 [[vk::binding(4, 0)]] Texture2D<float4> g_glint_normals;
@@ -44,14 +23,10 @@ uint GLINT_SHADOW_DENOISER_LoadMask(int2 tile)
 [[vk::binding(12, 0)]] RWStructuredBuffer<uint> g_glint_filter_tiles;
 [[vk::binding(13, 0)]] GLINT_IMAGE_FORMAT(rg32f) RWTexture2D<float2> g_glint_filter_output;
 
-// The arguments start at (0, 1, 1) from prepare, or at 0 (filled before this pass) when there is
-// no prepare pass: the maxima make them (count, 1, 1) either way.
 void GLINT_SHADOW_DENOISER_AppendFilterTile(uint2 tile)
 {
     uint index;
     InterlockedAdd(g_glint_filter_args[0], 1u, index);
-    InterlockedMax(g_glint_filter_args[1], 1u);
-    InterlockedMax(g_glint_filter_args[2], 1u);
     g_glint_filter_tiles[index] = tile.x | (tile.y << 16);
 }
 
@@ -60,6 +35,11 @@ void GLINT_SHADOW_DENOISER_StoreClearOutput(int2 pixel, float2 value)
     g_glint_filter_output[pixel] = value;
 }
 #endif
+
+uint GLINT_SHADOW_DENOISER_LoadMask(int2 tile)
+{
+    return g_glint_shadow_mask[uint(tile.y) * g_glint_constants.maskTiles.x + uint(tile.x)];
+}
 
 float GLINT_SHADOW_DENOISER_LoadDepth(int2 pixel)
 {

@@ -5,11 +5,7 @@
 // Integration: define these callbacks before or after including this header. Pixel and tile
 // arguments are always inside the image / mask.
 //
-//   uint   GLINT_SHADOW_DENOISER_LoadMask(int2 tile);          mask word of 8x4 tile (prepare's)
-// or, with GLINT_SHADOW_DENOISER_CLASSIFY_FROM_VISIBILITY=1 (no prepare pass: each group packs
-// the 3x6 mask words around its block from the visibility, and stores the block's own two):
-//   float  GLINT_SHADOW_DENOISER_LoadVisibility(int2 pixel);   as prepare's
-//   void   GLINT_SHADOW_DENOISER_StoreMask(uint tileIndex, uint mask);
+//   uint   GLINT_SHADOW_DENOISER_LoadMask(int2 tile);          mask word of 8x4 tile
 //   float  GLINT_SHADOW_DENOISER_LoadDepth(int2 pixel);         device depth, current frame
 //   float  GLINT_SHADOW_DENOISER_LoadPreviousDepth(int2 pixel); device depth, previous frame
 //   float3 GLINT_SHADOW_DENOISER_LoadNormal(int2 pixel);        unpacked world normal
@@ -37,14 +33,7 @@
 #include "glint/common/glint_math.hlsli"
 #include "glint/shadow_denoiser/glint_shadow_denoiser_constants.h"
 
-#if GLINT_SHADOW_DENOISER_CLASSIFY_FROM_VISIBILITY
-#include "glint/shadow_denoiser/glint_shadow_denoiser_mask.hlsli"
-void GLINT_SHADOW_DENOISER_StoreMask(uint tileIndex, uint mask);
-// The 3 x 6 mask words around the block (tiles firstTile + (-1..1, -2..3), clamped to the mask).
-groupshared uint g_glint_shadow_denoiser_classify_masks[18];
-#else
 uint GLINT_SHADOW_DENOISER_LoadMask(int2 tile);
-#endif
 float GLINT_SHADOW_DENOISER_LoadDepth(int2 pixel);
 float GLINT_SHADOW_DENOISER_LoadPreviousDepth(int2 pixel);
 float3 GLINT_SHADOW_DENOISER_LoadNormal(int2 pixel);
@@ -85,32 +74,17 @@ float GLINT_SHADOW_DENOISER_GaussianWeight(int i)
     return GLINT_SHADOW_DENOISER_GAUSSIAN_17[i];
 }
 
-// Mask word of a tile (inside the mask) of the 3 x 6 window around the group's block, whose
-// first tile row and centre column are firstTile = (group x, 2 group y).
-uint GLINT_SHADOW_DENOISER_ClassifyMask(int2 tile, int2 firstTile)
-{
-#if GLINT_SHADOW_DENOISER_CLASSIFY_FROM_VISIBILITY
-    // A window slot holds the word of its clamped tile, so a clamped tile is found at its own
-    // offset from firstTile.
-    int2 slot = tile - firstTile + int2(1, 2);
-    return g_glint_shadow_denoiser_classify_masks[slot.y * 3 + slot.x];
-#else
-    return GLINT_SHADOW_DENOISER_LoadMask(tile);
-#endif
-}
-
 // Horizontal 17-tap sum for pixel row y (clamped to the image) centred on column x. Mask
 // tiles outside the image clamp to the border tile.
-float GLINT_SHADOW_DENOISER_RowSum(int x, int y, uint2 inputSize, uint2 maskTiles, int2 firstTile)
+float GLINT_SHADOW_DENOISER_RowSum(int x, int y, uint2 inputSize, uint2 maskTiles)
 {
     int row = clamp(y, 0, int(inputSize.y) - 1);
     int tileY = row >> 2;
     int tileX = x >> 3;
     uint shift = uint(row & 3) * 8u;
-    uint left = (GLINT_SHADOW_DENOISER_ClassifyMask(int2(max(tileX - 1, 0), tileY), firstTile) >> shift) & 0xFFu;
-    uint centre = (GLINT_SHADOW_DENOISER_ClassifyMask(int2(tileX, tileY), firstTile) >> shift) & 0xFFu;
-    uint right =
-        (GLINT_SHADOW_DENOISER_ClassifyMask(int2(min(tileX + 1, int(maskTiles.x) - 1), tileY), firstTile) >> shift) & 0xFFu;
+    uint left = (GLINT_SHADOW_DENOISER_LoadMask(int2(max(tileX - 1, 0), tileY)) >> shift) & 0xFFu;
+    uint centre = (GLINT_SHADOW_DENOISER_LoadMask(int2(tileX, tileY)) >> shift) & 0xFFu;
+    uint right = (GLINT_SHADOW_DENOISER_LoadMask(int2(min(tileX + 1, int(maskTiles.x) - 1), tileY)) >> shift) & 0xFFu;
     uint window = (left | (centre << 8) | (right << 16)) >> uint(x & 7);
     float sum = 0.0;
     [unroll] for (int k = 0; k <= 16; ++k)
@@ -171,7 +145,7 @@ float GLINT_SHADOW_DENOISER_BilinearHistory(float2 uv, uint2 inputSize, float4 v
 // larger score: above ANTILAG_THRESHOLD the history length is capped at
 // ANTILAG_LENGTH / (z - ANTILAG_THRESHOLD)^2 (at least 1; continuous at the threshold).
 float GLINT_SHADOW_DENOISER_AntiLagLength(int2 pixel, int2 previousPixel, float z, float previousZ, uint2 inputSize,
-                                          float4 viewDepth, uint flags, int2 firstTile)
+                                          float4 viewDepth, uint flags)
 {
     float observed = 0.0;
     float expected = 0.0;
@@ -200,7 +174,7 @@ float GLINT_SHADOW_DENOISER_AntiLagLength(int2 pixel, int2 previousPixel, float 
                 continue;
             float samples = min(moments.z, 1023.0);
             h = clamp(h, 0.0, 1.0);
-            uint word = GLINT_SHADOW_DENOISER_ClassifyMask(int2(current.x >> 3, current.y >> 2), firstTile);
+            uint word = GLINT_SHADOW_DENOISER_LoadMask(int2(current.x >> 3, current.y >> 2));
             float bit = ((word >> (uint(current.y & 3) * 8u + uint(current.x & 7))) & 1u) != 0u ? 1.0 : 0.0;
             float p = (h * samples + 0.25) / (samples + 0.5);
             observed += bit;
@@ -240,46 +214,20 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint2 groupThreadId, uint gro
     float z = GLINT_SHADOW_DENOISER_ClassifyViewDepth(depth, c.viewDepth);
     bool receiver = inside && z > 0.0;
 
-    int2 firstTile = int2(groupId.x, groupId.y * 2u);
     if (groupIndex == 0)
     {
         g_glint_shadow_denoiser_classify_receivers = 0u;
         g_glint_shadow_denoiser_classify_or = 0u;
         g_glint_shadow_denoiser_classify_and = 0xFFFFFFFFu;
     }
-#if GLINT_SHADOW_DENOISER_CLASSIFY_FROM_VISIBILITY
-    if (groupIndex < 18u)
-        g_glint_shadow_denoiser_classify_masks[groupIndex] = 0u;
-#endif
     GroupMemoryBarrierWithGroupSync();
     if (receiver)
         InterlockedOr(g_glint_shadow_denoiser_classify_receivers, 1u);
-    // Uniform region: the 3x6 mask tiles around the block (24x24 pixels), clamped.
-#if GLINT_SHADOW_DENOISER_CLASSIFY_FROM_VISIBILITY
-    // 18 words of 4 pixel rows: 72 rows of 8 pixels, one a thread (threads 0..7 take a second).
-    for (uint maskRow = groupIndex; maskRow < 72u; maskRow += 64u)
-    {
-        uint slot = maskRow >> 2;
-        int2 tile = clamp(firstTile + int2(int(slot % 3u) - 1, int(slot / 3u) - 2), int2(0, 0), int2(c.maskTiles) - 1);
-        InterlockedOr(g_glint_shadow_denoiser_classify_masks[slot],
-                      GLINT_SHADOW_DENOISER_MaskRow(tile, maskRow & 3u, c.inputSize));
-    }
-    GroupMemoryBarrierWithGroupSync();
-    uint orMask = 0u;
-    uint andMask = 0xFFFFFFFFu;
-    [unroll] for (uint slot = 0; slot < 18u; ++slot)
-    {
-        orMask |= g_glint_shadow_denoiser_classify_masks[slot];
-        andMask &= g_glint_shadow_denoiser_classify_masks[slot];
-    }
-    // The block's own two words (window slots (0, 0) and (0, 1)): the mask prepare would store.
-    if (groupIndex < 2u && firstTile.y + int(groupIndex) < int(c.maskTiles.y))
-        GLINT_SHADOW_DENOISER_StoreMask(uint(firstTile.y + int(groupIndex)) * c.maskTiles.x + uint(firstTile.x),
-                                        g_glint_shadow_denoiser_classify_masks[(2u + groupIndex) * 3u + 1u]);
-#else
-    // Threads 0..17 load one word each instead of every thread loading all 18.
+    // Uniform region: the 3x6 mask tiles around the block (24x24 pixels), clamped; threads
+    // 0..17 load one word each instead of every thread loading all 18.
     if (groupIndex < 18u)
     {
+        int2 firstTile = int2(groupId.x, groupId.y * 2u);
         int2 tile = clamp(firstTile + int2(int(groupIndex % 3u) - 1, int(groupIndex / 3u) - 2), int2(0, 0),
                           int2(c.maskTiles) - 1);
         uint word = GLINT_SHADOW_DENOISER_LoadMask(tile);
@@ -287,12 +235,9 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint2 groupThreadId, uint gro
         InterlockedAnd(g_glint_shadow_denoiser_classify_and, word);
     }
     GroupMemoryBarrierWithGroupSync();
-    uint orMask = g_glint_shadow_denoiser_classify_or;
-    uint andMask = g_glint_shadow_denoiser_classify_and;
-#endif
     bool anyReceiver = g_glint_shadow_denoiser_classify_receivers != 0u;
-    bool allLit = andMask == 0xFFFFFFFFu;
-    bool clear = !anyReceiver || allLit || orMask == 0u;
+    bool allLit = g_glint_shadow_denoiser_classify_and == 0xFFFFFFFFu;
+    bool clear = !anyReceiver || allLit || g_glint_shadow_denoiser_classify_or == 0u;
 
     if (groupIndex == 0)
     {
@@ -316,7 +261,7 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint2 groupThreadId, uint gro
         {
             uint row = (groupIndex >> 3) + part * 8u;
             g_glint_shadow_denoiser_classify_rows[row * 8u + (groupIndex & 7u)] = GLINT_SHADOW_DENOISER_RowSum(
-                column, int(groupId.y * 8u + row) - 8, c.inputSize, c.maskTiles, firstTile);
+                column, int(groupId.y * 8u + row) - 8, c.inputSize, c.maskTiles);
         }
         GroupMemoryBarrierWithGroupSync();
     }
@@ -350,7 +295,7 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint2 groupThreadId, uint gro
     mean = clamp(mean, 0.0, 1.0);
     float spatialVariance = max(mean - mean * mean, 0.0);
     float spatialSigma = sqrt(spatialVariance);
-    uint ownWord = GLINT_SHADOW_DENOISER_ClassifyMask(int2(pixel.x >> 3, pixel.y >> 2), firstTile);
+    uint ownWord = GLINT_SHADOW_DENOISER_LoadMask(int2(pixel.x >> 3, pixel.y >> 2));
     float x = ((ownWord >> (uint(pixel.y & 3) * 8u + uint(pixel.x & 7))) & 1u) != 0u ? 1.0 : 0.0;
 
     // Motion of the closest receiver of the 2x2 quad.
@@ -429,7 +374,7 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint2 groupThreadId, uint gro
     n *= exp(-deviation * deviation / 20.0);
     // Anti-lag: the 17x17 clamp cannot see a shadow edge that moved inside its window.
     if (historyFound && (c.flags & GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_ANTI_LAG) != 0u)
-        n = min(n, GLINT_SHADOW_DENOISER_AntiLagLength(pixel, previousPixel, z, previousZ, c.inputSize, c.viewDepth, c.flags, firstTile));
+        n = min(n, GLINT_SHADOW_DENOISER_AntiLagLength(pixel, previousPixel, z, previousZ, c.inputSize, c.viewDepth, c.flags));
     float count = max(n, 1.0);
     // Variance of the accumulated mean (boosted while young): the filter's edge stop tightens as
     // samples accumulate, so the spatial filter fades out instead of biasing the penumbra.

@@ -3,7 +3,9 @@
 //
 // Integration: define these callbacks before or after including this header.
 //
-//   float GLINT_SHADOW_DENOISER_LoadVisibility(int2 pixel);   (glint_shadow_denoiser_mask.hlsli)
+//   float GLINT_SHADOW_DENOISER_LoadVisibility(int2 pixel);
+//       Visibility of an in-image pixel, 1 = lit. Only called with 0 <= pixel < inputSize.
+//       A pixel is lit when the value is >= 0.5; NaN counts as shadowed.
 //   void  GLINT_SHADOW_DENOISER_StoreMask(uint tileIndex, uint mask);
 //       Writes the word of mask tile tileIndex = tile.y * maskTilesX + tile.x.
 //
@@ -24,13 +26,21 @@
 #define GLINT_SHADOW_DENOISER_PREPARE_HLSLI
 
 #include "glint/shadow_denoiser/glint_shadow_denoiser_constants.h"
-#include "glint/shadow_denoiser/glint_shadow_denoiser_mask.hlsli"
 
+float GLINT_SHADOW_DENOISER_LoadVisibility(int2 pixel);
 void GLINT_SHADOW_DENOISER_StoreMask(uint tileIndex, uint mask);
 #if GLINT_SHADOW_DENOISER_TILE_LIST
 // Writes the filter's indirect arguments (0, 1, 1): classification appends to the list.
 void GLINT_SHADOW_DENOISER_ResetFilterTiles();
 #endif
+
+uint GLINT_SHADOW_DENOISER_VisibilityBit(int2 pixel, uint2 inputSize)
+{
+    int2 clamped = clamp(pixel, int2(0, 0), int2(inputSize) - 1);
+    float visibility = GLINT_SHADOW_DENOISER_LoadVisibility(clamped);
+    // NaN compares false: shadowed.
+    return visibility >= 0.5 ? 1u : 0u;
+}
 
 void GLINT_SHADOW_DENOISER_Prepare(uint2 groupId, uint2 groupThreadId, uint groupIndex, uint2 inputSize,
                                    uint2 maskTiles)
@@ -43,9 +53,12 @@ void GLINT_SHADOW_DENOISER_Prepare(uint2 groupId, uint2 groupThreadId, uint grou
                  groupThreadId;
     if (any(tile >= maskTiles))
         return;
+    int2 origin = int2(tile * uint2(GLINT_SHADOW_DENOISER_MASK_TILE_WIDTH, GLINT_SHADOW_DENOISER_MASK_TILE_HEIGHT));
     uint mask = 0u;
     [unroll] for (uint row = 0; row < GLINT_SHADOW_DENOISER_MASK_TILE_HEIGHT; ++row)
-        mask |= GLINT_SHADOW_DENOISER_MaskRow(int2(tile), row, inputSize);
+        [unroll] for (uint column = 0; column < GLINT_SHADOW_DENOISER_MASK_TILE_WIDTH; ++column)
+            mask |= GLINT_SHADOW_DENOISER_VisibilityBit(origin + int2(column, row), inputSize)
+                    << (row * GLINT_SHADOW_DENOISER_MASK_TILE_WIDTH + column);
     GLINT_SHADOW_DENOISER_StoreMask(tile.y * maskTiles.x + tile.x, mask);
 }
 

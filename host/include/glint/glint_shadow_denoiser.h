@@ -47,10 +47,6 @@ struct ShadowDenoiserDesc {
     // metadata and depth (both frames' "shadow_previous_depth" must be the frame before's
     // "shadow_depth"). Same results, 16 bytes a pixel fewer writes on clear tiles.
     bool rebuildClearHistory = true;
-    // With classify: no prepare dispatch; each classification group packs the mask words it
-    // reads from the visibility itself (and stores its block's two, so "shadow_mask" is still
-    // the prepared mask). Saves a dispatch (docs/performance.md).
-    bool fusedPrepare = true;
 
     // Classification (temporal) inputs. Matrices are row-major 4x4 with column vectors (q = M p).
     std::array<double, 16> reprojection{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}; // VP_prev VP^-1
@@ -74,8 +70,7 @@ std::string shadowTileMetadataName(std::uint32_t frameIndex);
 //   "shadow_normals"        RGBA W x H, any float format, world-space normals
 //   "shadow_motion"         RG W x H, convention A: uv_prev = uv + mv
 //   "shadow_filter_input"   RG32F W x H (mean, variance), only when classify is false
-//   "shadow_mask"           buffer, 4 bytes per mask word, written by "prepare" (by "classify"
-//                           with fusedPrepare)
+//   "shadow_mask"           buffer, 4 bytes per mask word, written by "prepare"
 //   "shadow_tile_metadata0/1" buffer, 4 bytes per 8x8 tile: bit 0 CLEAR, bit 1 LIGHT; written on
 //                           frame parity, the other read back as last frame's (rebuildClearHistory)
 //   "shadow_moments0/1"     RGBA32F (mean, M2, n, accumulated shadow): written on frame parity, read

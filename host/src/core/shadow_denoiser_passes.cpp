@@ -110,7 +110,7 @@ Pass fusedFilterPass(const ShadowDenoiserDesc& desc, const char* input) {
 Pass classifyPass(const ShadowDenoiserDesc& desc, Extent2D tiles) {
     Pass pass;
     pass.name = "classify";
-    pass.pipeline = desc.fusedPrepare ? "shadow_denoiser_classify.visibility" : "shadow_denoiser_classify";
+    pass.pipeline = "shadow_denoiser_classify";
     pass.dispatch = core::gridFor(desc.size.width, desc.size.height, 1, pass.groupSize);
     shaders::GLINT_ShadowDenoiserClassifyConstants constants{};
     constants.inputSize = {desc.size.width, desc.size.height};
@@ -130,7 +130,7 @@ Pass classifyPass(const ShadowDenoiserDesc& desc, Extent2D tiles) {
     pass.constantsBinding = "g_glint_constants";
     pass.constants = core::packConstants(constants);
     const bool odd = (desc.frameIndex & 1u) != 0;
-    pass.uses = {{"g_glint_shadow_mask", "shadow_mask", desc.fusedPrepare ? Access::Write : Access::Read},
+    pass.uses = {{"g_glint_shadow_mask", "shadow_mask", Access::Read},
                  {"g_glint_depth", "shadow_depth", Access::Read},
                  {"g_glint_previous_depth", "shadow_previous_depth", Access::Read},
                  {"g_glint_normals", "shadow_normals", Access::Read},
@@ -140,12 +140,8 @@ Pass classifyPass(const ShadowDenoiserDesc& desc, Extent2D tiles) {
                  {"g_glint_tile_metadata", shadowTileMetadataName(desc.frameIndex), Access::Write},
                  {"g_glint_shadow_variance", "shadow_scratch0", Access::Write},
                  {"g_glint_moments", odd ? "shadow_moments1" : "shadow_moments0", Access::Write}};
-    if (desc.fusedPrepare) pass.uses.push_back({"g_glint_visibility", "shadow_visibility", Access::Read});
     if (usesTileList(desc)) {
-        pass.pipeline += desc.fusedPrepare ? "_list" : ".list";
-        // Without prepare nothing resets the list: the arguments start at 0 and appending
-        // makes them (count, 1, 1).
-        if (desc.fusedPrepare) pass.zeroBuffers = {"shadow_filter_args"};
+        pass.pipeline = "shadow_denoiser_classify.list";
         pass.uses.push_back({"g_glint_filter_args", "shadow_filter_args", Access::ReadWrite});
         pass.uses.push_back({"g_glint_filter_tiles", "shadow_filter_tiles", Access::Write});
         pass.uses.push_back({"g_glint_filter_output", "shadow_output", Access::Write});
@@ -184,7 +180,7 @@ Result planShadowDenoiser(const ShadowDenoiserDesc& desc, EffectPlan& plan, std:
     plan = EffectPlan{};
     plan.effect = "shadow_denoiser";
     plan.buffers.push_back({"shadow_mask", std::uint64_t{tiles.width} * tiles.height * 4u, false});
-    if (!desc.classify || !desc.fusedPrepare) plan.passes.push_back(preparePass(desc, tiles));
+    plan.passes.push_back(preparePass(desc, tiles));
     const std::uint32_t w = desc.size.width;
     const std::uint32_t h = desc.size.height;
     const bool threeDispatches = desc.filter && !desc.fusedFilter;
