@@ -98,19 +98,18 @@ float GLINT_SHADOW_DENOISER_RowSum(int x, int y, uint2 inputSize, uint2 maskTile
 // pixel was a receiver (its depth then is this frame's previous depth).
 float4 GLINT_SHADOW_DENOISER_LoadHistory(int2 pixel, uint2 inputSize, float4 viewDepth, uint flags)
 {
-    if ((flags & GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_REBUILD_CLEAR) != 0u)
-    {
-        uint tilesX = (inputSize.x + 7u) / 8u;
-        uint metadata = GLINT_SHADOW_DENOISER_LoadPreviousMetadata(uint(pixel.y >> 3) * tilesX + uint(pixel.x >> 3));
-        if ((metadata & GLINT_SHADOW_DENOISER_TILE_CLEAR) != 0u)
-        {
-            bool receiver =
-                GLINT_SHADOW_DENOISER_ClassifyViewDepth(GLINT_SHADOW_DENOISER_LoadPreviousDepth(pixel), viewDepth) > 0.0;
-            float value = receiver && (metadata & GLINT_SHADOW_DENOISER_TILE_LIGHT) != 0u ? 1.0 : 0.0;
-            return float4(value, 0.0, receiver ? 1.0 : 0.0, value);
-        }
-    }
-    return float4(GLINT_SHADOW_DENOISER_LoadMomentsHistory(pixel), GLINT_SHADOW_DENOISER_LoadShadowHistory(pixel));
+    float4 stored = float4(GLINT_SHADOW_DENOISER_LoadMomentsHistory(pixel), GLINT_SHADOW_DENOISER_LoadShadowHistory(pixel));
+    if ((flags & GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_REBUILD_CLEAR) == 0u)
+        return stored;
+    // All three loads before any test, so their latencies overlap; the stored texel of a clear
+    // tile (stale, possibly NaN) is selected away, never used.
+    uint tilesX = (inputSize.x + 7u) / 8u;
+    uint metadata = GLINT_SHADOW_DENOISER_LoadPreviousMetadata(uint(pixel.y >> 3) * tilesX + uint(pixel.x >> 3));
+    bool receiver =
+        GLINT_SHADOW_DENOISER_ClassifyViewDepth(GLINT_SHADOW_DENOISER_LoadPreviousDepth(pixel), viewDepth) > 0.0;
+    float value = receiver && (metadata & GLINT_SHADOW_DENOISER_TILE_LIGHT) != 0u ? 1.0 : 0.0;
+    float4 rebuilt = float4(value, 0.0, receiver ? 1.0 : 0.0, value);
+    return (metadata & GLINT_SHADOW_DENOISER_TILE_CLEAR) != 0u ? rebuilt : stored;
 }
 
 float GLINT_SHADOW_DENOISER_BilinearHistory(float2 uv, uint2 inputSize, float4 viewDepth, uint flags, out bool valid)
