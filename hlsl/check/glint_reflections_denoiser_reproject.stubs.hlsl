@@ -9,8 +9,7 @@ float4 GLINT_RD_LoadNoisy(int2 pixel) { return g_glint_check[pixel.x + 1]; }
 float2 GLINT_RD_LoadMotion(int2 pixel) { return g_glint_check[pixel.y + 1].xy; }
 bool GLINT_RD_HistoryTileListed(uint2 tile) { return g_glint_check[tile.x].x > 0.0; }
 float4 GLINT_RD_LoadHistoryGuides(int2 pixel) { return g_glint_check[pixel.x + 2]; }
-float3 GLINT_RD_LoadHistoryRadiance(int2 pixel) { return g_glint_check[pixel.x + 3].xyz; }
-float GLINT_RD_LoadHistoryVariance(int2 pixel) { return g_glint_check[pixel.x + 4].x; }
+float4 GLINT_RD_LoadHistoryRadianceAndVariance(int2 pixel) { return g_glint_check[pixel.x + 3]; }
 float GLINT_RD_LoadHistoryLength(int2 pixel) { return g_glint_check[pixel.x + 5].x; }
 void GLINT_RD_StoreClamped(int2 pixel, float4 value) { g_glint_check[pixel.x] = value; }
 void GLINT_RD_StoreReprojected(int2 pixel, float4 value) { g_glint_check[pixel.y] = value; }

@@ -12,7 +12,7 @@ float4 GLINT_RD_LoadReprojected(int2 pixel) { return g_glint_check[pixel.y + 1];
 float GLINT_RD_LoadLength(int2 pixel) { return g_glint_check[pixel.x + 2].x; }
 float4 GLINT_RD_LoadNoisy(int2 pixel) { return g_glint_check[pixel.x + 3]; }
 void GLINT_RD_StoreOutput(int2 pixel, float4 value) { g_glint_check[pixel.x] = value; }
-void GLINT_RD_StoreRadianceHistory(int2 pixel, float3 value) { g_glint_check[pixel.y].xyz = value; }
+void GLINT_RD_StoreRadianceHistory(int2 pixel, float4 value) { g_glint_check[pixel.y] = value; }
 void GLINT_RD_StoreVariance(int2 pixel, float value) { g_glint_check[pixel.x].w = value; }
 
 [numthreads(8, 8, 1)] void main(uint3 groupId : SV_GroupID, uint3 groupThreadId : SV_GroupThreadID)

@@ -47,6 +47,10 @@ TEST_CASE("three passes over SSSR's listed tiles, histories on the frame's parit
         }
         const std::string now = frame % 2 ? "1" : "0", before = frame % 2 ? "0" : "1";
         CHECK(uses(plan.passes[0], "g_glint_history_radiance", "rd_radiance" + before));
+        CHECK(uses(plan.passes[0], "g_glint_history_length", "rd_length" + before));
+        // Last frame's variance reaches reproject in the radiance history's alpha, not through
+        // its own image.
+        for (const ResourceUse& use : plan.passes[0].uses) CHECK(use.resource != "rd_variance" + before);
         CHECK(uses(plan.passes[0], "g_glint_history_tile_mask", "rd_tile_mask" + before));
         CHECK(uses(plan.passes[0], "g_glint_tile_mask", "rd_tile_mask" + now));
         CHECK(plan.passes[0].zeroBuffers == std::vector<std::string>{"rd_tile_mask" + now});

@@ -8,38 +8,38 @@
 [[vk::binding(7, 0)]] StructuredBuffer<uint> g_glint_history_tile_mask;
 [[vk::binding(8, 0)]] Texture2D<float4> g_glint_history_guides;
 [[vk::binding(9, 0)]] Texture2D<float4> g_glint_history_radiance;
-[[vk::binding(10, 0)]] Texture2D<float> g_glint_history_variance;
-[[vk::binding(11, 0)]] Texture2D<float> g_glint_history_length;
+// The radiance history carries the final variance in alpha (the resolve writes both), so that
+// a history tap is one fetch fewer.
+[[vk::binding(10, 0)]] Texture2D<float> g_glint_history_length;
 #if GLINT_RD_HALF_STORAGE
-[[vk::binding(12, 0)]] GLINT_IMAGE_FORMAT(rgba16f) RWTexture2D<float4> g_glint_clamped;
+[[vk::binding(11, 0)]] GLINT_IMAGE_FORMAT(rgba16f) RWTexture2D<float4> g_glint_clamped;
 #else
-[[vk::binding(12, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_clamped;
+[[vk::binding(11, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_clamped;
 #endif
 #if GLINT_RD_HALF_STORAGE
-[[vk::binding(13, 0)]] GLINT_IMAGE_FORMAT(rgba16f) RWTexture2D<float4> g_glint_reprojected;
+[[vk::binding(12, 0)]] GLINT_IMAGE_FORMAT(rgba16f) RWTexture2D<float4> g_glint_reprojected;
 #else
-[[vk::binding(13, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_reprojected;
+[[vk::binding(12, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_reprojected;
 #endif
 #if GLINT_RD_HALF_STORAGE
-[[vk::binding(14, 0)]] GLINT_IMAGE_FORMAT(r16f) RWTexture2D<float> g_glint_variance;
+[[vk::binding(13, 0)]] GLINT_IMAGE_FORMAT(r16f) RWTexture2D<float> g_glint_variance;
 #else
-[[vk::binding(14, 0)]] GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float> g_glint_variance;
+[[vk::binding(13, 0)]] GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float> g_glint_variance;
 #endif
 #if GLINT_RD_HALF_STORAGE
-[[vk::binding(15, 0)]] GLINT_IMAGE_FORMAT(r16f) RWTexture2D<float> g_glint_length;
+[[vk::binding(14, 0)]] GLINT_IMAGE_FORMAT(r16f) RWTexture2D<float> g_glint_length;
 #else
-[[vk::binding(15, 0)]] GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float> g_glint_length;
+[[vk::binding(14, 0)]] GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float> g_glint_length;
 #endif
-[[vk::binding(16, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_guides;
-[[vk::binding(17, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_average;
-[[vk::binding(18, 0)]] RWStructuredBuffer<uint> g_glint_tile_mask;
+[[vk::binding(15, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_guides;
+[[vk::binding(16, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_average;
+[[vk::binding(17, 0)]] RWStructuredBuffer<uint> g_glint_tile_mask;
 
 float4 GLINT_RD_LoadNoisy(int2 pixel) { return g_glint_noisy.Load(int3(pixel, 0)); }
 float2 GLINT_RD_LoadMotion(int2 pixel) { return g_glint_motion.Load(int3(pixel, 0)); }
 bool GLINT_RD_HistoryTileListed(uint2 tile) { return g_glint_history_tile_mask[tile.y * g_glint_rd.tiles.x + tile.x] != 0; }
 float4 GLINT_RD_LoadHistoryGuides(int2 pixel) { return g_glint_history_guides.Load(int3(pixel, 0)); }
-float3 GLINT_RD_LoadHistoryRadiance(int2 pixel) { return g_glint_history_radiance.Load(int3(pixel, 0)).rgb; }
-float GLINT_RD_LoadHistoryVariance(int2 pixel) { return g_glint_history_variance.Load(int3(pixel, 0)); }
+float4 GLINT_RD_LoadHistoryRadianceAndVariance(int2 pixel) { return g_glint_history_radiance.Load(int3(pixel, 0)); }
 float GLINT_RD_LoadHistoryLength(int2 pixel) { return g_glint_history_length.Load(int3(pixel, 0)); }
 void GLINT_RD_StoreClamped(int2 pixel, float4 value) { g_glint_clamped[pixel] = value; }
 void GLINT_RD_StoreReprojected(int2 pixel, float4 value) { g_glint_reprojected[pixel] = value; }

@@ -28,7 +28,7 @@ float4 GLINT_RD_LoadReprojected(int2 pixel) { return g_glint_reprojected.Load(in
 float GLINT_RD_LoadLength(int2 pixel) { return g_glint_length.Load(int3(pixel, 0)); }
 float4 GLINT_RD_LoadNoisy(int2 pixel) { return g_glint_output[pixel]; }
 void GLINT_RD_StoreOutput(int2 pixel, float4 value) { g_glint_output[pixel] = value; }
-void GLINT_RD_StoreRadianceHistory(int2 pixel, float3 value) { g_glint_radiance_history[pixel] = float4(value, 1.0); }
+void GLINT_RD_StoreRadianceHistory(int2 pixel, float4 value) { g_glint_radiance_history[pixel] = value; }
 void GLINT_RD_StoreVariance(int2 pixel, float value) { g_glint_variance[pixel] = value; }
 
 [numthreads(8, 8, 1)] void main(uint3 groupId : SV_GroupID, uint3 groupThreadId : SV_GroupThreadID)

@@ -10,8 +10,9 @@
 //   float2 GLINT_RD_LoadMotion(int2 pixel);             motion vector (scaled by motionScale: convention A)
 //   bool   GLINT_RD_HistoryTileListed(uint2 tile);      last frame's tile mask (false on a reset)
 //   float4 GLINT_RD_LoadHistoryGuides(int2 pixel);      last frame's (octahedral normal, view depth, alpha); depth 0: not glossy
-//   float3 GLINT_RD_LoadHistoryRadiance(int2 pixel);    last frame's resolved radiance
-//   float  GLINT_RD_LoadHistoryVariance(int2 pixel);
+//   float4 GLINT_RD_LoadHistoryRadianceAndVariance(int2 pixel);
+//                                                       last frame's resolved radiance, a = its final
+//                                                       variance (both from the resolve's radiance history)
 //   float  GLINT_RD_LoadHistoryLength(int2 pixel);
 //   void   GLINT_RD_StoreClamped(int2 pixel, float4 radianceAndHitDistance);
 //   void   GLINT_RD_StoreReprojected(int2 pixel, float4 historyAndValidity);
@@ -31,8 +32,7 @@ float4 GLINT_RD_LoadNoisy(int2 pixel);
 float2 GLINT_RD_LoadMotion(int2 pixel);
 bool GLINT_RD_HistoryTileListed(uint2 tile);
 float4 GLINT_RD_LoadHistoryGuides(int2 pixel);
-float3 GLINT_RD_LoadHistoryRadiance(int2 pixel);
-float GLINT_RD_LoadHistoryVariance(int2 pixel);
+float4 GLINT_RD_LoadHistoryRadianceAndVariance(int2 pixel);
 float GLINT_RD_LoadHistoryLength(int2 pixel);
 void GLINT_RD_StoreClamped(int2 pixel, float4 radianceAndHitDistance);
 void GLINT_RD_StoreReprojected(int2 pixel, float4 historyAndValidity);
@@ -56,64 +56,76 @@ struct GLINT_RD_History
     bool valid;
 };
 
-// Bilinear history at uv from the 2x2 taps that were glossy last frame, in a tile listed last
-// frame, and whose normal and depth match this pixel's (disocclusion weight >= 0.9 per tap).
-// Accepted when the accepted taps carry at least half of the bilinear weight.
-GLINT_RD_History GLINT_RD_SampleHistory(GLINT_ReflectionsDenoiserConstants c, float2 uv, GLINT_RD_Surface surface,
-                                        float expectedViewDepth)
+// One candidate's 2x2 history taps as fetched, none of them tested yet. Fetching and testing
+// are separate so that a candidate's loads can be issued long before its values are needed
+// (the on-surface candidate's before the span barrier, the parallax candidate's before the 9x9
+// statistics), and the latencies hide behind that work.
+struct GLINT_RD_HistoryTaps
 {
-    GLINT_RD_History h = (GLINT_RD_History)0;
-    h.valid = false;
-    // Tested after the loads, so that no branch stands between the two candidates' loads: the
-    // taps are clamped to the image whatever uv is (a non-finite one included).
-    bool usable = all(uv > 0.0) && all(uv < 1.0) && (c.flags & GLINT_RD_FLAG_RESET) == 0;
+    float2 f;           // bilinear fraction
+    bool usable;        // uv inside the image, no reset
+    bool listed[4];
+    float4 guides[4];
+    float4 radiance[4]; // rgb, a = variance
+    float length[4];
+};
+
+// The 2x2 taps around uv. The taps are clamped to the image whatever uv is (a non-finite one
+// included), so that no branch stands between the loads; whether uv was usable is tested in
+// GLINT_RD_EvaluateHistory. All loads of the four taps are issued before any of them is tested
+// (testing a tap's guides before fetching its radiance serialised memory round trips per tap).
+GLINT_RD_HistoryTaps GLINT_RD_FetchHistory(GLINT_ReflectionsDenoiserConstants c, float2 uv)
+{
+    GLINT_RD_HistoryTaps taps;
+    taps.usable = all(uv > 0.0) && all(uv < 1.0) && (c.flags & GLINT_RD_FLAG_RESET) == 0;
     float2 p = clamp(uv, -1.0, 2.0) * float2(c.inputSize) - 0.5;
     float2 base = floor(p);
-    float2 f = p - base;
-    // All loads of the four taps are issued before any of them is tested, so their latencies
-    // overlap (testing a tap's guides before fetching its radiance serialised three memory
-    // round trips per tap). A rejected tap's values are selected away, never multiplied by 0:
-    // they may be NaN.
-    int2 pixels[4];
-    float weights[4];
-    float4 guides[4];
-    bool listed[4];
-    float3 radiances[4];
-    float variances[4];
-    float lengths[4];
+    taps.f = p - base;
     [unroll] for (uint tap = 0; tap < 4; ++tap)
     {
         int2 offset = int2(tap & 1u, tap >> 1);
-        pixels[tap] = clamp(int2(base) + offset, int2(0, 0), int2(c.inputSize) - 1);
-        weights[tap] = (offset.x == 1 ? f.x : 1.0 - f.x) * (offset.y == 1 ? f.y : 1.0 - f.y);
-        listed[tap] = GLINT_RD_HistoryTileListed(uint2(pixels[tap]) / GLINT_RD_TILE);
-        guides[tap] = GLINT_RD_LoadHistoryGuides(pixels[tap]);
-        radiances[tap] = GLINT_RD_LoadHistoryRadiance(pixels[tap]);
-        variances[tap] = GLINT_RD_LoadHistoryVariance(pixels[tap]);
-        lengths[tap] = GLINT_RD_LoadHistoryLength(pixels[tap]);
+        int2 pixel = clamp(int2(base) + offset, int2(0, 0), int2(c.inputSize) - 1);
+        taps.listed[tap] = GLINT_RD_HistoryTileListed(uint2(pixel) / GLINT_RD_TILE);
+        taps.guides[tap] = GLINT_RD_LoadHistoryGuides(pixel);
+        taps.radiance[tap] = GLINT_RD_LoadHistoryRadianceAndVariance(pixel);
+        taps.length[tap] = GLINT_RD_LoadHistoryLength(pixel);
     }
+    return taps;
+}
+
+// Bilinear history from the 2x2 taps that were glossy last frame, in a tile listed last frame,
+// and whose normal and depth match this pixel's (disocclusion weight >= 0.9 per tap). Accepted
+// when the accepted taps carry at least half of the bilinear weight.
+GLINT_RD_History GLINT_RD_EvaluateHistory(GLINT_RD_HistoryTaps taps, GLINT_RD_Surface surface, float expectedViewDepth)
+{
+    GLINT_RD_History h = (GLINT_RD_History)0;
+    h.valid = false;
     float total = 0.0;
     float3 normalSum = float3(0.0, 0.0, 0.0);
     [unroll] for (uint t = 0; t < 4; ++t)
     {
-        float w = weights[t];
+        int2 offset = int2(t & 1u, t >> 1);
+        float weight = (offset.x == 1 ? taps.f.x : 1.0 - taps.f.x) * (offset.y == 1 ? taps.f.y : 1.0 - taps.f.y);
+        float4 guides = taps.guides[t];
         // Taps that were glossy last frame, in a tile listed last frame, whose normal and depth
         // match this pixel's (disocclusion weight >= 0.9).
-        bool accepted = w > 0.0 && listed[t] && guides[t].z > 0.0 && GLINT_IsFinite(guides[t].z);
-        float3 n = GLINT_RD_DecodeNormal(clamp(GLINT_RD_Finite3(float3(guides[t].xy, 0.0)).xy, -1.0, 1.0));
+        bool accepted = weight > 0.0 && taps.listed[t] && guides.z > 0.0 && GLINT_IsFinite(guides.z);
+        float3 n = GLINT_RD_DecodeNormal(clamp(GLINT_RD_Finite3(float3(guides.xy, 0.0)).xy, -1.0, 1.0));
         float fit = exp(-abs(1.0 - max(0.0, dot(n, surface.normal))) * 1.4) *
-                    exp(-abs(guides[t].z - expectedViewDepth) / expectedViewDepth);
+                    exp(-abs(guides.z - expectedViewDepth) / expectedViewDepth);
         accepted = accepted && fit >= 0.9;
-        if (!accepted)
-            continue;
-        h.radiance += w * GLINT_RD_SanitizeRadiance(radiances[t]);
-        h.variance += w * clamp(GLINT_FiniteOr(variances[t], 1.0), 0.0, 65504.0);
-        h.length += w * clamp(GLINT_FiniteOr(lengths[t], 0.0), 0.0, 65504.0);
-        h.alpha += w * GLINT_Saturate(GLINT_FiniteOr(guides[t].w, 1.0));
+        // A rejected tap is weighted by an exact 0 (a select, not a branch): every term below
+        // is made finite first (n always is), so it adds exactly nothing. Its raw values may be
+        // NaN.
+        float w = accepted ? weight : 0.0;
+        h.radiance += w * GLINT_RD_SanitizeRadiance(taps.radiance[t].rgb);
+        h.variance += w * clamp(GLINT_FiniteOr(taps.radiance[t].a, 1.0), 0.0, 65504.0);
+        h.length += w * clamp(GLINT_FiniteOr(taps.length[t], 0.0), 0.0, 65504.0);
+        h.alpha += w * GLINT_Saturate(GLINT_FiniteOr(guides.w, 1.0));
         normalSum += w * n;
         total += w;
     }
-    if (!usable || total < 0.5)
+    if (!taps.usable || total < 0.5)
         return (GLINT_RD_History)0;
     float inverse = 1.0 / total;
     h.radiance *= inverse;
@@ -130,73 +142,102 @@ void GLINT_RD_Reproject(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint
     uint entry = GLINT_RD_LoadTile(groupId);
     uint2 tileOrigin = uint2(entry & 0xFFFFu, entry >> 16);
     uint localIndex = local.y * GLINT_RD_TILE + local.x;
+    uint2 pixel = tileOrigin + local;
+    bool inImage = all(pixel < c.inputSize);
+    int2 ipixel = int2(min(pixel, c.inputSize - 1));
+    // The pixel's own surface and motion need nothing from the group: loaded with the span, so
+    // that they are in flight together instead of a round trip of their own after the barrier.
+    GLINT_RD_Surface surface = GLINT_RD_LoadSurface(c, ipixel);
+    float2 motion = GLINT_RD_LoadMotion(ipixel) * c.motionScale;
     // Unrolled (exactly 4 span slots a thread) so that the loads of all four are in flight
     // together instead of one slot's round trip after the other.
     [unroll] for (uint k = 0; k < GLINT_RD_SPAN * GLINT_RD_SPAN / (GLINT_RD_TILE * GLINT_RD_TILE); ++k)
     {
         uint i = localIndex + k * GLINT_RD_TILE * GLINT_RD_TILE;
-        int2 pixel = GLINT_RD_SpanPixel(c, tileOrigin, i);
-        GLINT_RD_Surface s = GLINT_RD_LoadSurface(c, pixel);
-        float4 noisy = GLINT_RD_LoadNoisy(pixel);
+        int2 spanPixel = GLINT_RD_SpanPixel(c, tileOrigin, i);
+        GLINT_RD_Surface s = GLINT_RD_LoadSurface(c, spanPixel);
+        float4 noisy = GLINT_RD_LoadNoisy(spanPixel);
         g_glint_rd_noisy[i] = s.glossy ? float4(GLINT_RD_SanitizeRadiance(noisy.rgb),
                                                 clamp(GLINT_FiniteOr(noisy.a, GLINT_RD_MISS_DISTANCE), 0.0,
                                                       GLINT_RD_MISS_DISTANCE))
                                        : float4(0.0, 0.0, 0.0, -1.0);
     }
+
+    float2 uv = (float2(ipixel) + 0.5) * c.inverseInputSize;
+    float3 viewPosition = GLINT_RD_ViewPosition(c, uv, surface.depth);
+    float expectedViewDepth;
+    GLINT_RD_PreviousUv(c, viewPosition, expectedViewDepth);
+    expectedViewDepth = max(expectedViewDepth, 1e-6);
+    // The on-surface candidate needs no neighbour either: its taps are fetched before the
+    // barrier and arrive while the group synchronises.
+    GLINT_RD_HistoryTaps surfaceTaps = (GLINT_RD_HistoryTaps)0;
+    if (surface.glossy)
+    {
+        float2 surfaceUv = uv + float2(GLINT_FiniteOr(motion.x, 1e9), GLINT_FiniteOr(motion.y, 1e9));
+        surfaceTaps = GLINT_RD_FetchHistory(c, surfaceUv);
+    }
     GroupMemoryBarrierWithGroupSync();
 
-    uint2 pixel = tileOrigin + local;
-    bool inImage = all(pixel < c.inputSize);
-    int2 ipixel = int2(min(pixel, c.inputSize - 1));
-    GLINT_RD_Surface surface = GLINT_RD_LoadSurface(c, ipixel);
     uint centre = (local.y + GLINT_RD_APRON) * GLINT_RD_SPAN + local.x + GLINT_RD_APRON;
     float3 current = g_glint_rd_noisy[centre].rgb;
 
-    // 9x9 Gaussian statistics over glossy neighbours, and the nearest hit of the 3x3 (one noisy
-    // hit distance is a poor parallax estimate: reference defect 11).
+    // The nearest hit of the 3x3 (one noisy hit distance is a poor parallax estimate: reference
+    // defect 11). First, so that the parallax candidate's taps are fetched before the 9x9
+    // statistics, which then hide their latency.
+    float hitDistance = GLINT_RD_MISS_DISTANCE;
+    [unroll] for (int hy = -1; hy <= 1; ++hy)
+        [unroll] for (int hx = -1; hx <= 1; ++hx)
+        {
+            float a = g_glint_rd_noisy[centre + hy * GLINT_RD_SPAN + hx].a;
+            hitDistance = min(hitDistance, a < 0.0 ? GLINT_RD_MISS_DISTANCE : a);
+        }
+    GLINT_RD_HistoryTaps virtualTaps = (GLINT_RD_HistoryTaps)0;
+    if (surface.glossy)
+    {
+        // Parallax: the reflected point continued behind the mirror, reprojected. A miss's
+        // "infinite" distance makes it rotation-only.
+        float viewLength = length(viewPosition);
+        float3 virtualPoint = viewPosition / max(viewLength, 1e-12) * (viewLength + hitDistance);
+        float unused;
+        virtualTaps = GLINT_RD_FetchHistory(c, GLINT_RD_PreviousUv(c, virtualPoint, unused));
+    }
+    // The on-surface taps were issued before the barrier and have had it to arrive: tested now,
+    // under the parallax taps' latency, so that only the tested history (not the raw taps)
+    // stays live through the statistics.
+    GLINT_RD_History onSurface = (GLINT_RD_History)0;
+    if (surface.glossy)
+        onSurface = GLINT_RD_EvaluateHistory(surfaceTaps, surface, expectedViewDepth);
+
+    // 9x9 Gaussian statistics over glossy neighbours. Only glossy pixels use them (a pixel that
+    // is not glossy has current = 0, which the clamp below keeps). Unrolled, so that the weights
+    // are constants and the offsets immediates; a neighbour that is not glossy holds rgb 0, so
+    // only its weight needs selecting away (an exact 0, not a branch).
     float3 sum = float3(0.0, 0.0, 0.0);
     float3 sumSquares = float3(0.0, 0.0, 0.0);
     float weightSum = 0.0;
-    float hitDistance = GLINT_RD_MISS_DISTANCE;
-    for (int y = -GLINT_RD_APRON; y <= GLINT_RD_APRON; ++y)
-        for (int x = -GLINT_RD_APRON; x <= GLINT_RD_APRON; ++x)
-        {
-            float4 q = g_glint_rd_noisy[centre + y * GLINT_RD_SPAN + x];
-            if (q.a < 0.0)
-                continue;
-            float w = GLINT_RD_GaussianWeight(x) * GLINT_RD_GaussianWeight(y);
-            sum += w * q.rgb;
-            sumSquares += w * q.rgb * q.rgb;
-            weightSum += w;
-            if (abs(x) <= 1 && abs(y) <= 1)
-                hitDistance = min(hitDistance, q.a);
-        }
+    if (surface.glossy)
+    {
+        [unroll] for (int y = -GLINT_RD_APRON; y <= GLINT_RD_APRON; ++y)
+            [unroll] for (int x = -GLINT_RD_APRON; x <= GLINT_RD_APRON; ++x)
+            {
+                float4 q = g_glint_rd_noisy[centre + y * GLINT_RD_SPAN + x];
+                float w = q.a < 0.0 ? 0.0 : GLINT_RD_GaussianWeight(x) * GLINT_RD_GaussianWeight(y);
+                sum += w * q.rgb;
+                sumSquares += w * q.rgb * q.rgb;
+                weightSum += w;
+            }
+    }
     float3 mean = weightSum > 0.0 ? sum / weightSum : current;
     float3 variance3 = weightSum > 0.0 ? abs(sumSquares / weightSum - mean * mean) : float3(0.0, 0.0, 0.0);
     float3 sigma = sqrt(variance3);
     // Firefly clamp before any spatial reuse (reference defect 14).
     current = min(current, mean + 3.0 * sigma);
 
-    float2 uv = (float2(ipixel) + 0.5) * c.inverseInputSize;
     GLINT_RD_History history = (GLINT_RD_History)0;
     history.valid = false;
-    float3 viewPosition = GLINT_RD_ViewPosition(c, uv, surface.depth);
     if (surface.glossy)
     {
-        float expectedViewDepth;
-        GLINT_RD_PreviousUv(c, viewPosition, expectedViewDepth);
-        expectedViewDepth = max(expectedViewDepth, 1e-6);
-        float2 motion = GLINT_RD_LoadMotion(ipixel) * c.motionScale;
-        float2 surfaceUv = uv + float2(GLINT_FiniteOr(motion.x, 1e9), GLINT_FiniteOr(motion.y, 1e9));
-        // Parallax: the reflected point continued behind the mirror, reprojected. A miss's
-        // "infinite" distance makes it rotation-only. Both positions first, so that the two
-        // candidates' loads can be in flight together.
-        float viewLength = length(viewPosition);
-        float3 virtualPoint = viewPosition / max(viewLength, 1e-12) * (viewLength + hitDistance);
-        float unused;
-        float2 virtualUv = GLINT_RD_PreviousUv(c, virtualPoint, unused);
-        GLINT_RD_History onSurface = GLINT_RD_SampleHistory(c, surfaceUv, surface, expectedViewDepth);
-        GLINT_RD_History virtualHistory = GLINT_RD_SampleHistory(c, virtualUv, surface, expectedViewDepth);
+        GLINT_RD_History virtualHistory = GLINT_RD_EvaluateHistory(virtualTaps, surface, expectedViewDepth);
         float virtualFit = dot(virtualHistory.normal, surface.normal);
         float surfaceFit = onSurface.valid ? dot(onSurface.normal, surface.normal) : -1.0;
         bool useVirtual = virtualHistory.valid && virtualFit > 0.9999 && virtualFit + 1e-3 > surfaceFit &&
@@ -231,6 +272,19 @@ void GLINT_RD_Reproject(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint
         historyLength = 1.0;
     }
 
+    // The pixel's own outputs do not depend on the tile average: stored before the reduction,
+    // so that they leave while the group reduces.
+    if (inImage)
+    {
+        float hitOut = surface.glossy ? hitDistance : GLINT_RD_MISS_DISTANCE;
+        GLINT_RD_StoreClamped(ipixel, float4(GLINT_RD_SanitizeRadiance(current), hitOut));
+        GLINT_RD_StoreReprojected(ipixel, float4(GLINT_RD_SanitizeRadiance(reprojected), history.valid ? 1.0 : 0.0));
+        GLINT_RD_StoreVariance(ipixel, clamp(GLINT_FiniteOr(temporalVariance, 1.0), 0.0, 65504.0));
+        GLINT_RD_StoreHistoryLength(ipixel, historyLength);
+        GLINT_RD_StoreGuides(ipixel, float4(GLINT_RD_EncodeNormal(surface.normal),
+                                            surface.glossy ? surface.viewDepth : 0.0, surface.alpha));
+    }
+
     // The tile's luminance-weighted average (bright outliers weigh less).
     float weight = surface.glossy && inImage ? max(exp(-0.3 * GLINT_RD_Luma(contribution)), 0.01) : 0.0;
     g_glint_rd_average[localIndex] = float4(contribution * weight, weight);
@@ -241,22 +295,13 @@ void GLINT_RD_Reproject(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint
             g_glint_rd_average[localIndex] += g_glint_rd_average[localIndex + stride];
         GroupMemoryBarrierWithGroupSync();
     }
-    uint2 tile = tileOrigin / GLINT_RD_TILE;
     if (localIndex == 0)
     {
+        uint2 tile = tileOrigin / GLINT_RD_TILE;
         float4 total = g_glint_rd_average[0];
         GLINT_RD_StoreAverage(tile, float4(GLINT_RD_SanitizeRadiance(total.rgb / max(total.a, 1e-3)), total.a));
         GLINT_RD_MarkTile(tile);
     }
-    if (!inImage)
-        return;
-    float hitOut = surface.glossy ? hitDistance : GLINT_RD_MISS_DISTANCE;
-    GLINT_RD_StoreClamped(ipixel, float4(GLINT_RD_SanitizeRadiance(current), hitOut));
-    GLINT_RD_StoreReprojected(ipixel, float4(GLINT_RD_SanitizeRadiance(reprojected), history.valid ? 1.0 : 0.0));
-    GLINT_RD_StoreVariance(ipixel, clamp(GLINT_FiniteOr(temporalVariance, 1.0), 0.0, 65504.0));
-    GLINT_RD_StoreHistoryLength(ipixel, historyLength);
-    GLINT_RD_StoreGuides(ipixel, float4(GLINT_RD_EncodeNormal(surface.normal), surface.glossy ? surface.viewDepth : 0.0,
-                                        surface.alpha));
 }
 
 #endif // GLINT_REFLECTIONS_DENOISER_REPROJECT_HLSLI

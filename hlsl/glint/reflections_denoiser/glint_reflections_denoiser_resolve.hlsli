@@ -11,7 +11,9 @@
 //   float  GLINT_RD_LoadLength(int2 pixel);         this frame's history length (reproject)
 //   float4 GLINT_RD_LoadNoisy(int2 pixel);          SSSR radiance (its alpha, the hit distance, is kept)
 //   void   GLINT_RD_StoreOutput(int2 pixel, float4 radianceAndHitDistance);
-//   void   GLINT_RD_StoreRadianceHistory(int2 pixel, float3 radiance);
+//   void   GLINT_RD_StoreRadianceHistory(int2 pixel, float4 radianceAndVariance);
+//                                                   rgb, a = the variance also given to StoreVariance
+//                                                   (next frame's reproject reads both in one fetch)
 //   void   GLINT_RD_StoreVariance(int2 pixel, float variance);
 //
 // Dispatch: [numthreads(8, 8, 1)], indirect (tiles, 1, 1).
@@ -26,7 +28,7 @@ float4 GLINT_RD_LoadReprojected(int2 pixel);
 float GLINT_RD_LoadLength(int2 pixel);
 float4 GLINT_RD_LoadNoisy(int2 pixel);
 void GLINT_RD_StoreOutput(int2 pixel, float4 radianceAndHitDistance);
-void GLINT_RD_StoreRadianceHistory(int2 pixel, float3 radiance);
+void GLINT_RD_StoreRadianceHistory(int2 pixel, float4 radianceAndVariance);
 void GLINT_RD_StoreVariance(int2 pixel, float variance);
 
 // Prefiltered rgb of the span; a = 1 for glossy pixels, 0 otherwise.
@@ -57,7 +59,7 @@ void GLINT_RD_Resolve(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint2 
     if (g_glint_rd_resolve_radiance[centre].a == 0.0)
     {
         // Not glossy: the output keeps classification's value; histories get defined zeros.
-        GLINT_RD_StoreRadianceHistory(ipixel, float3(0.0, 0.0, 0.0));
+        GLINT_RD_StoreRadianceHistory(ipixel, float4(0.0, 0.0, 0.0, 0.0));
         GLINT_RD_StoreVariance(ipixel, 0.0);
         return;
     }
@@ -98,8 +100,9 @@ void GLINT_RD_Resolve(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint2 
 
     float hitDistance = GLINT_RD_LoadNoisy(ipixel).a;
     GLINT_RD_StoreOutput(ipixel, float4(result, GLINT_FiniteOr(hitDistance, GLINT_RD_MISS_DISTANCE)));
-    GLINT_RD_StoreRadianceHistory(ipixel, result);
-    GLINT_RD_StoreVariance(ipixel, clamp(GLINT_FiniteOr(resultVariance, 1.0), 0.0, 65504.0));
+    float storedVariance = clamp(GLINT_FiniteOr(resultVariance, 1.0), 0.0, 65504.0);
+    GLINT_RD_StoreRadianceHistory(ipixel, float4(result, storedVariance));
+    GLINT_RD_StoreVariance(ipixel, storedVariance);
 }
 
 #endif // GLINT_REFLECTIONS_DENOISER_RESOLVE_HLSLI

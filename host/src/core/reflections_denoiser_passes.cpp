@@ -119,8 +119,8 @@ Result planReflectionsDenoiser(const ReflectionsDenoiserDesc& desc, EffectPlan& 
                            {"g_glint_motion", "motion", Access::Read},
                            {"g_glint_history_tile_mask", "rd_tile_mask" + before, Access::Read},
                            {"g_glint_history_guides", "rd_guides" + before, Access::Read},
+                           // rgb and, in alpha, the final variance (the resolve writes both).
                            {"g_glint_history_radiance", "rd_radiance" + before, Access::Read},
-                           {"g_glint_history_variance", "rd_variance" + before, Access::Read},
                            {"g_glint_history_length", "rd_length" + before, Access::Read},
                            {"g_glint_clamped", "rd_clamped", Access::Write},
                            {"g_glint_reprojected", "rd_reprojected", Access::Write},
