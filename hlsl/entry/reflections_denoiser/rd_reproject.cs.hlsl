@@ -37,7 +37,7 @@
 
 float4 GLINT_RD_LoadNoisy(int2 pixel) { return g_glint_noisy.Load(int3(pixel, 0)); }
 float2 GLINT_RD_LoadMotion(int2 pixel) { return g_glint_motion.Load(int3(pixel, 0)); }
-bool GLINT_RD_HistoryTileListed(uint2 tile) { return g_glint_history_tile_mask[tile.y * g_glint_rd.tiles.x + tile.x] != 0; }
+uint GLINT_RD_LoadHistoryTileMask(uint2 tile) { return g_glint_history_tile_mask[tile.y * g_glint_rd.tiles.x + tile.x]; }
 float4 GLINT_RD_LoadHistoryGuides(int2 pixel) { return g_glint_history_guides.Load(int3(pixel, 0)); }
 float4 GLINT_RD_LoadHistoryRadianceAndVariance(int2 pixel) { return g_glint_history_radiance.Load(int3(pixel, 0)); }
 float GLINT_RD_LoadHistoryLength(int2 pixel) { return g_glint_history_length.Load(int3(pixel, 0)); }
@@ -47,7 +47,10 @@ void GLINT_RD_StoreVariance(int2 pixel, float value) { g_glint_variance[pixel] =
 void GLINT_RD_StoreHistoryLength(int2 pixel, float value) { g_glint_length[pixel] = value; }
 void GLINT_RD_StoreGuides(int2 pixel, float4 value) { g_glint_guides[pixel] = value; }
 void GLINT_RD_StoreAverage(uint2 tile, float4 value) { g_glint_average[tile] = value; }
-void GLINT_RD_MarkTile(uint2 tile) { g_glint_tile_mask[tile.y * g_glint_rd.tiles.x + tile.x] = 1u; }
+void GLINT_RD_MarkTile(uint2 tile, uint bits)
+{
+    InterlockedOr(g_glint_tile_mask[tile.y * g_glint_rd.tiles.x + tile.x], bits);
+}
 
 [numthreads(8, 8, 1)] void main(uint3 groupId : SV_GroupID, uint3 groupThreadId : SV_GroupThreadID)
 {

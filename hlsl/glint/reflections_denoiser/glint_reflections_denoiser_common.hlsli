@@ -90,12 +90,19 @@ float2 GLINT_RD_PreviousUv(GLINT_ReflectionsDenoiserConstants c, float3 viewPosi
     return float2(0.5 * ndc.x + 0.5, 0.5 * c.ndcYSign * ndc.y + 0.5);
 }
 
-// The tile's 16x16 span (tile plus a 4-pixel apron) starts here; span texels outside the
-// image are clamped to its edge.
+// The pixel of slot spanIndex of a span (the tile plus an apron, span = 8 + 2 apron texels a
+// side, row-major); span texels outside the image are clamped to its edge. A pass whose taps
+// reach less far than GLINT_RD_APRON passes its own, smaller span (prefilter: 14x14).
+int2 GLINT_RD_SpanPixelOf(GLINT_ReflectionsDenoiserConstants c, uint2 tileOrigin, uint spanIndex, uint span, int apron)
+{
+    int2 offset = int2(spanIndex % span, spanIndex / span) - apron;
+    return clamp(int2(tileOrigin) + offset, int2(0, 0), int2(c.inputSize) - 1);
+}
+
+// The tile's 16x16 span (tile plus a 4-pixel apron: the 9x9 statistics).
 int2 GLINT_RD_SpanPixel(GLINT_ReflectionsDenoiserConstants c, uint2 tileOrigin, uint spanIndex)
 {
-    int2 offset = int2(spanIndex % GLINT_RD_SPAN, spanIndex / GLINT_RD_SPAN) - GLINT_RD_APRON;
-    return clamp(int2(tileOrigin) + offset, int2(0, 0), int2(c.inputSize) - 1);
+    return GLINT_RD_SpanPixelOf(c, tileOrigin, spanIndex, GLINT_RD_SPAN, GLINT_RD_APRON);
 }
 
 // Gaussian weights of the 9x9 neighbourhood statistics, exp(-3 i^2 / 25) for i in [-4, 4].
@@ -148,6 +155,13 @@ bool GLINT_RD_TileListed(uint2 tile);
 // Bilinear average at the pixel over the centres of the surrounding tiles, using only tiles
 // listed this frame (the others hold stale averages: reference defect 6). Tile centres are at
 // 8 i + 4, so the lookup is aligned at every image size (reference defect 3).
+//
+// Branch-free and unrolled: the four mask words and the four averages are all loaded at once
+// (tiles outside the tile grid read the clamped edge tile), so the lookup costs one memory
+// round trip instead of two per tile, one tile after the other; the passes call it before
+// their span barrier, so that it arrives while the group synchronises. A tile that is not used
+// is weighted by an exact 0 (a select): the value it multiplies is sanitised first, so it adds
+// exactly nothing whatever the stale average holds.
 float3 GLINT_RD_AverageAt(GLINT_ReflectionsDenoiserConstants c, uint2 pixel)
 {
     float2 p = (float2(pixel) + 0.5) / float(GLINT_RD_TILE) - 0.5;
@@ -155,16 +169,16 @@ float3 GLINT_RD_AverageAt(GLINT_ReflectionsDenoiserConstants c, uint2 pixel)
     float2 f = p - base;
     float3 sum = float3(0.0, 0.0, 0.0);
     float total = 0.0;
-    for (uint tap = 0; tap < 4; ++tap)
+    [unroll] for (uint tap = 0; tap < 4; ++tap)
     {
         int2 offset = int2(tap & 1u, tap >> 1);
         int2 tile = int2(base) + offset;
-        if (any(tile < 0) || any(tile >= int2(c.tiles)) || !GLINT_RD_TileListed(uint2(tile)))
-            continue;
-        float4 average = GLINT_RD_LoadAverage(uint2(tile));
-        if (!(average.a > 0.0))
-            continue;
-        float w = max((offset.x == 1 ? f.x : 1.0 - f.x) * (offset.y == 1 ? f.y : 1.0 - f.y), 1e-4);
+        bool inside = all(tile >= 0) && all(tile < int2(c.tiles));
+        uint2 clampedTile = uint2(clamp(tile, int2(0, 0), int2(c.tiles) - 1));
+        bool listed = GLINT_RD_TileListed(clampedTile);
+        float4 average = GLINT_RD_LoadAverage(clampedTile);
+        bool used = inside && listed && average.a > 0.0;
+        float w = used ? max((offset.x == 1 ? f.x : 1.0 - f.x) * (offset.y == 1 ? f.y : 1.0 - f.y), 1e-4) : 0.0;
         sum += w * GLINT_RD_SanitizeRadiance(average.rgb);
         total += w;
     }

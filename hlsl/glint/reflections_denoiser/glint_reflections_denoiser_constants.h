@@ -10,6 +10,10 @@
 #define GLINT_RD_TILE 8
 #define GLINT_RD_APRON 4
 #define GLINT_RD_SPAN 16
+// Tile masks hold one word per tile, zeroed by the host before reproject marks it: bit
+// dy * 2 + dx of tile t's word is set when tile t + (dx, dy), dx, dy in {0, 1}, was listed. Bit 0
+// is the tile's own; one word answers for the 2x2 tiles a bilinear history footprint touches.
+#define GLINT_RD_MASK_SELF 1u
 // The hit distance SSSR writes for misses ("infinite": rotation-only parallax).
 #define GLINT_RD_MISS_DISTANCE 65504.0
 

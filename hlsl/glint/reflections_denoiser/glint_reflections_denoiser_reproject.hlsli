@@ -8,7 +8,8 @@
 //
 //   float4 GLINT_RD_LoadNoisy(int2 pixel);              SSSR radiance: rgb, a = hit distance (65504 = miss)
 //   float2 GLINT_RD_LoadMotion(int2 pixel);             motion vector (scaled by motionScale: convention A)
-//   bool   GLINT_RD_HistoryTileListed(uint2 tile);      last frame's tile mask (false on a reset)
+//   uint   GLINT_RD_LoadHistoryTileMask(uint2 tile);    last frame's tile mask word (see
+//                                                       glint_reflections_denoiser_constants.h)
 //   float4 GLINT_RD_LoadHistoryGuides(int2 pixel);      last frame's (octahedral normal, view depth, alpha); depth 0: not glossy
 //   float4 GLINT_RD_LoadHistoryRadianceAndVariance(int2 pixel);
 //                                                       last frame's resolved radiance, a = its final
@@ -20,7 +21,7 @@
 //   void   GLINT_RD_StoreHistoryLength(int2 pixel, float length);
 //   void   GLINT_RD_StoreGuides(int2 pixel, float4 guides);
 //   void   GLINT_RD_StoreAverage(uint2 tile, float4 average);   rgb, a = weight sum
-//   void   GLINT_RD_MarkTile(uint2 tile);                        this frame's tile mask
+//   void   GLINT_RD_MarkTile(uint2 tile, uint bits);             this frame's tile mask: atomic OR
 //
 // Dispatch: [numthreads(8, 8, 1)], indirect (tiles, 1, 1) from SSSR's arguments at byte 12.
 #ifndef GLINT_REFLECTIONS_DENOISER_REPROJECT_HLSLI
@@ -30,7 +31,7 @@
 
 float4 GLINT_RD_LoadNoisy(int2 pixel);
 float2 GLINT_RD_LoadMotion(int2 pixel);
-bool GLINT_RD_HistoryTileListed(uint2 tile);
+uint GLINT_RD_LoadHistoryTileMask(uint2 tile);
 float4 GLINT_RD_LoadHistoryGuides(int2 pixel);
 float4 GLINT_RD_LoadHistoryRadianceAndVariance(int2 pixel);
 float GLINT_RD_LoadHistoryLength(int2 pixel);
@@ -40,7 +41,7 @@ void GLINT_RD_StoreVariance(int2 pixel, float variance);
 void GLINT_RD_StoreHistoryLength(int2 pixel, float length);
 void GLINT_RD_StoreGuides(int2 pixel, float4 guides);
 void GLINT_RD_StoreAverage(uint2 tile, float4 average);
-void GLINT_RD_MarkTile(uint2 tile);
+void GLINT_RD_MarkTile(uint2 tile, uint bits);
 
 // Noisy rgb (0 for pixels that are not glossy) and hit distance (-1: not glossy).
 groupshared float4 g_glint_rd_noisy[GLINT_RD_SPAN * GLINT_RD_SPAN];
@@ -81,11 +82,16 @@ GLINT_RD_HistoryTaps GLINT_RD_FetchHistory(GLINT_ReflectionsDenoiserConstants c,
     float2 p = clamp(uv, -1.0, 2.0) * float2(c.inputSize) - 0.5;
     float2 base = floor(p);
     taps.f = p - base;
+    // The taps lie in the first tap's tile or the next one right or down (the clamp keeps them
+    // in order), so that tile's mask word answers for all four: one load instead of four.
+    uint2 firstTile = uint2(clamp(int2(base), int2(0, 0), int2(c.inputSize) - 1)) / GLINT_RD_TILE;
+    uint maskWord = GLINT_RD_LoadHistoryTileMask(firstTile);
     [unroll] for (uint tap = 0; tap < 4; ++tap)
     {
         int2 offset = int2(tap & 1u, tap >> 1);
         int2 pixel = clamp(int2(base) + offset, int2(0, 0), int2(c.inputSize) - 1);
-        taps.listed[tap] = GLINT_RD_HistoryTileListed(uint2(pixel) / GLINT_RD_TILE);
+        uint2 step = uint2(pixel) / GLINT_RD_TILE - firstTile; // 0 or 1 each
+        taps.listed[tap] = (maskWord & (GLINT_RD_MASK_SELF << (step.y * 2u + step.x))) != 0;
         taps.guides[tap] = GLINT_RD_LoadHistoryGuides(pixel);
         taps.radiance[tap] = GLINT_RD_LoadHistoryRadianceAndVariance(pixel);
         taps.length[tap] = GLINT_RD_LoadHistoryLength(pixel);
@@ -295,12 +301,20 @@ void GLINT_RD_Reproject(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint
             g_glint_rd_average[localIndex] += g_glint_rd_average[localIndex + stride];
         GroupMemoryBarrierWithGroupSync();
     }
+    uint2 tile = tileOrigin / GLINT_RD_TILE;
     if (localIndex == 0)
     {
-        uint2 tile = tileOrigin / GLINT_RD_TILE;
         float4 total = g_glint_rd_average[0];
         GLINT_RD_StoreAverage(tile, float4(GLINT_RD_SanitizeRadiance(total.rgb / max(total.a, 1e-3)), total.a));
-        GLINT_RD_MarkTile(tile);
+    }
+    // The tile's bit in its own mask word and in those of the tiles left of, above and
+    // diagonally before it (one thread each): bit dy * 2 + dx of tile t means t + (dx, dy).
+    if (localIndex < 4)
+    {
+        int2 step = int2(localIndex & 1u, localIndex >> 1);
+        int2 owner = int2(tile) - step;
+        if (all(owner >= 0))
+            GLINT_RD_MarkTile(uint2(owner), GLINT_RD_MASK_SELF << localIndex);
     }
 }
 

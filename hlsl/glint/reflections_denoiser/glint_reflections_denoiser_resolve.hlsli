@@ -39,22 +39,32 @@ void GLINT_RD_Resolve(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint2 
     uint entry = GLINT_RD_LoadTile(groupId);
     uint2 tileOrigin = uint2(entry & 0xFFFFu, entry >> 16);
     uint localIndex = local.y * GLINT_RD_TILE + local.x;
+    uint2 pixel = tileOrigin + local;
+    bool inImage = all(pixel < c.inputSize);
+    int2 ipixel = int2(min(pixel, c.inputSize - 1));
+    // The pixel's own inputs need nothing from the group: loaded with the span, so that they
+    // arrive while the group synchronises instead of after the barrier (the tile average alone
+    // was two dependent round trips a tile). The output image is read before the group writes
+    // it: every pixel is read and written by its own thread only.
+    float3 average = GLINT_RD_AverageAt(c, uint2(ipixel));
+    float4 prefiltered = GLINT_RD_LoadPrefiltered(ipixel);
+    float4 reprojected = GLINT_RD_LoadReprojected(ipixel);
+    float storedLength = GLINT_RD_LoadLength(ipixel);
+    float hitDistance = GLINT_RD_LoadNoisy(ipixel).a;
     // Unrolled (exactly 4 span slots a thread) so that the loads of all four are in flight
     // together instead of one slot's round trip after the other.
     [unroll] for (uint k = 0; k < GLINT_RD_SPAN * GLINT_RD_SPAN / (GLINT_RD_TILE * GLINT_RD_TILE); ++k)
     {
         uint i = localIndex + k * GLINT_RD_TILE * GLINT_RD_TILE;
-        int2 pixel = GLINT_RD_SpanPixel(c, tileOrigin, i);
-        GLINT_RD_Surface s = GLINT_RD_LoadSurface(c, pixel);
-        float3 prefiltered = GLINT_RD_SanitizeRadiance(GLINT_RD_LoadPrefiltered(pixel).rgb);
-        g_glint_rd_resolve_radiance[i] = s.glossy ? float4(prefiltered, 1.0) : float4(0.0, 0.0, 0.0, 0.0);
+        int2 spanPixel = GLINT_RD_SpanPixel(c, tileOrigin, i);
+        GLINT_RD_Surface s = GLINT_RD_LoadSurface(c, spanPixel);
+        float3 spanPrefiltered = GLINT_RD_SanitizeRadiance(GLINT_RD_LoadPrefiltered(spanPixel).rgb);
+        g_glint_rd_resolve_radiance[i] = s.glossy ? float4(spanPrefiltered, 1.0) : float4(0.0, 0.0, 0.0, 0.0);
     }
     GroupMemoryBarrierWithGroupSync();
 
-    uint2 pixel = tileOrigin + local;
-    if (any(pixel >= c.inputSize))
+    if (!inImage)
         return;
-    int2 ipixel = int2(pixel);
     uint centre = (local.y + GLINT_RD_APRON) * GLINT_RD_SPAN + local.x + GLINT_RD_APRON;
     if (g_glint_rd_resolve_radiance[centre].a == 0.0)
     {
@@ -63,11 +73,13 @@ void GLINT_RD_Resolve(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint2 
         GLINT_RD_StoreVariance(ipixel, 0.0);
         return;
     }
+    // Unrolled, so that the weights are constants and the offsets immediates. A neighbour that
+    // is not glossy holds (0, 0, 0, 0), so its a (0 or 1) selects it away exactly.
     float3 sum = float3(0.0, 0.0, 0.0);
     float3 sumSquares = float3(0.0, 0.0, 0.0);
     float weightSum = 0.0;
-    for (int y = -GLINT_RD_APRON; y <= GLINT_RD_APRON; ++y)
-        for (int x = -GLINT_RD_APRON; x <= GLINT_RD_APRON; ++x)
+    [unroll] for (int y = -GLINT_RD_APRON; y <= GLINT_RD_APRON; ++y)
+        [unroll] for (int x = -GLINT_RD_APRON; x <= GLINT_RD_APRON; ++x)
         {
             float4 q = g_glint_rd_resolve_radiance[centre + y * GLINT_RD_SPAN + x];
             float w = q.a * GLINT_RD_GaussianWeight(x) * GLINT_RD_GaussianWeight(y);
@@ -77,13 +89,10 @@ void GLINT_RD_Resolve(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint2 
         }
     float3 mean = sum / weightSum;
     float3 sigma = sqrt(abs(sumSquares / weightSum - mean * mean));
-    float3 average = GLINT_RD_AverageAt(c, pixel);
-    float4 prefiltered = GLINT_RD_LoadPrefiltered(ipixel);
     float3 current = GLINT_RD_SanitizeRadiance(prefiltered.rgb);
     float variance = clamp(GLINT_FiniteOr(prefiltered.a, 1.0), 0.0, 65504.0);
-    float4 reprojected = GLINT_RD_LoadReprojected(ipixel);
     bool valid = reprojected.a > 0.5;
-    float historyLength = max(GLINT_FiniteOr(GLINT_RD_LoadLength(ipixel), 1.0), 1.0);
+    float historyLength = max(GLINT_FiniteOr(storedLength, 1.0), 1.0);
 
     // The clip box: the neighbourhood's spread plus its distance from the tile average, scaled.
     float3 extent = (sigma + abs(mean - average)) * c.historyClipScale * 1.4;
@@ -98,7 +107,6 @@ void GLINT_RD_Resolve(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint2 
     float difference = abs(lumaResult - lumaHistory) / max(max(lumaResult, lumaHistory), 0.5);
     float resultVariance = lerp(difference * difference, variance, historyWeight);
 
-    float hitDistance = GLINT_RD_LoadNoisy(ipixel).a;
     GLINT_RD_StoreOutput(ipixel, float4(result, GLINT_FiniteOr(hitDistance, GLINT_RD_MISS_DISTANCE)));
     float storedVariance = clamp(GLINT_FiniteOr(resultVariance, 1.0), 0.0, 65504.0);
     GLINT_RD_StoreRadianceHistory(ipixel, float4(result, storedVariance));
