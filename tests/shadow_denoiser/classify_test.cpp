@@ -179,6 +179,43 @@ TEST_CASE("classify 64x48 with history and motion: matches the CPU reference", "
     checkClassify(desc, movingInputs(64, 48, 12), 2);
 }
 
+// A zoom: the motion grows away from the image centre, so the whole-pixel offset to the previous
+// position changes inside some blocks and not in others. The device runs the anti-lag test from
+// a groupshared window where a block's offset is uniform and pixel by pixel elsewhere; both must
+// match the reference.
+TEST_CASE("classify with a zoom: uniform and mixed block offsets match the CPU reference", "[classify]") {
+    constexpr std::uint32_t width = 64, height = 48;
+    test::ShadowInputs inputs = movingInputs(width, height, 21);
+    std::size_t uniformBlocks = 0, mixedBlocks = 0;
+    for (std::uint32_t by = 0; by < height / 8; ++by)
+        for (std::uint32_t bx = 0; bx < width / 8; ++bx) {
+            bool first = true, mixed = false;
+            int firstOffset = 0;
+            for (std::uint32_t y = by * 8; y < by * 8 + 8; ++y)
+                for (std::uint32_t x = bx * 8; x < bx * 8 + 8; ++x) {
+                    const float dx = 0.06f * (static_cast<float>(x) - 32.0f);
+                    const float dy = 0.06f * (static_cast<float>(y) - 24.0f);
+                    const std::size_t i = 2 * (std::size_t{y} * width + x);
+                    inputs.motion[i] = dx / static_cast<float>(width);
+                    inputs.motion[i + 1] = dy / static_cast<float>(height);
+                    // The whole-pixel offset, as the shader rounds it (away from pixel edges).
+                    const int offset = static_cast<int>(std::floor(static_cast<float>(x) + 0.5f + dx)) -
+                                       static_cast<int>(x) +
+                                       64 * (static_cast<int>(std::floor(static_cast<float>(y) + 0.5f + dy)) -
+                                             static_cast<int>(y));
+                    mixed = mixed || (!first && offset != firstOffset);
+                    firstOffset = first ? offset : firstOffset;
+                    first = false;
+                }
+            ++(mixed ? mixedBlocks : uniformBlocks);
+        }
+    CHECK(uniformBlocks >= 4u);
+    CHECK(mixedBlocks >= 20u);
+    ShadowDenoiserDesc desc = classifyDesc(width, height);
+    desc.frameIndex = 1;
+    checkClassify(desc, inputs, 22);
+}
+
 // The CPU reference stores every tile's moments and feeds them back; the device stores none for
 // clear tiles and rebuilds them from last frame's metadata and depth. Over a moving sequence the
 // two must agree, where histories come from tiles that were clear and from tiles that were not.

@@ -55,6 +55,15 @@ groupshared uint g_glint_shadow_denoiser_classify_or;
 groupshared uint g_glint_shadow_denoiser_classify_and;
 // Horizontal sums of rows groupOrigin.y - 8 .. groupOrigin.y + 15 (24 x 8 columns).
 groupshared float g_glint_shadow_denoiser_classify_rows[24 * 8];
+// Smallest and largest packed offset (previous pixel - pixel) of the block's pixels that run
+// the anti-lag test: equal when the block moved by one whole-pixel offset (always, for a still
+// camera), and the test's windows then overlap exactly.
+groupshared uint g_glint_shadow_denoiser_classify_offset_min;
+groupshared uint g_glint_shadow_denoiser_classify_offset_max;
+// Anti-lag terms (GLINT_SHADOW_DENOISER_AntiLagTexel) of the block plus a 2-pixel apron.
+#define GLINT_SHADOW_DENOISER_ANTILAG_SPAN (8 + 2 * GLINT_SHADOW_DENOISER_ANTILAG_RADIUS)
+groupshared float4 g_glint_shadow_denoiser_classify_window[GLINT_SHADOW_DENOISER_ANTILAG_SPAN *
+                                                          GLINT_SHADOW_DENOISER_ANTILAG_SPAN];
 
 // View depth of a receiver (finite depth strictly inside (1e-6, 1 - 1e-6)), or -1.
 float GLINT_SHADOW_DENOISER_ClassifyViewDepth(float depth, float4 viewDepth)
@@ -143,50 +152,142 @@ float GLINT_SHADOW_DENOISER_BilinearHistory(float2 uv, uint2 inputSize, float4 v
 // view depth of the centre in both frames (moments of non-receivers store n = 0). With z the
 // larger score: above ANTILAG_THRESHOLD the history length is capped at
 // ANTILAG_LENGTH / (z - ANTILAG_THRESHOLD)^2 (at least 1; continuous at the threshold).
-float GLINT_SHADOW_DENOISER_AntiLagLength(int2 pixel, int2 previousPixel, float z, float previousZ, uint2 inputSize,
-                                          float4 viewDepth, uint flags)
+// The anti-lag terms of one window position: this frame's view depth at `current` (-1 when
+// either position is outside the image or the history there is missing), last frame's view
+// depth at `previous`, the accumulated shadow there, and its sample count, negated when this
+// frame's mask bit at `current` is 0 (a valid history has n > 0, so the sign is the bit).
+float4 GLINT_SHADOW_DENOISER_AntiLagTexel(int2 current, int2 previous, uint2 inputSize, float4 viewDepth, uint flags)
 {
-    float observed = 0.0;
-    float expected = 0.0;
-    float variance = 0.0;
-    float surprise = 0.0;
-    float surpriseVariance = 0.0;
-    const int radius = GLINT_SHADOW_DENOISER_ANTILAG_RADIUS;
-    for (int dy = -radius; dy <= radius; ++dy)
-        for (int dx = -radius; dx <= radius; ++dx)
-        {
-            int2 current = pixel + int2(dx, dy);
-            int2 previous = previousPixel + int2(dx, dy);
-            if (any(current < 0) || any(previous < 0) || any(current >= int2(inputSize)) ||
-                any(previous >= int2(inputSize)))
-                continue;
-            float currentZ = GLINT_SHADOW_DENOISER_ClassifyViewDepth(GLINT_SHADOW_DENOISER_LoadDepth(current), viewDepth);
-            float pastZ =
-                GLINT_SHADOW_DENOISER_ClassifyViewDepth(GLINT_SHADOW_DENOISER_LoadPreviousDepth(previous), viewDepth);
-            float4 loaded = GLINT_SHADOW_DENOISER_LoadHistory(previous, inputSize, viewDepth, flags);
-            float3 moments = loaded.xyz;
-            float h = loaded.w;
-            bool valid = currentZ > 0.0 && pastZ > 0.0 && abs(currentZ - z) <= GLINT_SHADOW_DENOISER_ANTILAG_DEPTH * z &&
-                         abs(pastZ - previousZ) <= GLINT_SHADOW_DENOISER_ANTILAG_DEPTH * previousZ &&
-                         GLINT_IsFinite(moments.z) && GLINT_IsFinite(h) && moments.z > 0.0;
-            if (!valid)
-                continue;
-            float samples = min(moments.z, 1023.0);
-            h = clamp(h, 0.0, 1.0);
-            uint word = GLINT_SHADOW_DENOISER_LoadMask(int2(current.x >> 3, current.y >> 2));
-            float bit = ((word >> (uint(current.y & 3) * 8u + uint(current.x & 7))) & 1u) != 0u ? 1.0 : 0.0;
-            float p = (h * samples + 0.25) / (samples + 0.5);
-            observed += bit;
-            expected += h;
-            variance += p * (1.0 - p) * (1.0 + 1.0 / (samples + 1.0));
-            float q = (h * samples + 1.0) / (samples + 2.0);
-            surprise += abs(bit - h) - (q * (1.0 - h) + (1.0 - q) * h);
-            surpriseVariance += q * (1.0 - q) * (1.0 - 2.0 * h) * (1.0 - 2.0 * h);
-        }
-    float score = max(abs(observed - expected) * rsqrt(variance + GLINT_SHADOW_DENOISER_ANTILAG_SLACK),
-                      surprise * rsqrt(surpriseVariance + GLINT_SHADOW_DENOISER_ANTILAG_SLACK));
+    bool inImage = all(current >= 0) && all(previous >= 0) && all(current < int2(inputSize)) &&
+                   all(previous < int2(inputSize));
+    current = clamp(current, int2(0, 0), int2(inputSize) - 1);
+    previous = clamp(previous, int2(0, 0), int2(inputSize) - 1);
+    float currentZ = GLINT_SHADOW_DENOISER_ClassifyViewDepth(GLINT_SHADOW_DENOISER_LoadDepth(current), viewDepth);
+    float pastZ = GLINT_SHADOW_DENOISER_ClassifyViewDepth(GLINT_SHADOW_DENOISER_LoadPreviousDepth(previous), viewDepth);
+    float4 loaded = GLINT_SHADOW_DENOISER_LoadHistory(previous, inputSize, viewDepth, flags);
+    uint word = GLINT_SHADOW_DENOISER_LoadMask(int2(current.x >> 3, current.y >> 2));
+    bool bit = ((word >> (uint(current.y & 3) * 8u + uint(current.x & 7))) & 1u) != 0u;
+    bool valid = inImage && GLINT_IsFinite(loaded.z) && GLINT_IsFinite(loaded.w) && loaded.z > 0.0;
+    float samples = min(loaded.z, 1023.0);
+    return float4(valid ? currentZ : -1.0, pastZ, clamp(loaded.w, 0.0, 1.0), bit ? samples : -samples);
+}
+
+// Sums of the anti-lag scores (see GLINT_SHADOW_DENOISER_AntiLagLength).
+struct GLINT_ShadowDenoiserAntiLagSums
+{
+    float observed;
+    float expected;
+    float variance;
+    float surprise;
+    float surpriseVariance;
+};
+
+GLINT_ShadowDenoiserAntiLagSums GLINT_SHADOW_DENOISER_AntiLagBegin()
+{
+    GLINT_ShadowDenoiserAntiLagSums sums;
+    sums.observed = 0.0;
+    sums.expected = 0.0;
+    sums.variance = 0.0;
+    sums.surprise = 0.0;
+    sums.surpriseVariance = 0.0;
+    return sums;
+}
+
+// Adds one window position; it counts when its history is present and it is a receiver
+// within ANTILAG_DEPTH relative view depth of the centre in both frames.
+void GLINT_SHADOW_DENOISER_AntiLagAdd(inout GLINT_ShadowDenoiserAntiLagSums sums, float4 texel, float z, float previousZ)
+{
+    bool valid = texel.x > 0.0 && texel.y > 0.0 && abs(texel.x - z) <= GLINT_SHADOW_DENOISER_ANTILAG_DEPTH * z &&
+                 abs(texel.y - previousZ) <= GLINT_SHADOW_DENOISER_ANTILAG_DEPTH * previousZ;
+    if (!valid)
+        return;
+    float h = texel.z;
+    float samples = abs(texel.w);
+    float bit = texel.w > 0.0 ? 1.0 : 0.0;
+    float p = (h * samples + 0.25) / (samples + 0.5);
+    sums.observed += bit;
+    sums.expected += h;
+    sums.variance += p * (1.0 - p) * (1.0 + 1.0 / (samples + 1.0));
+    float q = (h * samples + 1.0) / (samples + 2.0);
+    sums.surprise += abs(bit - h) - (q * (1.0 - h) + (1.0 - q) * h);
+    sums.surpriseVariance += q * (1.0 - q) * (1.0 - 2.0 * h) * (1.0 - 2.0 * h);
+}
+
+// Anti-lag (docs/shadow_denoiser.md, "Convergence"): the longest history that the 5x5 window
+// around the pixel still supports. This frame's mask bits b_j in the window are compared with
+// last frame's accumulated shadow h_j (n_j samples) of the same window around the previous
+// position, pixel by pixel, so the shape of a static penumbra cancels out. Two scores, each in
+// binomial sigmas with ANTILAG_SLACK samples of slack for the histories' own error:
+// - signed: |sum b_j - sum h_j| / sqrt(sum p_j (1 - p_j) (1 + 1/(n_j + 1)) + slack), with
+//   p_j = (h_j n_j + 1/4) / (n_j + 1/2); it sees a shadow that arrived or left as a whole;
+// - absolute: sum (|b_j - h_j| - E_j) / sqrt(sum q_j (1 - q_j) (1 - 2 h_j)^2 + slack), with
+//   q_j = (h_j n_j + 1) / (n_j + 2) and E_j = q_j (1 - h_j) + (1 - q_j) h_j the expected
+//   |b_j - h_j|; it sees bits that contradict confident histories in both directions (a thin
+//   shadow that moved sideways gains on one edge what it loses on the other).
+// Neighbours count when they are inside the image and receivers within ANTILAG_DEPTH relative
+// view depth of the centre in both frames (moments of non-receivers store n = 0). With z the
+// larger score: above ANTILAG_THRESHOLD the history length is capped at
+// ANTILAG_LENGTH / (z - ANTILAG_THRESHOLD)^2 (at least 1; continuous at the threshold).
+float GLINT_SHADOW_DENOISER_AntiLagLength(GLINT_ShadowDenoiserAntiLagSums sums)
+{
+    float score = max(abs(sums.observed - sums.expected) * rsqrt(sums.variance + GLINT_SHADOW_DENOISER_ANTILAG_SLACK),
+                      sums.surprise * rsqrt(sums.surpriseVariance + GLINT_SHADOW_DENOISER_ANTILAG_SLACK));
     float excess = score - GLINT_SHADOW_DENOISER_ANTILAG_THRESHOLD;
     return excess > 0.0 ? max(GLINT_SHADOW_DENOISER_ANTILAG_LENGTH / (excess * excess), 1.0) : 1024.0;
+}
+
+// The anti-lag length of every pixel of the block that asks for it (`wanted`; 1024 for the
+// others). Called by every thread of a block that is not clear: it synchronises the group.
+// When all those pixels moved by the same whole-pixel offset, their windows are one 12x12
+// region: each thread fetches about 2 of its positions into groupshared memory instead of all
+// 25 of its own window (same terms, same order of summation, same result).
+float GLINT_SHADOW_DENOISER_GroupAntiLagLength(bool wanted, int2 pixel, int2 previousPixel, float z, float previousZ,
+                                               uint2 groupId, uint groupIndex, uint2 groupThreadId, uint2 inputSize,
+                                               float4 viewDepth, uint flags)
+{
+    const int radius = GLINT_SHADOW_DENOISER_ANTILAG_RADIUS;
+    const int span = GLINT_SHADOW_DENOISER_ANTILAG_SPAN;
+    int2 offset = previousPixel - pixel;
+    // Offsets lie within +-16383 (image sizes), so the biased halves never carry.
+    uint packed = uint(offset.x + 32768) | (uint(offset.y + 32768) << 16);
+    if (wanted)
+    {
+        InterlockedMin(g_glint_shadow_denoiser_classify_offset_min, packed);
+        InterlockedMax(g_glint_shadow_denoiser_classify_offset_max, packed);
+    }
+    GroupMemoryBarrierWithGroupSync();
+    uint low = g_glint_shadow_denoiser_classify_offset_min;
+    uint high = g_glint_shadow_denoiser_classify_offset_max;
+    GLINT_ShadowDenoiserAntiLagSums sums = GLINT_SHADOW_DENOISER_AntiLagBegin();
+    if (low == high)
+    {
+        int2 uniformOffset = int2(int(low & 0xFFFFu) - 32768, int(low >> 16) - 32768);
+        int2 origin = int2(groupId * 8u) - radius;
+        for (uint i = groupIndex; i < uint(span * span); i += 64u)
+        {
+            int2 current = origin + int2(int(i % uint(span)), int(i / uint(span)));
+            g_glint_shadow_denoiser_classify_window[i] =
+                GLINT_SHADOW_DENOISER_AntiLagTexel(current, current + uniformOffset, inputSize, viewDepth, flags);
+        }
+        GroupMemoryBarrierWithGroupSync();
+        if (!wanted)
+            return 1024.0;
+        uint centre = (groupThreadId.y + uint(radius)) * uint(span) + groupThreadId.x + uint(radius);
+        [unroll] for (int dy = -radius; dy <= radius; ++dy)
+            [unroll] for (int dx = -radius; dx <= radius; ++dx)
+                GLINT_SHADOW_DENOISER_AntiLagAdd(sums, g_glint_shadow_denoiser_classify_window[int(centre) + dy * span + dx],
+                                                 z, previousZ);
+        return GLINT_SHADOW_DENOISER_AntiLagLength(sums);
+    }
+    if (!wanted)
+        return 1024.0;
+    for (int dy = -radius; dy <= radius; ++dy)
+        for (int dx = -radius; dx <= radius; ++dx)
+            GLINT_SHADOW_DENOISER_AntiLagAdd(sums,
+                                             GLINT_SHADOW_DENOISER_AntiLagTexel(pixel + int2(dx, dy), previousPixel + int2(dx, dy),
+                                                                                inputSize, viewDepth, flags),
+                                             z, previousZ);
+    return GLINT_SHADOW_DENOISER_AntiLagLength(sums);
 }
 
 // Constants as in GLINT_ShadowDenoiserClassifyConstants; the matrices are built from its rows
@@ -218,6 +319,8 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint2 groupThreadId, uint gro
         g_glint_shadow_denoiser_classify_receivers = 0u;
         g_glint_shadow_denoiser_classify_or = 0u;
         g_glint_shadow_denoiser_classify_and = 0xFFFFFFFFu;
+        g_glint_shadow_denoiser_classify_offset_min = 0xFFFFFFFFu;
+        g_glint_shadow_denoiser_classify_offset_max = 0u;
     }
     GroupMemoryBarrierWithGroupSync();
     if (receiver)
@@ -264,10 +367,10 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint2 groupThreadId, uint gro
         }
         GroupMemoryBarrierWithGroupSync();
     }
-    if (!inside)
-        return;
     if (clear)
     {
+        if (!inside)
+            return;
         float value = anyReceiver && allLit && receiver ? 1.0 : 0.0;
 #if GLINT_SHADOW_DENOISER_TILE_LIST
         GLINT_SHADOW_DENOISER_StoreClearOutput(pixel, float2(value, 0.0));
@@ -279,12 +382,10 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint2 groupThreadId, uint gro
             GLINT_SHADOW_DENOISER_StoreMoments(pixel, float4(value, 0.0, receiver ? 1.0 : 0.0, value));
         return;
     }
-    if (!receiver)
-    {
-        GLINT_SHADOW_DENOISER_StoreShadowVariance(pixel, float2(0.0, 0.0));
-        GLINT_SHADOW_DENOISER_StoreMoments(pixel, float4(0.0, 0.0, 0.0, 0.0));
-        return;
-    }
+    // A block that is not clear: no thread returns before the anti-lag test's barriers.
+    // Pixels outside the image or not receiving run along (as disoccluded, loading in-image
+    // pixels only) and store their defined zeros after it.
+    bool active = inside && receiver;
 
     // Local mean and variance: 17x17 Gaussian, rows first.
     float mean = 0.0;
@@ -294,12 +395,12 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint2 groupThreadId, uint gro
     mean = clamp(mean, 0.0, 1.0);
     float spatialVariance = max(mean - mean * mean, 0.0);
     float spatialSigma = sqrt(spatialVariance);
-    uint ownWord = GLINT_SHADOW_DENOISER_LoadMask(int2(pixel.x >> 3, pixel.y >> 2));
-    float x = ((ownWord >> (uint(pixel.y & 3) * 8u + uint(pixel.x & 7))) & 1u) != 0u ? 1.0 : 0.0;
+    uint ownWord = GLINT_SHADOW_DENOISER_LoadMask(int2(loadPixel.x >> 3, loadPixel.y >> 2));
+    float x = ((ownWord >> (uint(loadPixel.y & 3) * 8u + uint(loadPixel.x & 7))) & 1u) != 0u ? 1.0 : 0.0;
 
     // Motion of the closest receiver of the 2x2 quad.
     int2 quad = pixel & ~1;
-    int2 motionPixel = pixel;
+    int2 motionPixel = loadPixel;
     float closest = z;
     [unroll] for (int q = 0; q < 4; ++q)
     {
@@ -314,8 +415,9 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint2 groupThreadId, uint gro
     float2 motion = GLINT_SHADOW_DENOISER_LoadMotion(motionPixel);
     float2 uv = (float2(pixel) + 0.5) / float2(c.inputSize);
     float2 uvPrevious = uv + motion;
-    bool disoccluded = (c.flags & GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_RESET) != 0u || !GLINT_IsFinite(uvPrevious.x) || !GLINT_IsFinite(uvPrevious.y) ||
-                       any(uvPrevious < 0.0) || any(uvPrevious > 1.0);
+    bool disoccluded = !active || (c.flags & GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_RESET) != 0u ||
+                       !GLINT_IsFinite(uvPrevious.x) || !GLINT_IsFinite(uvPrevious.y) || any(uvPrevious < 0.0) ||
+                       any(uvPrevious > 1.0);
     int2 previousPixel = int2(0, 0);
     float previousZ = -1.0;
     if (!disoccluded)
@@ -357,6 +459,23 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint2 groupThreadId, uint gro
         }
     }
 
+    // Anti-lag: the 17x17 clamp cannot see a shadow edge that moved inside its window. The
+    // flag is uniform, so every thread of the block reaches the test's barriers or none does.
+    float antiLagLength = 1024.0;
+    if ((c.flags & GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_ANTI_LAG) != 0u)
+        antiLagLength = GLINT_SHADOW_DENOISER_GroupAntiLagLength(historyFound, pixel, previousPixel, z, previousZ, groupId,
+                                                                 groupIndex, groupThreadId, c.inputSize, c.viewDepth,
+                                                                 c.flags);
+    if (!active)
+    {
+        if (inside)
+        {
+            GLINT_SHADOW_DENOISER_StoreShadowVariance(pixel, float2(0.0, 0.0));
+            GLINT_SHADOW_DENOISER_StoreMoments(pixel, float4(0.0, 0.0, 0.0, 0.0));
+        }
+        return;
+    }
+
     // Welford update with this frame's sample.
     float n = moments.z + 1.0;
     float delta = x - moments.x;
@@ -371,9 +490,8 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint2 groupThreadId, uint gro
     float clamped = clamp(history, mean - clampRadius, mean + clampRadius);
     float deviation = (history - mean) / max(clampRadius, 0.001);
     n *= exp(-deviation * deviation / 20.0);
-    // Anti-lag: the 17x17 clamp cannot see a shadow edge that moved inside its window.
-    if (historyFound && (c.flags & GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_ANTI_LAG) != 0u)
-        n = min(n, GLINT_SHADOW_DENOISER_AntiLagLength(pixel, previousPixel, z, previousZ, c.inputSize, c.viewDepth, c.flags));
+    // n <= 1024 already: the cap changes only the histories the anti-lag test contradicted.
+    n = min(n, antiLagLength);
     float count = max(n, 1.0);
     // Variance of the accumulated mean (boosted while young): the filter's edge stop tightens as
     // samples accumulate, so the spatial filter fades out instead of biasing the penumbra.
