@@ -53,6 +53,9 @@ groupshared uint g_glint_shadow_denoiser_classify_receivers;
 // OR and AND of the 3x6 mask words around the block, one word loaded per thread.
 groupshared uint g_glint_shadow_denoiser_classify_or;
 groupshared uint g_glint_shadow_denoiser_classify_and;
+// Those 18 words (mask tiles groupId.x - 1 .. + 1, 2 groupId.y - 2 .. + 3, clamped to the mask):
+// every mask bit the 17x17 statistics and the pixel's own sample read.
+groupshared uint g_glint_shadow_denoiser_classify_words[18];
 // Horizontal sums of rows groupOrigin.y - 8 .. groupOrigin.y + 15 (24 x 8 columns).
 groupshared float g_glint_shadow_denoiser_classify_rows[24 * 8];
 // Smallest and largest packed offset (previous pixel - pixel) of the block's pixels that run
@@ -83,17 +86,24 @@ float GLINT_SHADOW_DENOISER_GaussianWeight(int i)
     return GLINT_SHADOW_DENOISER_GAUSSIAN_17[i];
 }
 
-// Horizontal 17-tap sum for pixel row y (clamped to the image) centred on column x. Mask
-// tiles outside the image clamp to the border tile.
-float GLINT_SHADOW_DENOISER_RowSum(int x, int y, uint2 inputSize, uint2 maskTiles)
+// The mask word of tile (groupId.x + dx, tileY), dx in {-1, 0, 1}, from the block's 18 words.
+// tileY must lie within 2 groupId.y - 2 .. + 3 after clamping to the mask, as every tile row of
+// the rows the block reads does (the block's first row is inside the image).
+uint GLINT_SHADOW_DENOISER_BlockWord(uint2 groupId, int dx, int tileY)
+{
+    return g_glint_shadow_denoiser_classify_words[(tileY - int(groupId.y * 2u) + 2) * 3 + dx + 1];
+}
+
+// Horizontal 17-tap sum for pixel row y (clamped to the image) centred on column x, a column
+// of this block. Mask tiles outside the image clamp to the border tile (as the 18 words do).
+float GLINT_SHADOW_DENOISER_RowSum(uint2 groupId, int x, int y, uint2 inputSize)
 {
     int row = clamp(y, 0, int(inputSize.y) - 1);
     int tileY = row >> 2;
-    int tileX = x >> 3;
     uint shift = uint(row & 3) * 8u;
-    uint left = (GLINT_SHADOW_DENOISER_LoadMask(int2(max(tileX - 1, 0), tileY)) >> shift) & 0xFFu;
-    uint centre = (GLINT_SHADOW_DENOISER_LoadMask(int2(tileX, tileY)) >> shift) & 0xFFu;
-    uint right = (GLINT_SHADOW_DENOISER_LoadMask(int2(min(tileX + 1, int(maskTiles.x) - 1), tileY)) >> shift) & 0xFFu;
+    uint left = (GLINT_SHADOW_DENOISER_BlockWord(groupId, -1, tileY) >> shift) & 0xFFu;
+    uint centre = (GLINT_SHADOW_DENOISER_BlockWord(groupId, 0, tileY) >> shift) & 0xFFu;
+    uint right = (GLINT_SHADOW_DENOISER_BlockWord(groupId, 1, tileY) >> shift) & 0xFFu;
     uint window = (left | (centre << 8) | (right << 16)) >> uint(x & 7);
     float sum = 0.0;
     [unroll] for (int k = 0; k <= 16; ++k)
@@ -311,6 +321,17 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint2 groupThreadId, uint gro
     bool inside = all(uint2(pixel) < c.inputSize);
     int2 loadPixel = min(pixel, int2(c.inputSize) - 1);
     float depth = GLINT_SHADOW_DENOISER_LoadDepth(loadPixel);
+    // Uniform region: the 3x6 mask tiles around the block (24x24 pixels), clamped; threads
+    // 0..17 load one word each (with the depth, before the first barrier) instead of every
+    // thread loading all 18.
+    uint word = 0u;
+    if (groupIndex < 18u)
+    {
+        int2 firstTile = int2(groupId.x, groupId.y * 2u);
+        int2 tile = clamp(firstTile + int2(int(groupIndex % 3u) - 1, int(groupIndex / 3u) - 2), int2(0, 0),
+                          int2(c.maskTiles) - 1);
+        word = GLINT_SHADOW_DENOISER_LoadMask(tile);
+    }
     float z = GLINT_SHADOW_DENOISER_ClassifyViewDepth(depth, c.viewDepth);
     bool receiver = inside && z > 0.0;
 
@@ -325,14 +346,9 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint2 groupThreadId, uint gro
     GroupMemoryBarrierWithGroupSync();
     if (receiver)
         InterlockedOr(g_glint_shadow_denoiser_classify_receivers, 1u);
-    // Uniform region: the 3x6 mask tiles around the block (24x24 pixels), clamped; threads
-    // 0..17 load one word each instead of every thread loading all 18.
     if (groupIndex < 18u)
     {
-        int2 firstTile = int2(groupId.x, groupId.y * 2u);
-        int2 tile = clamp(firstTile + int2(int(groupIndex % 3u) - 1, int(groupIndex / 3u) - 2), int2(0, 0),
-                          int2(c.maskTiles) - 1);
-        uint word = GLINT_SHADOW_DENOISER_LoadMask(tile);
+        g_glint_shadow_denoiser_classify_words[groupIndex] = word;
         InterlockedOr(g_glint_shadow_denoiser_classify_or, word);
         InterlockedAnd(g_glint_shadow_denoiser_classify_and, word);
     }
@@ -356,14 +372,15 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint2 groupThreadId, uint gro
     if (!clear)
     {
         // Horizontal 17-tap sums of the 24 rows the block's vertical taps reach, once per
-        // (row, column) instead of once per tap: 3 per thread. `clear` is uniform, so the
-        // barrier is too. Columns beyond the image use the last one (their sums go unused).
+        // (row, column) instead of once per tap: 3 per thread, from the 18 words in groupshared
+        // memory. `clear` is uniform, so the barrier is too. Columns beyond the image use the
+        // last one (their sums go unused).
         int column = min(int(groupId.x * 8u + (groupIndex & 7u)), int(c.inputSize.x) - 1);
         [unroll] for (uint part = 0; part < 3u; ++part)
         {
             uint row = (groupIndex >> 3) + part * 8u;
             g_glint_shadow_denoiser_classify_rows[row * 8u + (groupIndex & 7u)] = GLINT_SHADOW_DENOISER_RowSum(
-                column, int(groupId.y * 8u + row) - 8, c.inputSize, c.maskTiles);
+                groupId, column, int(groupId.y * 8u + row) - 8, c.inputSize);
         }
         GroupMemoryBarrierWithGroupSync();
     }
@@ -395,7 +412,7 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint2 groupThreadId, uint gro
     mean = clamp(mean, 0.0, 1.0);
     float spatialVariance = max(mean - mean * mean, 0.0);
     float spatialSigma = sqrt(spatialVariance);
-    uint ownWord = GLINT_SHADOW_DENOISER_LoadMask(int2(loadPixel.x >> 3, loadPixel.y >> 2));
+    uint ownWord = GLINT_SHADOW_DENOISER_BlockWord(groupId, 0, loadPixel.y >> 2);
     float x = ((ownWord >> (uint(loadPixel.y & 3) * 8u + uint(loadPixel.x & 7))) & 1u) != 0u ? 1.0 : 0.0;
 
     // Motion of the closest receiver of the 2x2 quad.

@@ -129,9 +129,11 @@ void GLINT_SHADOW_DENOISER_LoadSpan(uint groupIndex, uint groupThreads, int2 spa
         int2 pixel = clamp(spanOrigin + local, int2(0, 0), int2(inputSize) - 1);
         g_glint_shadow_denoiser_filter_values[slot] =
             GLINT_SHADOW_DENOISER_SanitizeMeanVariance(GLINT_SHADOW_DENOISER_LoadMeanVariance(pixel));
+        // The normal is loaded whatever the depth, so that both loads are in flight together
+        // (a load under `z > 0` would wait for the depth).
+        float3 loadedNormal = GLINT_SHADOW_DENOISER_LoadNormal(pixel);
         float z = GLINT_SHADOW_DENOISER_ReceiverViewDepth(GLINT_SHADOW_DENOISER_LoadDepth(pixel), viewDepth);
-        float3 n = z > 0.0 ? GLINT_SHADOW_DENOISER_SanitizeNormal(GLINT_SHADOW_DENOISER_LoadNormal(pixel))
-                           : float3(0.0, 0.0, 0.0);
+        float3 n = z > 0.0 ? GLINT_SHADOW_DENOISER_SanitizeNormal(loadedNormal) : float3(0.0, 0.0, 0.0);
         g_glint_shadow_denoiser_filter_geometry[slot] = float4(z, n);
     }
 }
