@@ -303,7 +303,10 @@ void GLINT_SSSR_Intersect(GLINT_SssrConstants c, uint groupIndex, uint rayIndex)
     }
     bool reversed = GLINT_SSSR_Reversed(c);
     bool valid = rayIndex < GLINT_SSSR_LoadRayCount();
-    uint entry = valid ? GLINT_SSSR_LoadRay(rayIndex) : 0u;
+    // Not ?:, which evaluates both operands in HLSL: the load must not run past the ray count.
+    uint entry = 0u;
+    if (valid)
+        entry = GLINT_SSSR_LoadRay(rayIndex);
     uint2 pixel = GLINT_SSSR_UnpackRayPixel(entry);
     int2 ipixel = int2(pixel);
     float2 uv = (float2(pixel) + 0.5) * c.inverseInputSize;
