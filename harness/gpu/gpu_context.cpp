@@ -148,20 +148,29 @@ struct FeatureChain {
     VkPhysicalDevice16BitStorageFeatures storage16{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_16BIT_STORAGE_FEATURES};
     VkPhysicalDeviceShaderFloat16Int8Features float16{
         VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_FLOAT16_INT8_FEATURES};
+    // Only linked for the opt-in GLINT_PIPELINE_STATS diagnostic.
+    VkPhysicalDevicePipelineExecutablePropertiesFeaturesKHR executable{
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PIPELINE_EXECUTABLE_PROPERTIES_FEATURES_KHR};
 
     FeatureChain() = default;
     // The pNext links point into the object itself; a copy would point into the original.
     FeatureChain(const FeatureChain&) = delete;
     FeatureChain& operator=(const FeatureChain&) = delete;
 
-    // Links the structures valid for this device version (and extension) behind core.
-    void link(bool vulkan12, bool float16Extension) {
+    // Links the structures valid for this device version (and extensions) behind core.
+    void link(bool vulkan12, bool float16Extension, bool executableExtension) {
         if (vulkan12) {
             core.pNext = &v11;
             v11.pNext = &v12;
         } else {
             core.pNext = &storage16;
             if (float16Extension) storage16.pNext = &float16;
+        }
+        if (executableExtension) {
+            // Appended at the end of whatever chain the branches above built.
+            auto* last = reinterpret_cast<VkBaseOutStructure*>(&core);
+            while (last->pNext) last = last->pNext;
+            last->pNext = reinterpret_cast<VkBaseOutStructure*>(&executable);
         }
     }
 };
@@ -189,6 +198,14 @@ void selectFeatures(const FeatureChain& supported, FeatureChain& enabled) {
     enabled.storage16.uniformAndStorageBuffer16BitAccess =
         supported.storage16.uniformAndStorageBuffer16BitAccess;
     enabled.float16.shaderFloat16 = supported.float16.shaderFloat16;
+    enabled.executable.pipelineExecutableInfo = supported.executable.pipelineExecutableInfo;
+}
+
+// GLINT_PIPELINE_STATS=1 asks for the driver's statistics of every compute pipeline
+// (VK_KHR_pipeline_executable_properties), printed to stderr as the pipelines are created.
+bool pipelineStatisticsRequested() {
+    const char* value = std::getenv("GLINT_PIPELINE_STATS");
+    return value && std::string_view(value) == "1";
 }
 
 void createDevice(Context& context, VkPhysicalDevice physical) {
@@ -204,13 +221,18 @@ void createDevice(Context& context, VkPhysicalDevice physical) {
     if (float16Extension) extensions.push_back(VK_KHR_SHADER_FLOAT16_INT8_EXTENSION_NAME);
     // The spec requires enabling it wherever it is offered (MoltenVK and similar layers).
     if (contains(available, "VK_KHR_portability_subset")) extensions.push_back("VK_KHR_portability_subset");
+    const bool executableExtension =
+        pipelineStatisticsRequested() &&
+        contains(available, VK_KHR_PIPELINE_EXECUTABLE_PROPERTIES_EXTENSION_NAME);
 
     FeatureChain supported;
-    supported.link(vulkan12, float16Extension);
+    supported.link(vulkan12, float16Extension, executableExtension);
     vkGetPhysicalDeviceFeatures2(physical, &supported.core);
     FeatureChain enabled;
-    enabled.link(vulkan12, float16Extension);
+    const bool pipelineStatistics = executableExtension && supported.executable.pipelineExecutableInfo;
+    enabled.link(vulkan12, float16Extension, pipelineStatistics);
     selectFeatures(supported, enabled);
+    if (pipelineStatistics) extensions.push_back(VK_KHR_PIPELINE_EXECUTABLE_PROPERTIES_EXTENSION_NAME);
 
     const float priority = 1.0f;
     VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
@@ -235,6 +257,7 @@ void createDevice(Context& context, VkPhysicalDevice physical) {
     device.subgroupSize = context.info.subgroupSize;
     device.timestampValidBits = context.info.timestampValidBits;
     device.timestamps = device.timestampValidBits > 0;
+    device.pipelineStatistics = pipelineStatistics;
 
     // What DeviceInfo reports must be what the device has enabled.
     context.info.float16 = vulkan12 ? enabled.v12.shaderFloat16 : enabled.float16.shaderFloat16;

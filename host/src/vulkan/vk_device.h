@@ -18,6 +18,9 @@ struct Device {
     uint32_t subgroupSize = 0; // VkPhysicalDeviceSubgroupProperties::subgroupSize
     bool timestamps = false;   // queue family has timestampValidBits > 0
     uint32_t timestampValidBits = 0;
+    // VK_KHR_pipeline_executable_properties with pipelineExecutableInfo is enabled: pipelines are
+    // created with statistics capture and their statistics printed (GLINT_PIPELINE_STATS=1).
+    bool pipelineStatistics = false;
 };
 
 } // namespace glint::vk
