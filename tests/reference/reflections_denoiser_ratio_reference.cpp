@@ -60,7 +60,10 @@ ReconstructResult reconstructPixel(const ReconstructInputs& inputs, std::uint32_
     const DenoiserSurface& s = *inputs.surface;
     const std::size_t i = indexOf(s, x, y);
     ReconstructResult result;
-    if (!s.glossy[i]) return result;
+    if (!s.glossy[i]) {
+        result.value.variance = kNotGlossyVariance; // the prefilter's marking, read by the resolve
+        return result;
+    }
     if (s.alpha[i] < inputs.mirrorThreshold) {
         result.value = {inputs.radiance[i], inputs.variance[i]};
         return result;

@@ -37,8 +37,9 @@ struct ReconstructResult {
     bool ambiguous = false;
 };
 
-// The reconstruction of one in-image pixel: 0 for pixels that are not glossy, the sample and
-// its temporal variance for mirrors, the ratio estimate otherwise.
+// The reconstruction of one in-image pixel: rgb 0 and variance kNotGlossyVariance for pixels
+// that are not glossy (the prefilter's marking), the sample and its temporal variance for
+// mirrors, the ratio estimate otherwise.
 ReconstructResult reconstructPixel(const ReconstructInputs& inputs, std::uint32_t x, std::uint32_t y);
 
 // The reconstruction's 8 disk taps: the Vogel spiral r_k = sqrt((k + 0.5) / 8),

@@ -152,9 +152,13 @@ void prefilter(const PrefilterInputs& in, std::vector<RadianceVariance>& out) {
                 continue;
             const std::size_t p = std::size_t{y} * w + x;
             const double variance = in.variance[p];
-            // Mirrors (kept sharp), pixels with no variance and pixels that are not glossy are
-            // copied through.
-            if (!s.glossy[p] || !(variance > 0.0) || s.alpha[p] < in.mirrorThreshold) {
+            // Pixels that are not glossy are marked as such for the resolve.
+            if (!s.glossy[p]) {
+                out[p] = {Rgb{}, kNotGlossyVariance};
+                continue;
+            }
+            // Mirrors (kept sharp) and pixels with no variance are copied through.
+            if (!(variance > 0.0) || s.alpha[p] < in.mirrorThreshold) {
                 out[p] = {in.radiance[p], variance};
                 continue;
             }

@@ -15,6 +15,11 @@ using Rgb = std::array<double, 3>;
 // The denoiser's 8x8 tiles.
 inline constexpr std::uint32_t kDenoiserTileSize = 8;
 
+// The variance the prefilter (and the ratio path's reconstruction) stores for pixels that are
+// not glossy: glossy pixels store a variance, never negative, so the resolve learns from it
+// (in tiles listed this frame) which neighbours are glossy.
+inline constexpr double kNotGlossyVariance = -1.0;
+
 // A pixel offset (prefilter taps).
 struct PixelOffset {
     int x = 0, y = 0;
@@ -68,7 +73,8 @@ struct PrefilterInputs {
 };
 
 // The prefilter pass for one frame: writes `out` (one entry per pixel) for every in-image
-// pixel of a listed tile and leaves the others untouched.
+// pixel of a listed tile and leaves the others untouched. Pixels that are not glossy get rgb 0
+// and variance kNotGlossyVariance.
 void prefilter(const PrefilterInputs& inputs, std::vector<RadianceVariance>& out);
 
 // One glossy pixel of the resolve pass.

@@ -4,16 +4,16 @@
 #include "entry/reflections_denoiser/rd_average.hlsli"
 #include "glint/reflections_denoiser/glint_reflections_denoiser_prefilter.hlsli"
 
+// The clamped sample carries the temporal variance in alpha (reproject writes both), so the
+// prefilter needs no variance image.
 [[vk::binding(7, 0)]] Texture2D<float4> g_glint_clamped;
-[[vk::binding(8, 0)]] Texture2D<float> g_glint_variance;
 #if GLINT_RD_HALF_STORAGE
-[[vk::binding(9, 0)]] GLINT_IMAGE_FORMAT(rgba16f) RWTexture2D<float4> g_glint_prefiltered;
+[[vk::binding(8, 0)]] GLINT_IMAGE_FORMAT(rgba16f) RWTexture2D<float4> g_glint_prefiltered;
 #else
-[[vk::binding(9, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_prefiltered;
+[[vk::binding(8, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_prefiltered;
 #endif
 
 float4 GLINT_RD_LoadClamped(int2 pixel) { return g_glint_clamped.Load(int3(pixel, 0)); }
-float GLINT_RD_LoadVariance(int2 pixel) { return g_glint_variance.Load(int3(pixel, 0)); }
 void GLINT_RD_StorePrefiltered(int2 pixel, float4 value) { g_glint_prefiltered[pixel] = value; }
 
 [numthreads(8, 8, 1)] void main(uint3 groupId : SV_GroupID, uint3 groupThreadId : SV_GroupThreadID)

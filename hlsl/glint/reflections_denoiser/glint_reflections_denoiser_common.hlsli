@@ -51,18 +51,25 @@ float GLINT_RD_ViewDepth(GLINT_ReflectionsDenoiserConstants c, float depth)
     return c.viewDepth.x / (c.viewDepth.y + c.viewDepth.z * depth);
 }
 
+// The stored normal unpacked and made unit; (0, 0, 1) when it has no usable length (ok false).
+float3 GLINT_RD_UnpackNormal(GLINT_ReflectionsDenoiserConstants c, float3 stored, out bool ok)
+{
+    float3 n = stored * c.normalUnpack.x + c.normalUnpack.y;
+    float lengthSquared = dot(n, n);
+    ok = GLINT_IsFinite(lengthSquared) && lengthSquared > 1e-12;
+    return ok ? n * rsqrt(lengthSquared) : float3(0.0, 0.0, 1.0);
+}
+
 GLINT_RD_Surface GLINT_RD_LoadSurface(GLINT_ReflectionsDenoiserConstants c, int2 pixel)
 {
     GLINT_RD_Surface s;
     float depth = GLINT_RD_LoadDepth(pixel);
     s.depth = depth;
-    float3 n = GLINT_RD_LoadNormal(pixel) * c.normalUnpack.x + c.normalUnpack.y;
-    float lengthSquared = dot(n, n);
+    bool normalOk;
+    s.normal = GLINT_RD_UnpackNormal(c, GLINT_RD_LoadNormal(pixel), normalOk);
     s.alpha = GLINT_FiniteOr(GLINT_RD_LoadRoughness(pixel), 1.0);
     bool reversed = (c.flags & GLINT_RD_FLAG_REVERSED_DEPTH) != 0;
     bool background = !GLINT_IsFinite(depth) || (reversed ? (depth <= 1e-6 || depth > 1.0) : (depth >= 1.0 - 1e-6 || depth < 0.0));
-    bool normalOk = GLINT_IsFinite(lengthSquared) && lengthSquared > 1e-12;
-    s.normal = normalOk ? n * rsqrt(lengthSquared) : float3(0.0, 0.0, 1.0);
     s.viewDepth = background ? 1.0 : GLINT_RD_ViewDepth(c, depth);
     s.glossy = !background && normalOk && s.alpha < c.roughnessThreshold && s.viewDepth > 0.0 &&
                GLINT_IsFinite(s.viewDepth);
@@ -148,9 +155,18 @@ float3 GLINT_RD_DecodeNormal(float2 p)
 #ifdef GLINT_RD_USES_AVERAGE
 // This frame's tile averages (prefilter and resolve, after reproject wrote them):
 //   float4 GLINT_RD_LoadAverage(uint2 tile);   rgb, a = weight sum
-//   bool   GLINT_RD_TileListed(uint2 tile);    this frame's tile mask
+//   bool   GLINT_RD_TileListed(uint2 tile);    this frame's tile mask (the tile's own bit)
 float4 GLINT_RD_LoadAverage(uint2 tile);
 bool GLINT_RD_TileListed(uint2 tile);
+
+// Whether an in-image pixel's own tile was listed this frame: only there do the images this
+// frame's passes write (the clamped sample, the prefiltered radiance) hold this frame's values.
+// Under SSSR's classification every glossy pixel lies in a listed tile, so a pixel elsewhere is
+// not glossy, which is what the G-buffer says of it too.
+bool GLINT_RD_PixelListed(int2 pixel)
+{
+    return GLINT_RD_TileListed(uint2(pixel) / GLINT_RD_TILE);
+}
 
 // Bilinear average at the pixel over the centres of the surrounding tiles, using only tiles
 // listed this frame (the others hold stale averages: reference defect 6). Tile centres are at

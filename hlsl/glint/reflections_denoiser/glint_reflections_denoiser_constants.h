@@ -16,6 +16,13 @@
 #define GLINT_RD_MASK_SELF 1u
 // The hit distance SSSR writes for misses ("infinite": rotation-only parallax).
 #define GLINT_RD_MISS_DISTANCE 65504.0
+// The alpha reproject stores in the clamped sample, and the prefilter (or the reconstruction)
+// in the prefiltered radiance, for pixels that are not glossy. Glossy pixels store their
+// variance there, which is never negative; so the next pass learns a span pixel's glossiness
+// from a fetch it makes anyway instead of 3 surface fetches (depth, normal, roughness). It holds
+// only in tiles listed this frame: the others keep stale values, so the reader also tests this
+// frame's tile mask.
+#define GLINT_RD_NOT_GLOSSY (-1.0)
 
 #define GLINT_RD_FLAG_REVERSED_DEPTH 1u
 #define GLINT_RD_FLAG_RESET 2u // camera cut, resize or first frame: every history is ignored

@@ -1,13 +1,15 @@
 // glint reflections denoiser, pass 2: prefilter (docs/reflections_denoiser.md). A
 // variance-guided, edge-aware spatial filter over 15 fixed taps within 3 pixels, with normal,
-// relative depth and radiance weights. Mirrors, pixels with zero variance and pixels that are
-// not glossy are copied through.
+// relative depth and radiance weights. Mirrors and pixels with zero variance are copied
+// through; pixels that are not glossy store (0, 0, 0, GLINT_RD_NOT_GLOSSY), which tells the
+// resolve (with this frame's tile mask) that they are not glossy.
 //
 // Integration: the callbacks of glint_reflections_denoiser_common.hlsli (with the average), and
 //
-//   float4 GLINT_RD_LoadClamped(int2 pixel);       reproject's firefly-clamped sample, a = hit distance
-//   float  GLINT_RD_LoadVariance(int2 pixel);      reproject's temporal variance (this frame)
+//   float4 GLINT_RD_LoadClamped(int2 pixel);       reproject's firefly-clamped sample, a = its
+//                                                  temporal variance (GLINT_RD_NOT_GLOSSY: not glossy)
 //   void   GLINT_RD_StorePrefiltered(int2 pixel, float4 radianceAndVariance);
+//                                                  rgb, a = variance (GLINT_RD_NOT_GLOSSY: not glossy)
 //
 // Dispatch: [numthreads(8, 8, 1)], indirect (tiles, 1, 1).
 #ifndef GLINT_REFLECTIONS_DENOISER_PREFILTER_HLSLI
@@ -17,7 +19,6 @@
 #include "glint/reflections_denoiser/glint_reflections_denoiser_common.hlsli"
 
 float4 GLINT_RD_LoadClamped(int2 pixel);
-float GLINT_RD_LoadVariance(int2 pixel);
 void GLINT_RD_StorePrefiltered(int2 pixel, float4 radianceAndVariance);
 
 // The taps reach 3 pixels, so the prefilter loads a 14x14 span (tile plus a 3-pixel apron):
@@ -79,6 +80,13 @@ void GLINT_RD_Prefilter(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint
     float3 average = GLINT_RD_AverageAt(c, clampedPixel);
     // Unrolled (a fixed count of slots a thread) so that the loads of all of them are in flight
     // together instead of one slot's round trip after the other.
+    //
+    // A slot fetches depth, normal and clamped sample (rgb, a = variance or the not-glossy flag)
+    // plus its tile's mask word: the clamped sample's alpha says whether the pixel is glossy,
+    // where GLINT_RD_LoadSurface needed the roughness too, and a separate variance image. Only
+    // listed tiles hold this frame's clamped samples; in the others no pixel is glossy
+    // (GLINT_RD_PixelListed). Glossy pixels have a usable normal and a finite positive view
+    // depth (reproject tested them), computed here exactly as GLINT_RD_LoadSurface does.
     [unroll] for (uint k = 0; k < GLINT_RD_PREFILTER_SLOTS_PER_THREAD; ++k)
     {
         uint i = localIndex + k * GLINT_RD_TILE * GLINT_RD_TILE;
@@ -86,12 +94,16 @@ void GLINT_RD_Prefilter(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint
         if (k + 1 < GLINT_RD_PREFILTER_SLOTS_PER_THREAD || i < GLINT_RD_PREFILTER_SLOTS)
         {
             int2 spanPixel = GLINT_RD_SpanPixelOf(c, tileOrigin, i, GLINT_RD_PREFILTER_SPAN, GLINT_RD_PREFILTER_APRON);
-            GLINT_RD_Surface s = GLINT_RD_LoadSurface(c, spanPixel);
+            bool listed = GLINT_RD_PixelListed(spanPixel);
+            float depth = GLINT_RD_LoadDepth(spanPixel);
+            bool normalOk;
+            float3 normal = GLINT_RD_UnpackNormal(c, GLINT_RD_LoadNormal(spanPixel), normalOk);
             float4 clamped = GLINT_RD_LoadClamped(spanPixel);
-            float variance = clamp(GLINT_FiniteOr(GLINT_RD_LoadVariance(spanPixel), 1.0), 0.0, 65504.0);
-            g_glint_rd_prefilter_radiance[i] = s.glossy ? float4(GLINT_RD_SanitizeRadiance(clamped.rgb), variance)
-                                                        : float4(0.0, 0.0, 0.0, 0.0);
-            g_glint_rd_prefilter_geometry[i] = float4(s.normal, s.glossy ? s.viewDepth : -1.0);
+            bool glossy = listed && clamped.a >= 0.0;
+            float variance = clamp(GLINT_FiniteOr(clamped.a, 1.0), 0.0, 65504.0);
+            g_glint_rd_prefilter_radiance[i] = glossy ? float4(GLINT_RD_SanitizeRadiance(clamped.rgb), variance)
+                                                      : float4(0.0, 0.0, 0.0, 0.0);
+            g_glint_rd_prefilter_geometry[i] = float4(normal, glossy ? GLINT_RD_ViewDepth(c, depth) : -1.0);
         }
     }
     GroupMemoryBarrierWithGroupSync();
@@ -101,10 +113,11 @@ void GLINT_RD_Prefilter(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint
     uint centre = (local.y + GLINT_RD_PREFILTER_APRON) * GLINT_RD_PREFILTER_SPAN + local.x + GLINT_RD_PREFILTER_APRON;
     float4 own = g_glint_rd_prefilter_radiance[centre];
     float4 geometry = g_glint_rd_prefilter_geometry[centre];
-    bool filtered = geometry.w > 0.0 && own.a > 0.0 && alpha >= c.mirrorThreshold;
+    bool glossy = geometry.w > 0.0;
+    bool filtered = glossy && own.a > 0.0 && alpha >= c.mirrorThreshold;
     if (!filtered)
     {
-        GLINT_RD_StorePrefiltered(int2(pixel), own);
+        GLINT_RD_StorePrefiltered(int2(pixel), glossy ? own : float4(0.0, 0.0, 0.0, GLINT_RD_NOT_GLOSSY));
         return;
     }
     float varianceWeight = max(0.1, 1.0 - exp(-4.4 * own.a));

@@ -10,10 +10,11 @@
 //
 // Integration: the callbacks of glint_reflections_denoiser_common.hlsli, and
 //
-//   float4 GLINT_RD_LoadClamped(int2 pixel);    reproject's firefly-clamped sample, a = hit distance
+//   float4 GLINT_RD_LoadClamped(int2 pixel);    reproject's firefly-clamped sample (rgb is read)
 //   float4 GLINT_RD_LoadRay(int2 pixel);        SSSR's ray (GLINT_SSSR_STORE_RAY): world unit direction, pdf
 //   float  GLINT_RD_LoadVariance(int2 pixel);   reproject's temporal variance (this frame)
 //   void   GLINT_RD_StoreReconstructed(int2 pixel, float4 radianceAndVariance);
+//                                               a = GLINT_RD_NOT_GLOSSY for pixels that are not glossy
 //
 // Only glossy pixels are read as neighbours; every glossy pixel has a ray this frame (SSSR
 // traces it or copies its quad donor's ray along with the radiance). A glossy pixel whose ray
@@ -94,7 +95,8 @@ void GLINT_RD_Reconstruct(GLINT_ReflectionsDenoiserRatioConstants r, uint groupI
     GLINT_RD_Surface surface = GLINT_RD_LoadSurface(c, ipixel);
     if (!surface.glossy)
     {
-        GLINT_RD_StoreReconstructed(ipixel, float4(0.0, 0.0, 0.0, 0.0));
+        // The prefilter's marking, which the resolve reads instead of the surface.
+        GLINT_RD_StoreReconstructed(ipixel, float4(0.0, 0.0, 0.0, GLINT_RD_NOT_GLOSSY));
         return;
     }
     float3 own = GLINT_RD_SanitizeRadiance(GLINT_RD_LoadClamped(ipixel).rgb);

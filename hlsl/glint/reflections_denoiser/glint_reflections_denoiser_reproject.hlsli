@@ -15,7 +15,10 @@
 //                                                       last frame's resolved radiance, a = its final
 //                                                       variance (both from the resolve's radiance history)
 //   float  GLINT_RD_LoadHistoryLength(int2 pixel);
-//   void   GLINT_RD_StoreClamped(int2 pixel, float4 radianceAndHitDistance);
+//   void   GLINT_RD_StoreClamped(int2 pixel, float4 radianceAndVariance);
+//                                                       rgb, a = the variance also given to StoreVariance
+//                                                       (GLINT_RD_NOT_GLOSSY: not glossy), so that a
+//                                                       prefilter span pixel is one fetch, flag included
 //   void   GLINT_RD_StoreReprojected(int2 pixel, float4 historyAndValidity);
 //   void   GLINT_RD_StoreVariance(int2 pixel, float variance);
 //   void   GLINT_RD_StoreHistoryLength(int2 pixel, float length);
@@ -35,7 +38,7 @@ uint GLINT_RD_LoadHistoryTileMask(uint2 tile);
 float4 GLINT_RD_LoadHistoryGuides(int2 pixel);
 float4 GLINT_RD_LoadHistoryRadianceAndVariance(int2 pixel);
 float GLINT_RD_LoadHistoryLength(int2 pixel);
-void GLINT_RD_StoreClamped(int2 pixel, float4 radianceAndHitDistance);
+void GLINT_RD_StoreClamped(int2 pixel, float4 radianceAndVariance);
 void GLINT_RD_StoreReprojected(int2 pixel, float4 historyAndValidity);
 void GLINT_RD_StoreVariance(int2 pixel, float variance);
 void GLINT_RD_StoreHistoryLength(int2 pixel, float length);
@@ -282,10 +285,11 @@ void GLINT_RD_Reproject(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint
     // so that they leave while the group reduces.
     if (inImage)
     {
-        float hitOut = surface.glossy ? hitDistance : GLINT_RD_MISS_DISTANCE;
-        GLINT_RD_StoreClamped(ipixel, float4(GLINT_RD_SanitizeRadiance(current), hitOut));
+        float storedVariance = clamp(GLINT_FiniteOr(temporalVariance, 1.0), 0.0, 65504.0);
+        GLINT_RD_StoreClamped(ipixel, float4(GLINT_RD_SanitizeRadiance(current),
+                                             surface.glossy ? storedVariance : GLINT_RD_NOT_GLOSSY));
         GLINT_RD_StoreReprojected(ipixel, float4(GLINT_RD_SanitizeRadiance(reprojected), history.valid ? 1.0 : 0.0));
-        GLINT_RD_StoreVariance(ipixel, clamp(GLINT_FiniteOr(temporalVariance, 1.0), 0.0, 65504.0));
+        GLINT_RD_StoreVariance(ipixel, storedVariance);
         GLINT_RD_StoreHistoryLength(ipixel, historyLength);
         GLINT_RD_StoreGuides(ipixel, float4(GLINT_RD_EncodeNormal(surface.normal),
                                             surface.glossy ? surface.viewDepth : 0.0, surface.alpha));

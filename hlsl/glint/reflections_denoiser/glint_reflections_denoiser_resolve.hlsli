@@ -6,7 +6,8 @@
 //
 // Integration: the callbacks of glint_reflections_denoiser_common.hlsli (with the average), and
 //
-//   float4 GLINT_RD_LoadPrefiltered(int2 pixel);    rgb, a = variance
+//   float4 GLINT_RD_LoadPrefiltered(int2 pixel);    rgb, a = variance (GLINT_RD_NOT_GLOSSY: not glossy;
+//                                                   defined in tiles listed this frame)
 //   float4 GLINT_RD_LoadReprojected(int2 pixel);    history rgb, a = 1 when valid
 //   float  GLINT_RD_LoadLength(int2 pixel);         this frame's history length (reproject)
 //   float4 GLINT_RD_LoadNoisy(int2 pixel);          SSSR radiance (its alpha, the hit distance, is kept)
@@ -53,13 +54,21 @@ void GLINT_RD_Resolve(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint2 
     float hitDistance = GLINT_RD_LoadNoisy(ipixel).a;
     // Unrolled (exactly 4 span slots a thread) so that the loads of all four are in flight
     // together instead of one slot's round trip after the other.
+    //
+    // A slot is one prefiltered fetch and its tile's mask word (the same few words across a
+    // wave), instead of the surface's depth, normal and roughness as well: the prefilter (or the
+    // reconstruction) marks pixels that are not glossy with GLINT_RD_NOT_GLOSSY in alpha, and
+    // glossy pixels hold their variance there, never negative. Only listed tiles hold this
+    // frame's values; in the others no pixel is glossy (GLINT_RD_PixelListed).
     [unroll] for (uint k = 0; k < GLINT_RD_SPAN * GLINT_RD_SPAN / (GLINT_RD_TILE * GLINT_RD_TILE); ++k)
     {
         uint i = localIndex + k * GLINT_RD_TILE * GLINT_RD_TILE;
         int2 spanPixel = GLINT_RD_SpanPixel(c, tileOrigin, i);
-        GLINT_RD_Surface s = GLINT_RD_LoadSurface(c, spanPixel);
-        float3 spanPrefiltered = GLINT_RD_SanitizeRadiance(GLINT_RD_LoadPrefiltered(spanPixel).rgb);
-        g_glint_rd_resolve_radiance[i] = s.glossy ? float4(spanPrefiltered, 1.0) : float4(0.0, 0.0, 0.0, 0.0);
+        bool listed = GLINT_RD_PixelListed(spanPixel);
+        float4 spanPrefiltered = GLINT_RD_LoadPrefiltered(spanPixel);
+        bool glossy = listed && spanPrefiltered.a >= 0.0;
+        g_glint_rd_resolve_radiance[i] = glossy ? float4(GLINT_RD_SanitizeRadiance(spanPrefiltered.rgb), 1.0)
+                                                : float4(0.0, 0.0, 0.0, 0.0);
     }
     GroupMemoryBarrierWithGroupSync();
 

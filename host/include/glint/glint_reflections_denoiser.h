@@ -60,8 +60,9 @@ struct ReflectionsDenoiserDesc {
 
 // Resources (inputs first): "sssr_radiance" (read and overwritten), "depth", "normals",
 // "sssr_roughness", "motion", "sssr_tile_list", "sssr_indirect_args" (from planSssr).
-// Owned: "rd_clamped", "rd_reprojected", "rd_prefiltered" (RGBA32F), "rd_radiance0/1"
-// (RGBA32F: resolved rgb, a = the final variance again), "rd_variance0/1", "rd_length0/1"
+// Owned: "rd_clamped", "rd_reprojected", "rd_prefiltered" (RGBA32F; the clamped and
+// prefiltered samples carry their variance in alpha, -1 for pixels that are not glossy),
+// "rd_radiance0/1" (RGBA32F: resolved rgb, a = the final variance again), "rd_variance0/1", "rd_length0/1"
 // (R32F), "rd_guides0/1" (RGBA32F: octahedral normal, view depth, alpha), "rd_average"
 // (RGBA32F, one texel per tile) and
 // "rd_tile_mask0/1" (4 bytes per tile). Parity p = frameIndex & 1 is written, 1 - p read.

@@ -46,7 +46,10 @@ std::string checkDesc(const ReflectionsDenoiserDesc& desc) {
     return {};
 }
 
-Pass tilePass(const char* name, const char* pipeline, const std::vector<std::byte>& constants) {
+// Every pass reads SSSR's tile list; those that read the surface also depth, normals and
+// roughness (the resolve learns glossiness from the prefiltered image's alpha instead).
+Pass tilePass(const char* name, const char* pipeline, const std::vector<std::byte>& constants,
+              bool readsSurface = true) {
     Pass pass;
     pass.name = name;
     pass.pipeline = pipeline;
@@ -56,10 +59,11 @@ Pass tilePass(const char* name, const char* pipeline, const std::vector<std::byt
     pass.constantsBinding = "g_glint_constants";
     pass.constants = constants;
     pass.dispatch = IndirectDispatch{"sssr_indirect_args", 12};
-    pass.uses = {{"g_glint_tile_list", "sssr_tile_list", Access::Read},
-                 {"g_glint_depth", "depth", Access::Read},
-                 {"g_glint_normals", "normals", Access::Read},
-                 {"g_glint_roughness", "sssr_roughness", Access::Read}};
+    pass.uses = {{"g_glint_tile_list", "sssr_tile_list", Access::Read}};
+    if (readsSurface)
+        pass.uses.insert(pass.uses.end(), {{"g_glint_depth", "depth", Access::Read},
+                                           {"g_glint_normals", "normals", Access::Read},
+                                           {"g_glint_roughness", "sssr_roughness", Access::Read}});
     return pass;
 }
 
@@ -131,12 +135,12 @@ Result planReflectionsDenoiser(const ReflectionsDenoiserDesc& desc, EffectPlan& 
                            {"g_glint_tile_mask", "rd_tile_mask" + now, Access::ReadWrite}});
     reproject.zeroBuffers = {"rd_tile_mask" + now};
     Pass prefilter = tilePass("prefilter", half ? "rd_prefilter.half" : "rd_prefilter", constants);
+    // rd_clamped carries the temporal variance in alpha (and flags pixels that are not glossy).
     prefilter.uses.insert(prefilter.uses.end(), {{"g_glint_average", "rd_average", Access::Read},
                                                  {"g_glint_tile_mask", "rd_tile_mask" + now, Access::Read},
                                                  {"g_glint_clamped", "rd_clamped", Access::Read},
-                                                 {"g_glint_variance", "rd_variance" + now, Access::Read},
                                                  {"g_glint_prefiltered", "rd_prefiltered", Access::Write}});
-    Pass resolve = tilePass("resolve", half ? "rd_resolve.half" : "rd_resolve", constants);
+    Pass resolve = tilePass("resolve", half ? "rd_resolve.half" : "rd_resolve", constants, false);
     resolve.uses.insert(resolve.uses.end(), {{"g_glint_average", "rd_average", Access::Read},
                                              {"g_glint_tile_mask", "rd_tile_mask" + now, Access::Read},
                                              {"g_glint_prefiltered", "rd_prefiltered", Access::Read},
