@@ -226,15 +226,20 @@ void GLINT_RD_Reproject(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint
     float weightSum = 0.0;
     if (surface.glossy)
     {
-        [unroll] for (int y = -GLINT_RD_APRON; y <= GLINT_RD_APRON; ++y)
+        // Rows in a loop, columns unrolled: all 81 taps unrolled held too many groupshared
+        // values at once (109 registers on NVIDIA, a third of the threads an SM can hold).
+        [loop] for (int y = -GLINT_RD_APRON; y <= GLINT_RD_APRON; ++y)
+        {
+            float rowWeight = GLINT_RD_GaussianWeight(y);
             [unroll] for (int x = -GLINT_RD_APRON; x <= GLINT_RD_APRON; ++x)
             {
                 float4 q = g_glint_rd_noisy[centre + y * GLINT_RD_SPAN + x];
-                float w = q.a < 0.0 ? 0.0 : GLINT_RD_GaussianWeight(x) * GLINT_RD_GaussianWeight(y);
+                float w = q.a < 0.0 ? 0.0 : GLINT_RD_GaussianWeight(x) * rowWeight;
                 sum += w * q.rgb;
                 sumSquares += w * q.rgb * q.rgb;
                 weightSum += w;
             }
+        }
     }
     float3 mean = weightSum > 0.0 ? sum / weightSum : current;
     float3 variance3 = weightSum > 0.0 ? abs(sumSquares / weightSum - mean * mean) : float3(0.0, 0.0, 0.0);
