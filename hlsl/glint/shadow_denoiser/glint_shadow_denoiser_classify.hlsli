@@ -283,7 +283,8 @@ float GLINT_SHADOW_DENOISER_GroupAntiLagLength(bool wanted, int2 pixel, int2 pre
         if (!wanted)
             return 1024.0;
         uint centre = (groupThreadId.y + uint(radius)) * uint(span) + groupThreadId.x + uint(radius);
-        [unroll] for (int dy = -radius; dy <= radius; ++dy)
+        // Rows in a loop, columns unrolled (as the reflections denoiser's 9x9 statistics).
+        [loop] for (int dy = -radius; dy <= radius; ++dy)
             [unroll] for (int dx = -radius; dx <= radius; ++dx)
                 GLINT_SHADOW_DENOISER_AntiLagAdd(sums, g_glint_shadow_denoiser_classify_window[int(centre) + dy * span + dx],
                                                  z, previousZ);

@@ -8,9 +8,11 @@
 // The visibility mask: one 32-bit word per 8x4 pixel tile (docs/shadow_denoiser.md).
 #define GLINT_SHADOW_DENOISER_MASK_TILE_WIDTH 8
 #define GLINT_SHADOW_DENOISER_MASK_TILE_HEIGHT 4
-// A prepare group packs 32x8 mask tiles (256x32 pixels), one thread per mask tile.
+// A prepare group of 32x8 threads packs 8x8 mask tiles (64x32 pixels), four threads per mask
+// tile (one pixel row each).
 #define GLINT_SHADOW_DENOISER_PREPARE_GROUP_WIDTH 32
 #define GLINT_SHADOW_DENOISER_PREPARE_GROUP_HEIGHT 8
+#define GLINT_SHADOW_DENOISER_PREPARE_GROUP_TILES_X 8
 // The filter works on 8x8 pixel tiles with a 4-pixel apron (step 4 x radius 1).
 #define GLINT_SHADOW_DENOISER_FILTER_TILE 8
 #define GLINT_SHADOW_DENOISER_FILTER_APRON 4

@@ -38,7 +38,7 @@ Pass preparePass(const ShadowDenoiserDesc& desc, Extent2D tiles) {
     pass.groupSize[1] = GLINT_SHADOW_DENOISER_PREPARE_GROUP_HEIGHT;
     pass.groupSize[2] = 1;
     pass.dispatch =
-        DirectDispatch{core::divideRoundUp(tiles.width, GLINT_SHADOW_DENOISER_PREPARE_GROUP_WIDTH),
+        DirectDispatch{core::divideRoundUp(tiles.width, GLINT_SHADOW_DENOISER_PREPARE_GROUP_TILES_X),
                        core::divideRoundUp(tiles.height, GLINT_SHADOW_DENOISER_PREPARE_GROUP_HEIGHT), 1};
     shaders::GLINT_ShadowDenoiserPrepareConstants constants{};
     constants.inputSize = {desc.size.width, desc.size.height};
