@@ -89,6 +89,8 @@ bool applyShadow(ShadowDenoiserDesc& desc, const std::string& name, const std::s
         desc.depthSigma = parseFloat(name, value);
     else if (name == "normalPower")
         desc.normalPower = parseFloat(name, value);
+    else if (name == "filterVarianceScale")
+        desc.filterVarianceScale = parseFloat(name, value);
     else
         return false;
     return true;
@@ -138,7 +140,7 @@ void applySetting(EffectSettings& settings, const std::string& assignment) {
             "varianceThreshold, denoiser.historyClipScale, denoiser.maxHistoryLength, denoiser.spatialPath, "
             "denoiser.reconstructionRadius, denoiser.cleanupSigma, shadows.filter, shadows.classify, "
             "shadows.skipClearedTiles, "
-            "shadows.fusedFilter, shadows.antiLag, shadows.rebuildClearHistory, "
+            "shadows.fusedFilter, shadows.antiLag, shadows.rebuildClearHistory, shadows.filterVarianceScale, "
             "shadows.depthSigma, shadows.normalPower)");
     settings.assignments.push_back(assignment);
 }

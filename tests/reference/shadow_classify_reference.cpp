@@ -219,7 +219,7 @@ ShadowClassifyOutputs shadowClassify(const ShadowClassifyInputs& in) {
                     const float newMean = m + delta / n;
                     const float newM2 = m2 + delta * (sample - newMean);
                     const float temporalVariance = n > 1.0f ? newM2 / (n - 1.0f) : 1.0f;
-                    // Wide clamp (2 sigma_s), blend max(1/n, 1/64), variance of the mean / 16.
+                    // Wide clamp (2 sigma_s), blend max(1/n, 1/64), variance of the mean scaled.
                     const float radius = 2.0f * spatialSigma;
                     const float clamped = std::clamp(history, mean - radius, mean + radius);
                     const float deviation = (history - mean) / std::max(radius, 0.001f);
@@ -229,7 +229,7 @@ ShadowClassifyOutputs shadowClassify(const ShadowClassifyInputs& in) {
                     const float spread =
                         n < 16.0f ? std::max(temporalVariance, spatialVariance) * std::max(16.0f - n, 1.0f)
                                   : temporalVariance;
-                    const float variance = spread / samples / 16.0f;
+                    const float variance = spread / samples * in.filterVarianceScale;
                     const float alpha = std::max(1.0f / samples, 1.0f / 64.0f);
                     float result = std::clamp(clamped + (sample - clamped) * alpha, 0.0f, 1.0f);
                     result = finite(result) ? result : 0.0f;

@@ -22,7 +22,8 @@ struct ShadowClassifyInputs {
     float viewDepth[3] = {0.1f, 1.0f, -1.0f};
     float ndcYSign = 1.0f;
     bool reset = false;
-    bool antiLag = true; // the 5x5 anti-lag test
+    bool antiLag = true;                      // the 5x5 anti-lag test
+    float filterVarianceScale = 1.0f / 16.0f; // times the variance of the accumulated mean
 };
 
 struct ShadowClassifyOutputs {

@@ -59,6 +59,7 @@ reference::ShadowClassifyInputs referenceInputs(const ShadowDenoiserDesc& desc,
     ref.ndcYSign = desc.vulkanNdc ? 1.0f : -1.0f;
     ref.reset = desc.resetHistory;
     ref.antiLag = desc.antiLag;
+    if (desc.filterVarianceScale > 0.0f) ref.filterVarianceScale = desc.filterVarianceScale;
     return ref;
 }
 
@@ -176,6 +177,10 @@ TEST_CASE("classify 64x48 with history and motion: matches the CPU reference", "
     checkClassify(desc, movingInputs(64, 48, 12), 2);
     // Without the anti-lag test (the reference skips its cap too).
     desc.antiLag = false;
+    checkClassify(desc, movingInputs(64, 48, 12), 2);
+    // An explicit filter variance scale reaches the stored variance.
+    desc.antiLag = true;
+    desc.filterVarianceScale = 0.7f;
     checkClassify(desc, movingInputs(64, 48, 12), 2);
 }
 

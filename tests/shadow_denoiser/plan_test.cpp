@@ -131,6 +131,35 @@ TEST_CASE("shadow plan: invalid descriptions are refused", "[plan]") {
     desc.normalPower = std::numeric_limits<float>::quiet_NaN();
     CHECK(planShadowDenoiser(desc, plan, &error) == Result::InvalidArgument);
     CHECK(error.find("shadow denoiser") == 0);
+    desc.normalPower = 32.0f;
+    desc.filterVarianceScale = -1.0f;
+    CHECK(planShadowDenoiser(desc, plan, &error) == Result::InvalidArgument);
+    desc.filterVarianceScale = std::numeric_limits<float>::infinity();
+    CHECK(planShadowDenoiser(desc, plan, &error) == Result::InvalidArgument);
+}
+
+// The automatic filter variance scale: 1/16 up to 360 rows, (rows / 360)^2 / 16 above; an
+// explicit value wins; the classify constants carry it in eyePosition.w.
+TEST_CASE("shadow plan: the filter variance scale follows the image height", "[plan]") {
+    ShadowDenoiserDesc desc;
+    desc.size = {160, 90};
+    CHECK(shadowFilterVarianceScale(desc) == 0.0625f);
+    desc.size = {640, 360};
+    CHECK(shadowFilterVarianceScale(desc) == 0.0625f);
+    desc.size = {1920, 1080};
+    CHECK(shadowFilterVarianceScale(desc) == Approx(0.5625f));
+    desc.size = {3840, 2160};
+    CHECK(shadowFilterVarianceScale(desc) == Approx(2.25f));
+    desc.filterVarianceScale = 0.25f;
+    CHECK(shadowFilterVarianceScale(desc) == 0.25f);
+    EffectPlan plan;
+    std::string error;
+    REQUIRE(planShadowDenoiser(desc, plan, &error) == Result::Ok);
+    shaders::GLINT_ShadowDenoiserClassifyConstants constants{};
+    REQUIRE(plan.passes[1].name == "classify");
+    REQUIRE(plan.passes[1].constants.size() == sizeof(constants));
+    std::memcpy(&constants, plan.passes[1].constants.data(), sizeof(constants));
+    CHECK(constants.eyePosition.w == 0.25f);
 }
 
 TEST_CASE("shadow mask layout: one byte per row, leftmost pixel in bit 0, edges clamp", "[reference]") {

@@ -27,6 +27,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <numbers>
 #include <sstream>
@@ -46,6 +47,14 @@ scene::Scene courtyard(std::uint32_t frames) {
     scene.frameCount = frames;
     scene.reference.shadows = true;
     scene.reference.samplesPerPixel = 64;
+    // GLINT_TRACK_SIZE=WxH: for measurements at other sizes (the asserted bounds are the
+    // scene's 160x90 ones).
+    if (const char* size = std::getenv("GLINT_TRACK_SIZE")) {
+        unsigned width = 0, height = 0;
+        REQUIRE(std::sscanf(size, "%ux%u", &width, &height) == 2);
+        scene.width = width;
+        scene.height = height;
+    }
     return scene;
 }
 

@@ -106,5 +106,6 @@ void GLINT_SHADOW_DENOISER_StoreMoments(int2 pixel, float4 moments)
     c.viewDepth = g_glint_constants.viewDepth;
     c.ndcYSign = g_glint_constants.ndcYSign;
     c.flags = g_glint_constants.flags;
+    c.filterVarianceScale = g_glint_constants.eyePosition.w;
     GLINT_SHADOW_DENOISER_Classify(groupId.xy, groupThreadId.xy, groupIndex, c);
 }

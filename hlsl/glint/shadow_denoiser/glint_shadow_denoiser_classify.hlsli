@@ -313,6 +313,9 @@ struct GLINT_ShadowDenoiserClassifyParams
     float4 viewDepth;
     float ndcYSign;
     uint flags; // GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_*
+    // The filter's edge stop sees this times the variance of the accumulated mean (the
+    // constants' eyePosition.w): larger filters settled penumbrae more (docs/shadow_denoiser.md).
+    float filterVarianceScale;
 };
 
 void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint2 groupThreadId, uint groupIndex,
@@ -514,7 +517,7 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint2 groupThreadId, uint gro
     // Variance of the accumulated mean (boosted while young): the filter's edge stop tightens as
     // samples accumulate, so the spatial filter fades out instead of biasing the penumbra.
     float variance = (n < 16.0 ? max(temporalVariance, spatialVariance) * max(16.0 - n, 1.0) : temporalVariance) /
-                     count * GLINT_SHADOW_DENOISER_FILTER_VARIANCE_SCALE;
+                     count * c.filterVarianceScale;
     float alpha = max(1.0 / count, 1.0 / GLINT_SHADOW_DENOISER_HISTORY_CAP);
     float result = clamp(lerp(clamped, x, alpha), 0.0, 1.0);
     result = GLINT_FiniteOr(result, 0.0);

@@ -44,10 +44,10 @@ GLINT_CONSTANTS_END(GLINT_ShadowDenoiserFilterConstants);
 
 // Temporal accumulation (docs/shadow_denoiser.md, "Convergence"): the history is clamped to
 // mu +- CLAMP_SIGMAS sigma_s of the 17x17 statistics, blended with alpha = max(1/n, 1/HISTORY_CAP),
-// and the filter's edge stop uses FILTER_VARIANCE_SCALE times the variance of the accumulated mean.
+// and the filter's edge stop uses a scale (eyePosition.w; ShadowDenoiserDesc::filterVarianceScale)
+// times the variance of the accumulated mean.
 #define GLINT_SHADOW_DENOISER_CLAMP_SIGMAS 2.0
 #define GLINT_SHADOW_DENOISER_HISTORY_CAP 64.0
-#define GLINT_SHADOW_DENOISER_FILTER_VARIANCE_SCALE 0.0625
 // Anti-lag (docs/shadow_denoiser.md, "Convergence"): this frame's mask bits in a
 // (2 RADIUS + 1)^2 window against last frame's accumulated shadow of the same window; when the
 // larger of two binomial scores (with SLACK samples of slack; neighbours within DEPTH relative
@@ -83,7 +83,7 @@ GLINT_CONSTANTS_BEGIN(GLINT_ShadowDenoiserClassifyConstants)
     uint2 maskTiles;            // ceil(W / 8) x ceil(H / 4)
     float4 reproject[4];        // R_reproj = VP_prev VP^-1: current NDC (x_n, y_n, d, 1) -> previous clip
     float4 inverseViewProj[4];  // VP^-1: current NDC -> world (homogeneous)
-    float4 eyePosition;         // xyz: world-space eye
+    float4 eyePosition;         // xyz: world-space eye; w: the filter variance scale (see below)
     float4 viewDepth;           // (A, B, C, 0): view depth z = A / (B + C d), both frames
     float2 normalUnpack;        // (mul, add)
     float ndcYSign;             // y_n = ndcYSign (2 v - 1): +1 Vulkan-style, -1 D3D-style

@@ -47,6 +47,12 @@ struct ShadowDenoiserDesc {
     // metadata and depth (both frames' "shadow_previous_depth" must be the frame before's
     // "shadow_depth"). Same results, 16 bytes a pixel fewer writes on clear tiles.
     bool rebuildClearHistory = true;
+    // The filter's edge stop sees this times the variance of the accumulated mean: larger values
+    // keep filtering settled penumbrae (less noise, more bias where they are narrow in pixels).
+    // 0 (default): 1/16 up to 360 rows, growing with (rows / 360)^2 above (0.5625 at 1080p),
+    // since a fixed-size kernel biases a penumbra less the more pixels it spans
+    // (docs/shadow_denoiser.md, "The filter strength and the resolution").
+    float filterVarianceScale = 0.0f;
 
     // Classification (temporal) inputs. Matrices are row-major 4x4 with column vectors (q = M p).
     std::array<double, 16> reprojection{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}; // VP_prev VP^-1
@@ -56,6 +62,10 @@ struct ShadowDenoiserDesc {
     bool resetHistory = false;    // first frame, camera cut or resize: every history is ignored
     std::uint32_t frameIndex = 0; // moments and metadata ping-pong on its parity
 };
+
+// The filter variance scale a description resolves to (filterVarianceScale, or its automatic
+// value for the size).
+float shadowFilterVarianceScale(const ShadowDenoiserDesc& desc);
 
 // Words of the visibility mask: ceil(W / 8) x ceil(H / 4).
 Extent2D shadowMaskTiles(Extent2D size);

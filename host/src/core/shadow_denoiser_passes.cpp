@@ -6,6 +6,7 @@
 #include "core/plan_checks.h"
 #include "glint/shadow_denoiser/glint_shadow_denoiser_constants.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace glint {
@@ -117,7 +118,8 @@ Pass classifyPass(const ShadowDenoiserDesc& desc, Extent2D tiles) {
     constants.maskTiles = {tiles.width, tiles.height};
     core::storeRows(desc.reprojection, constants.reproject);
     core::storeRows(desc.inverseViewProjection, constants.inverseViewProj);
-    constants.eyePosition = {desc.eyePosition[0], desc.eyePosition[1], desc.eyePosition[2], 0.0f};
+    constants.eyePosition = {desc.eyePosition[0], desc.eyePosition[1], desc.eyePosition[2],
+                             shadowFilterVarianceScale(desc)};
     constants.viewDepth = viewDepthCoefficients(desc);
     constants.normalUnpack = {desc.normalUnpackMul, desc.normalUnpackAdd};
     constants.ndcYSign = desc.vulkanNdc ? 1.0f : -1.0f;
@@ -160,6 +162,14 @@ Extent2D shadowMaskTiles(Extent2D size) {
             core::divideRoundUp(size.height, GLINT_SHADOW_DENOISER_MASK_TILE_HEIGHT)};
 }
 
+float shadowFilterVarianceScale(const ShadowDenoiserDesc& desc) {
+    if (desc.filterVarianceScale > 0.0f) return desc.filterVarianceScale;
+    // Measured on the courtyard (docs/shadow_denoiser.md): 1/16 is neutral at 640x360 and the
+    // filter's bias at a given penumbra falls with the square of its width in pixels.
+    const float rows = static_cast<float>(desc.size.height) / 360.0f;
+    return 0.0625f * std::max(rows * rows, 1.0f);
+}
+
 Result planShadowDenoiser(const ShadowDenoiserDesc& desc, EffectPlan& plan, std::string* error) {
     if (!core::validExtent(desc.size)) return invalid(error, "size must be 1..16384 in each dimension");
     if (!positiveFinite(desc.nearPlane)) return invalid(error, "nearPlane must be positive and finite");
@@ -170,6 +180,8 @@ Result planShadowDenoiser(const ShadowDenoiserDesc& desc, EffectPlan& plan, std:
         return invalid(error, "depthSigma must be finite and >= 1e-6");
     if (!(desc.normalPower >= 1.0f && desc.normalPower <= 256.0f))
         return invalid(error, "normalPower must be 1..256");
+    if (!(desc.filterVarianceScale >= 0.0f && std::isfinite(desc.filterVarianceScale)))
+        return invalid(error, "filterVarianceScale must be finite and >= 0 (0: automatic)");
     if (!std::isfinite(desc.normalUnpackMul) || !std::isfinite(desc.normalUnpackAdd))
         return invalid(error, "normal unpack factors must be finite");
 
