@@ -66,6 +66,8 @@ std::vector<Point> pointsFor(const std::string& effect, bool quick) {
             {"no_tile_skip", {"shadows.skipClearedTiles=false"}},
             {"fused_filter", {"shadows.fusedFilter=true"}},
             {"no_anti_lag", {"shadows.antiLag=false"}},
+            {"filter_variance_0.0625", {"shadows.filterVarianceScale=0.0625"}},
+            {"filter_variance_4", {"shadows.filterVarianceScale=4"}},
             {"depth_sigma_0.01", {"shadows.depthSigma=0.01"}},
             {"depth_sigma_0.05", {"shadows.depthSigma=0.05"}},
             {"normal_power_8", {"shadows.normalPower=8"}},
