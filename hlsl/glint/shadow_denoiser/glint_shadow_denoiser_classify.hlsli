@@ -147,21 +147,6 @@ float GLINT_SHADOW_DENOISER_BilinearHistory(float2 uv, uint2 inputSize, float4 v
     return valid ? clamp(h, 0.0, 1.0) : 0.0;
 }
 
-// Anti-lag (docs/shadow_denoiser.md, "Convergence"): the longest history that the 5x5 window
-// around the pixel still supports. This frame's mask bits b_j in the window are compared with
-// last frame's accumulated shadow h_j (n_j samples) of the same window around the previous
-// position, pixel by pixel, so the shape of a static penumbra cancels out. Two scores, each in
-// binomial sigmas with ANTILAG_SLACK samples of slack for the histories' own error:
-// - signed: |sum b_j - sum h_j| / sqrt(sum p_j (1 - p_j) (1 + 1/(n_j + 1)) + slack), with
-//   p_j = (h_j n_j + 1/4) / (n_j + 1/2); it sees a shadow that arrived or left as a whole;
-// - absolute: sum (|b_j - h_j| - E_j) / sqrt(sum q_j (1 - q_j) (1 - 2 h_j)^2 + slack), with
-//   q_j = (h_j n_j + 1) / (n_j + 2) and E_j = q_j (1 - h_j) + (1 - q_j) h_j the expected
-//   |b_j - h_j|; it sees bits that contradict confident histories in both directions (a thin
-//   shadow that moved sideways gains on one edge what it loses on the other).
-// Neighbours count when they are inside the image and receivers within ANTILAG_DEPTH relative
-// view depth of the centre in both frames (moments of non-receivers store n = 0). With z the
-// larger score: above ANTILAG_THRESHOLD the history length is capped at
-// ANTILAG_LENGTH / (z - ANTILAG_THRESHOLD)^2 (at least 1; continuous at the threshold).
 // The anti-lag terms of one window position: this frame's view depth at `current` (-1 when
 // either position is outside the image or the history there is missing), last frame's view
 // depth at `previous`, the accumulated shadow there, and its sample count, negated when this
