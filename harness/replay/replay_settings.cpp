@@ -83,6 +83,8 @@ bool applyShadow(ShadowDenoiserDesc& desc, const std::string& name, const std::s
         desc.fusedFilter = parseBool(name, value);
     else if (name == "antiLag")
         desc.antiLag = parseBool(name, value);
+    else if (name == "pairedFilter")
+        desc.pairedFilter = parseBool(name, value);
     else if (name == "rebuildClearHistory")
         desc.rebuildClearHistory = parseBool(name, value);
     else if (name == "depthSigma")
@@ -140,7 +142,7 @@ void applySetting(EffectSettings& settings, const std::string& assignment) {
             "varianceThreshold, denoiser.historyClipScale, denoiser.maxHistoryLength, denoiser.spatialPath, "
             "denoiser.reconstructionRadius, denoiser.cleanupSigma, shadows.filter, shadows.classify, "
             "shadows.skipClearedTiles, "
-            "shadows.fusedFilter, shadows.antiLag, shadows.rebuildClearHistory, shadows.filterVarianceScale, "
+            "shadows.fusedFilter, shadows.pairedFilter, shadows.antiLag, shadows.rebuildClearHistory, shadows.filterVarianceScale, "
             "shadows.depthSigma, shadows.normalPower)");
     settings.assignments.push_back(assignment);
 }

@@ -6,7 +6,7 @@
 // one dispatch of 16x16 groups (finalPass then selects the contrast remap);
 // GLINT_SHADOW_DENOISER_TILE_LIST=1 dispatches indirectly over the tiles classification listed;
 // GLINT_SHADOW_DENOISER_TILE_SKIP=1 (fused only) skips groups of cleared tiles. Both count the
-// tiles they filter.
+// tiles they filter. GLINT_SHADOW_DENOISER_FILTER_PAIR=1 runs steps 1 and 2 in one dispatch.
 #include "entry/common/glint_entry_common.hlsli"
 #include "glint/shadow_denoiser/glint_shadow_denoiser_constants.h"
 #include "glint/shadow_denoiser/glint_shadow_denoiser_filter.hlsli"
@@ -69,6 +69,14 @@ void GLINT_SHADOW_DENOISER_StoreFiltered(int2 pixel, float2 meanVariance)
     GLINT_SHADOW_DENOISER_FilterFused(groupId.xy, groupIndex, g_glint_constants.inputSize,
                                       g_glint_constants.finalPass != 0, g_glint_constants.viewDepth,
                                       g_glint_constants.depthSigma, g_glint_constants.normalPower);
+}
+#elif GLINT_SHADOW_DENOISER_FILTER_PAIR
+[numthreads(8, 8, 1)] void main(uint3 groupId : SV_GroupID, uint3 groupThreadId : SV_GroupThreadID,
+                                uint groupIndex : SV_GroupIndex)
+{
+    GLINT_SHADOW_DENOISER_FilterPair(groupId.xy, groupThreadId.xy, groupIndex, g_glint_constants.inputSize,
+                                     g_glint_constants.viewDepth, g_glint_constants.depthSigma,
+                                     g_glint_constants.normalPower);
 }
 #else
 [numthreads(8, 8, 1)] void main(uint3 groupId : SV_GroupID, uint3 groupThreadId : SV_GroupThreadID,

@@ -36,6 +36,10 @@
 //
 // Dispatch: [numthreads(8, 8, 1)], ceil(W / 8) x ceil(H / 8) x 1 groups; groupshared tile of
 // 16 x 16 pixels (the 8 x 8 tile plus a 4-pixel apron), coordinates clamped to the image.
+//
+// GLINT_SHADOW_DENOISER_FILTER_PAIR=1: GLINT_SHADOW_DENOISER_FilterPair runs the iterations with
+// steps 1 and 2 in one dispatch of the same groups (the first over the tile +- 2 pixels, in
+// groupshared memory), so the three iterations take two dispatches; same taps, same results.
 #ifndef GLINT_SHADOW_DENOISER_FILTER_HLSLI
 #define GLINT_SHADOW_DENOISER_FILTER_HLSLI
 
@@ -62,6 +66,9 @@ void GLINT_SHADOW_DENOISER_CountFilteredTile();
 // 4) with two value buffers it ping-pongs between its three iterations.
 #if GLINT_SHADOW_DENOISER_FILTER_FUSED
 #define GLINT_SHADOW_DENOISER_FILTER_SPAN 30
+#define GLINT_SHADOW_DENOISER_FILTER_BUFFERS 2
+#elif GLINT_SHADOW_DENOISER_FILTER_PAIR
+#define GLINT_SHADOW_DENOISER_FILTER_SPAN 16
 #define GLINT_SHADOW_DENOISER_FILTER_BUFFERS 2
 #else
 #define GLINT_SHADOW_DENOISER_FILTER_SPAN 16
@@ -270,17 +277,22 @@ void GLINT_SHADOW_DENOISER_FixClearInputs(uint groupIndex, uint groupThreads, in
 #endif
 
 #if !GLINT_SHADOW_DENOISER_FILTER_FUSED
-void GLINT_SHADOW_DENOISER_Filter(uint2 groupId, uint2 groupThreadId, uint groupIndex, uint2 inputSize, uint step,
-                                  bool finalPass, float4 viewDepth, float depthSigma, float normalPower)
+// The 8 x 8 filters' start: the group's tile (from the list with GLINT_SHADOW_DENOISER_TILE_LIST,
+// counted `iterations` times), its span loaded into value buffer 0 and the geometry, clear
+// neighbours fixed. Returns the tile's first pixel; spanOrigin is the span's.
+int2 GLINT_SHADOW_DENOISER_FilterBegin(uint2 groupId, uint groupIndex, uint2 inputSize, float4 viewDepth,
+                                       uint iterations, out int2 spanOrigin)
 {
 #if GLINT_SHADOW_DENOISER_TILE_LIST
     // Only the tiles classification listed (never clear ones) are dispatched; the others hold
     // their constant in the output already (classification wrote it).
     groupId = GLINT_SHADOW_DENOISER_LoadFilterTile(groupId.x);
     if (groupIndex == 0)
-        GLINT_SHADOW_DENOISER_CountFilteredTile();
+        for (uint i = 0; i < iterations; ++i)
+            GLINT_SHADOW_DENOISER_CountFilteredTile();
 #endif
-    int2 spanOrigin = int2(groupId * GLINT_SHADOW_DENOISER_FILTER_TILE) - GLINT_SHADOW_DENOISER_FILTER_APRON;
+    int2 tileOrigin = int2(groupId * GLINT_SHADOW_DENOISER_FILTER_TILE);
+    spanOrigin = tileOrigin - GLINT_SHADOW_DENOISER_FILTER_APRON;
     GLINT_SHADOW_DENOISER_LoadSpan(groupIndex, 64u, spanOrigin, inputSize, viewDepth);
 #if GLINT_SHADOW_DENOISER_TILE_LIST
     // Neighbouring clear tiles were not stored by classification or the earlier passes.
@@ -289,8 +301,50 @@ void GLINT_SHADOW_DENOISER_Filter(uint2 groupId, uint2 groupThreadId, uint group
     GLINT_SHADOW_DENOISER_FixClearInputs(groupIndex, 64u, spanOrigin, inputSize);
 #endif
     GroupMemoryBarrierWithGroupSync();
+    return tileOrigin;
+}
 
-    int2 pixel = int2(groupId * GLINT_SHADOW_DENOISER_FILTER_TILE + groupThreadId);
+#if GLINT_SHADOW_DENOISER_FILTER_PAIR
+// Iterations 1 and 2 (steps 1 and 2) of an 8 x 8 tile. The second reads the first's results
+// at the tile +- 2 pixels (its taps; its 3x3 variance needs +- 1), which read the span at
+// +- 3: within the 4-pixel apron. Clear and non-receiver pixels take their fixed value in
+// both, as the separate dispatches give them.
+void GLINT_SHADOW_DENOISER_FilterPair(uint2 groupId, uint2 groupThreadId, uint groupIndex, uint2 inputSize,
+                                      float4 viewDepth, float depthSigma, float normalPower)
+{
+    int2 spanOrigin;
+    int2 tileOrigin = GLINT_SHADOW_DENOISER_FilterBegin(groupId, groupIndex, inputSize, viewDepth, 2u, spanOrigin);
+    const uint width = GLINT_SHADOW_DENOISER_FILTER_TILE + 4u;
+    // 144 pixels over 64 threads: 3 rounds for the first 16, 2 for the others.
+    [loop] for (uint i = groupIndex; i < width * width; i += 64u)
+    {
+        int2 pixel = tileOrigin - 2 + int2(i % width, i / width);
+        if (any(uint2(pixel) >= inputSize))
+            continue;
+        float2 value;
+        if (!GLINT_SHADOW_DENOISER_FixedValue(pixel, spanOrigin, inputSize, value))
+            value = GLINT_SHADOW_DENOISER_FilterPixel(pixel, spanOrigin, inputSize, 0u, 1u, depthSigma, normalPower);
+        g_glint_shadow_denoiser_filter_values[GLINT_SHADOW_DENOISER_FILTER_SLOTS +
+                                              GLINT_SHADOW_DENOISER_FilterSlot(pixel, spanOrigin, inputSize)] = value;
+    }
+    GroupMemoryBarrierWithGroupSync();
+
+    int2 pixel = tileOrigin + int2(groupThreadId);
+    if (any(uint2(pixel) >= inputSize))
+        return;
+    float2 result;
+    if (!GLINT_SHADOW_DENOISER_FixedValue(pixel, spanOrigin, inputSize, result))
+        result = GLINT_SHADOW_DENOISER_FilterPixel(pixel, spanOrigin, inputSize, 1u, 2u, depthSigma, normalPower);
+    GLINT_SHADOW_DENOISER_StoreFiltered(pixel, result);
+}
+#endif
+
+void GLINT_SHADOW_DENOISER_Filter(uint2 groupId, uint2 groupThreadId, uint groupIndex, uint2 inputSize, uint step,
+                                  bool finalPass, float4 viewDepth, float depthSigma, float normalPower)
+{
+    int2 spanOrigin;
+    int2 tileOrigin = GLINT_SHADOW_DENOISER_FilterBegin(groupId, groupIndex, inputSize, viewDepth, 1u, spanOrigin);
+    int2 pixel = tileOrigin + int2(groupThreadId);
     if (any(uint2(pixel) >= inputSize))
         return;
     if (g_glint_shadow_denoiser_filter_geometry[GLINT_SHADOW_DENOISER_FilterSlot(pixel, spanOrigin, inputSize)].x <= 0.0)

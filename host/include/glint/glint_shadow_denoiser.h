@@ -36,6 +36,10 @@ struct ShadowDenoiserDesc {
     // on an H100 it measured 96.5 us against 91.5 us for the three dispatches at 1080p with tile
     // skipping, and 486 us against 300 us without (docs/performance.md).
     bool fusedFilter = false;
+    // Without fusedFilter: the iterations with steps 1 and 2 in one dispatch ("filter01", the
+    // first over the 8x8 tile +- 2 pixels in groupshared memory), then "filter2"; same taps and
+    // results as "filter0..2". Saves PAIR_SAVING at 1080p on an H100 (docs/performance.md).
+    bool pairedFilter = true;
     // FidelityFX's "contrast recovery" mean^max(1.2 - variance, 1) in the last pass. Off by
     // default: it darkens penumbrae (docs/shadow_denoiser.md, "Convergence").
     bool contrastRemap = false;
@@ -88,7 +92,8 @@ std::string shadowTileMetadataName(std::uint32_t frameIndex);
 //                           rebuildClearHistory, texels of clear tiles are not written.
 //   "shadow_scratch0/1"     RG32F (shadow, variance): classification writes 0 (with the fused
 //                           filter and tile skipping, not in clear tiles); "filter0" writes 1,
-//                           "filter1" writes 0; scratch 1 only without fusedFilter
+//                           "filter1" writes 0 ("filter01" writes 1); scratch 1 only without
+//                           fusedFilter
 //   "shadow_filter_work"    buffer, one uint: 8x8 tiles filtered, counted once per iteration (skipping)
 //   "shadow_filter_tiles"   buffer, 4 bytes per 8x8 tile: the tiles classification listed for the
 //                           three filter dispatches (x | y << 16), with skipping and without fusedFilter

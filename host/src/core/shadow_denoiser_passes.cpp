@@ -224,6 +224,15 @@ Result planShadowDenoiser(const ShadowDenoiserDesc& desc, EffectPlan& plan, std:
         plan.passes.push_back(fusedFilterPass(desc, input));
         return Result::Ok;
     }
+    if (desc.pairedFilter) {
+        // Steps 1 and 2 in one dispatch ("filter01"), into scratch 1; step 4 reads it.
+        Pass pair = filterPass(desc, 0, input, "shadow_scratch1");
+        pair.name = "filter01";
+        pair.pipeline = usesTileList(desc) ? "shadow_denoiser_filter.pair_list" : "shadow_denoiser_filter.pair";
+        plan.passes.push_back(std::move(pair));
+        plan.passes.push_back(filterPass(desc, 2, "shadow_scratch1", "shadow_output"));
+        return Result::Ok;
+    }
     plan.passes.push_back(filterPass(desc, 0, input, "shadow_scratch1"));
     plan.passes.push_back(filterPass(desc, 1, "shadow_scratch1", "shadow_scratch0"));
     plan.passes.push_back(filterPass(desc, 2, "shadow_scratch0", "shadow_output"));
