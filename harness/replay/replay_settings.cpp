@@ -85,6 +85,8 @@ bool applyShadow(ShadowDenoiserDesc& desc, const std::string& name, const std::s
         desc.antiLag = parseBool(name, value);
     else if (name == "pairedFilter")
         desc.pairedFilter = parseBool(name, value);
+    else if (name == "splitClassify")
+        desc.splitClassify = parseBool(name, value);
     else if (name == "rebuildClearHistory")
         desc.rebuildClearHistory = parseBool(name, value);
     else if (name == "depthSigma")
@@ -142,7 +144,7 @@ void applySetting(EffectSettings& settings, const std::string& assignment) {
             "varianceThreshold, denoiser.historyClipScale, denoiser.maxHistoryLength, denoiser.spatialPath, "
             "denoiser.reconstructionRadius, denoiser.cleanupSigma, shadows.filter, shadows.classify, "
             "shadows.skipClearedTiles, "
-            "shadows.fusedFilter, shadows.pairedFilter, shadows.antiLag, shadows.rebuildClearHistory, shadows.filterVarianceScale, "
+            "shadows.fusedFilter, shadows.pairedFilter, shadows.splitClassify, shadows.antiLag, shadows.rebuildClearHistory, shadows.filterVarianceScale, "
             "shadows.depthSigma, shadows.normalPower)");
     settings.assignments.push_back(assignment);
 }

@@ -57,8 +57,8 @@ void GLINT_SHADOW_DENOISER_StoreMoments(int2 pixel, float4 moments)
     g_glint_check[pixel.y] = moments;
 }
 
-[numthreads(8, 8, 1)] void main(uint3 groupId : SV_GroupID, uint3 groupThreadId : SV_GroupThreadID,
-                                uint groupIndex : SV_GroupIndex)
+[numthreads(8, 8, GLINT_SHADOW_DENOISER_CLASSIFY_BLOCKS)] void main(uint3 groupId : SV_GroupID,
+                                                                   uint3 groupThreadId : SV_GroupThreadID)
 {
     // glslang passes no ConstantBuffer to a function: copy it into the plain struct.
     GLINT_ShadowDenoiserClassifyParams c;
@@ -71,5 +71,5 @@ void GLINT_SHADOW_DENOISER_StoreMoments(int2 pixel, float4 moments)
     c.viewDepth = g_glint_check_constants.viewDepth;
     c.ndcYSign = g_glint_check_constants.ndcYSign;
     c.flags = g_glint_check_constants.flags;
-    GLINT_SHADOW_DENOISER_Classify(groupId.xy, groupThreadId.xy, groupIndex, c);
+    GLINT_SHADOW_DENOISER_Classify(groupId.xy, groupThreadId, c);
 }

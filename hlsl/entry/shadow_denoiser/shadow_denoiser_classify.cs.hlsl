@@ -18,7 +18,8 @@
 [[vk::binding(10, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_moments;
 
 #if GLINT_SHADOW_DENOISER_TILE_LIST
-// Permutation "list": the filter's tile list (indirect arguments first written by prepare).
+// Permutations "list", "tiles" and "listed": the filter's tile list (indirect arguments first
+// written by prepare); "tiles" appends to it, "listed" (dispatched from it) reads it.
 [[vk::binding(11, 0)]] RWStructuredBuffer<uint> g_glint_filter_args;
 [[vk::binding(12, 0)]] RWStructuredBuffer<uint> g_glint_filter_tiles;
 [[vk::binding(13, 0)]] GLINT_IMAGE_FORMAT(rg32f) RWTexture2D<float2> g_glint_filter_output;
@@ -33,6 +34,12 @@ void GLINT_SHADOW_DENOISER_AppendFilterTile(uint2 tile)
 void GLINT_SHADOW_DENOISER_StoreClearOutput(int2 pixel, float2 value)
 {
     g_glint_filter_output[pixel] = value;
+}
+
+uint2 GLINT_SHADOW_DENOISER_LoadFilterTile(uint listIndex)
+{
+    uint packed = g_glint_filter_tiles[listIndex];
+    return uint2(packed & 0xFFFFu, packed >> 16);
 }
 #endif
 
@@ -92,8 +99,8 @@ void GLINT_SHADOW_DENOISER_StoreMoments(int2 pixel, float4 moments)
     g_glint_moments[pixel] = moments;
 }
 
-[numthreads(8, 8, 1)] void main(uint3 groupId : SV_GroupID, uint3 groupThreadId : SV_GroupThreadID,
-                                uint groupIndex : SV_GroupIndex)
+[numthreads(8, 8, GLINT_SHADOW_DENOISER_CLASSIFY_BLOCKS)] void main(uint3 groupId : SV_GroupID,
+                                                                   uint3 groupThreadId : SV_GroupThreadID)
 {
     // glslang passes no ConstantBuffer to a function: copy it into the plain struct.
     GLINT_ShadowDenoiserClassifyParams c;
@@ -107,5 +114,5 @@ void GLINT_SHADOW_DENOISER_StoreMoments(int2 pixel, float4 moments)
     c.ndcYSign = g_glint_constants.ndcYSign;
     c.flags = g_glint_constants.flags;
     c.filterVarianceScale = g_glint_constants.eyePosition.w;
-    GLINT_SHADOW_DENOISER_Classify(groupId.xy, groupThreadId.xy, groupIndex, c);
+    GLINT_SHADOW_DENOISER_Classify(groupId.xy, groupThreadId, c);
 }

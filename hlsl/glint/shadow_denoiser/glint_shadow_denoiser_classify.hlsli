@@ -26,7 +26,18 @@
 //          StoreShadowVariance is then skipped, as with GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_SKIP_CLEAR.
 // Every loaded value may be non-finite: such histories count as missing, such depths as sky.
 //
-// Dispatch: [numthreads(8, 8, 1)], ceil(W / 8) x ceil(H / 8) x 1 groups.
+// Dispatch: [numthreads(8, 8, GLINT_SHADOW_DENOISER_CLASSIFY_BLOCKS)]: 1 block (8x8 tile) a
+// group, ceil(W / 8) x ceil(H / 8) x 1 groups, unless GLINT_SHADOW_DENOISER_CLASSIFY_PART says:
+// - GLINT_SHADOW_DENOISER_CLASSIFY_PART_TILES (with the tile list): only the tile
+//   classification (metadata, list, clear tiles' output) of 2 x 2 blocks a group,
+//   ceil(W / 16) x ceil(H / 16) x 1 groups. With one block per group the ~95 % of clear tiles
+//   left the pass bound by the rate at which the GPU starts groups, not by their work (24.4
+//   against 13.3 us at 1080p on an H100 for an all-clear frame, docs/performance.md);
+// - GLINT_SHADOW_DENOISER_CLASSIFY_PART_LISTED (with the tile list): the temporal part of the
+//   blocks that pass listed, one a group, dispatched indirectly from the list's arguments; it
+//   takes  uint2 GLINT_SHADOW_DENOISER_LoadFilterTile(uint listIndex)  as the filter does.
+// Both parts together write what the whole pass writes. (Four blocks a group for the whole
+// pass measured slower: its few busy groups then fill the SMs the clear ones would share.)
 #ifndef GLINT_SHADOW_DENOISER_CLASSIFY_HLSLI
 #define GLINT_SHADOW_DENOISER_CLASSIFY_HLSLI
 
@@ -49,24 +60,45 @@ void GLINT_SHADOW_DENOISER_AppendFilterTile(uint2 tile);
 void GLINT_SHADOW_DENOISER_StoreClearOutput(int2 pixel, float2 value);
 #endif
 
-groupshared uint g_glint_shadow_denoiser_classify_receivers;
+#define GLINT_SHADOW_DENOISER_CLASSIFY_PART_WHOLE 0
+#define GLINT_SHADOW_DENOISER_CLASSIFY_PART_TILES 1
+#define GLINT_SHADOW_DENOISER_CLASSIFY_PART_LISTED 2
+#ifndef GLINT_SHADOW_DENOISER_CLASSIFY_PART
+#define GLINT_SHADOW_DENOISER_CLASSIFY_PART GLINT_SHADOW_DENOISER_CLASSIFY_PART_WHOLE
+#endif
+#if GLINT_SHADOW_DENOISER_CLASSIFY_PART != GLINT_SHADOW_DENOISER_CLASSIFY_PART_WHOLE && !GLINT_SHADOW_DENOISER_TILE_LIST
+#error "the classification parts need GLINT_SHADOW_DENOISER_TILE_LIST"
+#endif
+#if GLINT_SHADOW_DENOISER_CLASSIFY_PART == GLINT_SHADOW_DENOISER_CLASSIFY_PART_TILES
+#define GLINT_SHADOW_DENOISER_CLASSIFY_BLOCKS GLINT_SHADOW_DENOISER_CLASSIFY_TILE_BLOCKS
+#else
+#define GLINT_SHADOW_DENOISER_CLASSIFY_BLOCKS 1
+#endif
+#if GLINT_SHADOW_DENOISER_CLASSIFY_PART == GLINT_SHADOW_DENOISER_CLASSIFY_PART_LISTED
+uint2 GLINT_SHADOW_DENOISER_LoadFilterTile(uint listIndex);
+#endif
+
+// Per block (8 x 8 tile) q = groupThreadId.z of the group: each array holds the values of the
+// group's GLINT_SHADOW_DENOISER_CLASSIFY_BLOCKS blocks.
+groupshared uint g_glint_shadow_denoiser_classify_receivers[GLINT_SHADOW_DENOISER_CLASSIFY_BLOCKS];
 // OR and AND of the 3x6 mask words around the block, one word loaded per thread.
-groupshared uint g_glint_shadow_denoiser_classify_or;
-groupshared uint g_glint_shadow_denoiser_classify_and;
-// Those 18 words (mask tiles groupId.x - 1 .. + 1, 2 groupId.y - 2 .. + 3, clamped to the mask):
+groupshared uint g_glint_shadow_denoiser_classify_or[GLINT_SHADOW_DENOISER_CLASSIFY_BLOCKS];
+groupshared uint g_glint_shadow_denoiser_classify_and[GLINT_SHADOW_DENOISER_CLASSIFY_BLOCKS];
+// Those 18 words (mask tiles tile.x - 1 .. + 1, 2 tile.y - 2 .. + 3, clamped to the mask):
 // every mask bit the 17x17 statistics and the pixel's own sample read.
-groupshared uint g_glint_shadow_denoiser_classify_words[18];
-// Horizontal sums of rows groupOrigin.y - 8 .. groupOrigin.y + 15 (24 x 8 columns).
-groupshared float g_glint_shadow_denoiser_classify_rows[24 * 8];
+groupshared uint g_glint_shadow_denoiser_classify_words[GLINT_SHADOW_DENOISER_CLASSIFY_BLOCKS * 18];
+// Horizontal sums of rows blockOrigin.y - 8 .. blockOrigin.y + 15 (24 x 8 columns).
+groupshared float g_glint_shadow_denoiser_classify_rows[GLINT_SHADOW_DENOISER_CLASSIFY_BLOCKS * 24 * 8];
 // Smallest and largest packed offset (previous pixel - pixel) of the block's pixels that run
 // the anti-lag test: equal when the block moved by one whole-pixel offset (always, for a still
 // camera), and the test's windows then overlap exactly.
-groupshared uint g_glint_shadow_denoiser_classify_offset_min;
-groupshared uint g_glint_shadow_denoiser_classify_offset_max;
+groupshared uint g_glint_shadow_denoiser_classify_offset_min[GLINT_SHADOW_DENOISER_CLASSIFY_BLOCKS];
+groupshared uint g_glint_shadow_denoiser_classify_offset_max[GLINT_SHADOW_DENOISER_CLASSIFY_BLOCKS];
 // Anti-lag terms (GLINT_SHADOW_DENOISER_AntiLagTexel) of the block plus a 2-pixel apron.
 #define GLINT_SHADOW_DENOISER_ANTILAG_SPAN (8 + 2 * GLINT_SHADOW_DENOISER_ANTILAG_RADIUS)
-groupshared float4 g_glint_shadow_denoiser_classify_window[GLINT_SHADOW_DENOISER_ANTILAG_SPAN *
-                                                          GLINT_SHADOW_DENOISER_ANTILAG_SPAN];
+#define GLINT_SHADOW_DENOISER_ANTILAG_SLOTS (GLINT_SHADOW_DENOISER_ANTILAG_SPAN * GLINT_SHADOW_DENOISER_ANTILAG_SPAN)
+groupshared float4 g_glint_shadow_denoiser_classify_window[GLINT_SHADOW_DENOISER_CLASSIFY_BLOCKS *
+                                                          GLINT_SHADOW_DENOISER_ANTILAG_SLOTS];
 
 // View depth of a receiver (finite depth strictly inside (1e-6, 1 - 1e-6)), or -1.
 float GLINT_SHADOW_DENOISER_ClassifyViewDepth(float depth, float4 viewDepth)
@@ -86,24 +118,25 @@ float GLINT_SHADOW_DENOISER_GaussianWeight(int i)
     return GLINT_SHADOW_DENOISER_GAUSSIAN_17[i];
 }
 
-// The mask word of tile (groupId.x + dx, tileY), dx in {-1, 0, 1}, from the block's 18 words.
-// tileY must lie within 2 groupId.y - 2 .. + 3 after clamping to the mask, as every tile row of
+// The mask word of mask tile (tile.x + dx, tileY), dx in {-1, 0, 1}, from block q's 18 words.
+// tileY must lie within 2 tile.y - 2 .. + 3 after clamping to the mask, as every tile row of
 // the rows the block reads does (the block's first row is inside the image).
-uint GLINT_SHADOW_DENOISER_BlockWord(uint2 groupId, int dx, int tileY)
+uint GLINT_SHADOW_DENOISER_BlockWord(uint q, uint2 tile, int dx, int tileY)
 {
-    return g_glint_shadow_denoiser_classify_words[(tileY - int(groupId.y * 2u) + 2) * 3 + dx + 1];
+    return g_glint_shadow_denoiser_classify_words[q * 18u + uint((tileY - int(tile.y * 2u) + 2) * 3 + dx + 1)];
 }
 
 // Horizontal 17-tap sum for pixel row y (clamped to the image) centred on column x, a column
-// of this block. Mask tiles outside the image clamp to the border tile (as the 18 words do).
-float GLINT_SHADOW_DENOISER_RowSum(uint2 groupId, int x, int y, uint2 inputSize)
+// of block q (8x8 tile `tile`). Mask tiles outside the image clamp to the border tile (as the 18
+// words do).
+float GLINT_SHADOW_DENOISER_RowSum(uint q, uint2 tile, int x, int y, uint2 inputSize)
 {
     int row = clamp(y, 0, int(inputSize.y) - 1);
     int tileY = row >> 2;
     uint shift = uint(row & 3) * 8u;
-    uint left = (GLINT_SHADOW_DENOISER_BlockWord(groupId, -1, tileY) >> shift) & 0xFFu;
-    uint centre = (GLINT_SHADOW_DENOISER_BlockWord(groupId, 0, tileY) >> shift) & 0xFFu;
-    uint right = (GLINT_SHADOW_DENOISER_BlockWord(groupId, 1, tileY) >> shift) & 0xFFu;
+    uint left = (GLINT_SHADOW_DENOISER_BlockWord(q, tile, -1, tileY) >> shift) & 0xFFu;
+    uint centre = (GLINT_SHADOW_DENOISER_BlockWord(q, tile, 0, tileY) >> shift) & 0xFFu;
+    uint right = (GLINT_SHADOW_DENOISER_BlockWord(q, tile, 1, tileY) >> shift) & 0xFFu;
     uint window = (left | (centre << 8) | (right << 16)) >> uint(x & 7);
     float sum = 0.0;
     [unroll] for (int k = 0; k <= 16; ++k)
@@ -231,13 +264,14 @@ float GLINT_SHADOW_DENOISER_AntiLagLength(GLINT_ShadowDenoiserAntiLagSums sums)
     return excess > 0.0 ? max(GLINT_SHADOW_DENOISER_ANTILAG_LENGTH / (excess * excess), 1.0) : 1024.0;
 }
 
-// The anti-lag length of every pixel of the block that asks for it (`wanted`; 1024 for the
-// others). Called by every thread of a block that is not clear: it synchronises the group.
+// The anti-lag length of every pixel of block q that asks for it (`wanted`; 1024 for the
+// others). Called by every thread of a group with a block that is not clear: it synchronises
+// the group (twice, whichever path each block takes).
 // When all those pixels moved by the same whole-pixel offset, their windows are one 12x12
 // region: each thread fetches about 2 of its positions into groupshared memory instead of all
 // 25 of its own window (same terms, same order of summation, same result).
 float GLINT_SHADOW_DENOISER_GroupAntiLagLength(bool wanted, int2 pixel, int2 previousPixel, float z, float previousZ,
-                                               uint2 groupId, uint groupIndex, uint2 groupThreadId, uint2 inputSize,
+                                               uint q, uint2 tile, uint localIndex, uint2 local, uint2 inputSize,
                                                float4 viewDepth, uint flags)
 {
     const int radius = GLINT_SHADOW_DENOISER_ANTILAG_RADIUS;
@@ -247,27 +281,34 @@ float GLINT_SHADOW_DENOISER_GroupAntiLagLength(bool wanted, int2 pixel, int2 pre
     uint packed = uint(offset.x + 32768) | (uint(offset.y + 32768) << 16);
     if (wanted)
     {
-        InterlockedMin(g_glint_shadow_denoiser_classify_offset_min, packed);
-        InterlockedMax(g_glint_shadow_denoiser_classify_offset_max, packed);
+        InterlockedMin(g_glint_shadow_denoiser_classify_offset_min[q], packed);
+        InterlockedMax(g_glint_shadow_denoiser_classify_offset_max[q], packed);
     }
     GroupMemoryBarrierWithGroupSync();
-    uint low = g_glint_shadow_denoiser_classify_offset_min;
-    uint high = g_glint_shadow_denoiser_classify_offset_max;
-    GLINT_ShadowDenoiserAntiLagSums sums = GLINT_SHADOW_DENOISER_AntiLagBegin();
-    if (low == high)
+    uint low = g_glint_shadow_denoiser_classify_offset_min[q];
+    uint high = g_glint_shadow_denoiser_classify_offset_max[q];
+    // A block nobody in which asks has low > high: it fills no window.
+    bool uniformWindow = low == high;
+    uint windowBase = q * GLINT_SHADOW_DENOISER_ANTILAG_SLOTS;
+    if (uniformWindow)
     {
         int2 uniformOffset = int2(int(low & 0xFFFFu) - 32768, int(low >> 16) - 32768);
-        int2 origin = int2(groupId * 8u) - radius;
-        for (uint i = groupIndex; i < uint(span * span); i += 64u)
+        int2 origin = int2(tile * 8u) - radius;
+        for (uint i = localIndex; i < uint(span * span); i += 64u)
         {
             int2 current = origin + int2(int(i % uint(span)), int(i / uint(span)));
-            g_glint_shadow_denoiser_classify_window[i] =
+            g_glint_shadow_denoiser_classify_window[windowBase + i] =
                 GLINT_SHADOW_DENOISER_AntiLagTexel(current, current + uniformOffset, inputSize, viewDepth, flags);
         }
-        GroupMemoryBarrierWithGroupSync();
-        if (!wanted)
-            return 1024.0;
-        uint centre = (groupThreadId.y + uint(radius)) * uint(span) + groupThreadId.x + uint(radius);
+    }
+    // Outside the branch: the other blocks of the group may have taken the other path.
+    GroupMemoryBarrierWithGroupSync();
+    if (!wanted)
+        return 1024.0;
+    GLINT_ShadowDenoiserAntiLagSums sums = GLINT_SHADOW_DENOISER_AntiLagBegin();
+    if (uniformWindow)
+    {
+        uint centre = windowBase + (local.y + uint(radius)) * uint(span) + local.x + uint(radius);
         // Rows in a loop, columns unrolled (as the reflections denoiser's 9x9 statistics).
         [loop] for (int dy = -radius; dy <= radius; ++dy)
             [unroll] for (int dx = -radius; dx <= radius; ++dx)
@@ -275,8 +316,6 @@ float GLINT_SHADOW_DENOISER_GroupAntiLagLength(bool wanted, int2 pixel, int2 pre
                                                  z, previousZ);
         return GLINT_SHADOW_DENOISER_AntiLagLength(sums);
     }
-    if (!wanted)
-        return 1024.0;
     for (int dy = -radius; dy <= radius; ++dy)
         for (int dx = -radius; dx <= radius; ++dx)
             GLINT_SHADOW_DENOISER_AntiLagAdd(sums,
@@ -303,80 +342,117 @@ struct GLINT_ShadowDenoiserClassifyParams
     float filterVarianceScale;
 };
 
-void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint2 groupThreadId, uint groupIndex,
-                                    GLINT_ShadowDenoiserClassifyParams c)
+// groupThreadId.z picks the group's block (8x8 tile) q: with 4 blocks a group, tile =
+// 2 groupId + (q & 1, q >> 1); with one, tile = groupId (or, for the listed part, list entry
+// groupId.x).
+void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint3 groupThreadId, GLINT_ShadowDenoiserClassifyParams c)
 {
-    int2 pixel = int2(groupId * 8u + groupThreadId);
+    uint q = groupThreadId.z;
+#if GLINT_SHADOW_DENOISER_CLASSIFY_PART == GLINT_SHADOW_DENOISER_CLASSIFY_PART_LISTED
+    uint2 tile = GLINT_SHADOW_DENOISER_LoadFilterTile(groupId.x);
+#elif GLINT_SHADOW_DENOISER_CLASSIFY_BLOCKS == 4
+    uint2 tile = groupId * 2u + uint2(q & 1u, q >> 1);
+#else
+    uint2 tile = groupId;
+#endif
+    uint2 local = groupThreadId.xy;
+    uint localIndex = local.y * 8u + local.x;
+    int2 pixel = int2(tile * 8u + local);
     bool inside = all(uint2(pixel) < c.inputSize);
     int2 loadPixel = min(pixel, int2(c.inputSize) - 1);
     float depth = GLINT_SHADOW_DENOISER_LoadDepth(loadPixel);
     // Uniform region: the 3x6 mask tiles around the block (24x24 pixels), clamped; threads
-    // 0..17 load one word each (with the depth, before the first barrier) instead of every
-    // thread loading all 18.
+    // 0..17 of the block load one word each (with the depth, before the first barrier) instead
+    // of every thread loading all 18.
     uint word = 0u;
-    if (groupIndex < 18u)
+    if (localIndex < 18u)
     {
-        int2 firstTile = int2(groupId.x, groupId.y * 2u);
-        int2 tile = clamp(firstTile + int2(int(groupIndex % 3u) - 1, int(groupIndex / 3u) - 2), int2(0, 0),
-                          int2(c.maskTiles) - 1);
-        word = GLINT_SHADOW_DENOISER_LoadMask(tile);
+        int2 firstTile = int2(tile.x, tile.y * 2u);
+        int2 maskTile = clamp(firstTile + int2(int(localIndex % 3u) - 1, int(localIndex / 3u) - 2), int2(0, 0),
+                              int2(c.maskTiles) - 1);
+        word = GLINT_SHADOW_DENOISER_LoadMask(maskTile);
     }
     float z = GLINT_SHADOW_DENOISER_ClassifyViewDepth(depth, c.viewDepth);
     bool receiver = inside && z > 0.0;
 
-    if (groupIndex == 0)
+#if GLINT_SHADOW_DENOISER_CLASSIFY_PART == GLINT_SHADOW_DENOISER_CLASSIFY_PART_LISTED
+    // A listed block is not clear (the tiles part tested it and stored its metadata).
+    if (localIndex == 0)
     {
-        g_glint_shadow_denoiser_classify_receivers = 0u;
-        g_glint_shadow_denoiser_classify_or = 0u;
-        g_glint_shadow_denoiser_classify_and = 0xFFFFFFFFu;
-        g_glint_shadow_denoiser_classify_offset_min = 0xFFFFFFFFu;
-        g_glint_shadow_denoiser_classify_offset_max = 0u;
+        g_glint_shadow_denoiser_classify_offset_min[q] = 0xFFFFFFFFu;
+        g_glint_shadow_denoiser_classify_offset_max[q] = 0u;
+    }
+    if (localIndex < 18u)
+        g_glint_shadow_denoiser_classify_words[q * 18u + localIndex] = word;
+    GroupMemoryBarrierWithGroupSync();
+    const bool clear = false;
+    const bool groupClear = false;
+#else
+    if (localIndex == 0)
+    {
+        g_glint_shadow_denoiser_classify_receivers[q] = 0u;
+        g_glint_shadow_denoiser_classify_or[q] = 0u;
+        g_glint_shadow_denoiser_classify_and[q] = 0xFFFFFFFFu;
+        g_glint_shadow_denoiser_classify_offset_min[q] = 0xFFFFFFFFu;
+        g_glint_shadow_denoiser_classify_offset_max[q] = 0u;
     }
     GroupMemoryBarrierWithGroupSync();
     if (receiver)
-        InterlockedOr(g_glint_shadow_denoiser_classify_receivers, 1u);
-    if (groupIndex < 18u)
+        InterlockedOr(g_glint_shadow_denoiser_classify_receivers[q], 1u);
+    if (localIndex < 18u)
     {
-        g_glint_shadow_denoiser_classify_words[groupIndex] = word;
-        InterlockedOr(g_glint_shadow_denoiser_classify_or, word);
-        InterlockedAnd(g_glint_shadow_denoiser_classify_and, word);
+        g_glint_shadow_denoiser_classify_words[q * 18u + localIndex] = word;
+        InterlockedOr(g_glint_shadow_denoiser_classify_or[q], word);
+        InterlockedAnd(g_glint_shadow_denoiser_classify_and[q], word);
     }
     GroupMemoryBarrierWithGroupSync();
-    bool anyReceiver = g_glint_shadow_denoiser_classify_receivers != 0u;
-    bool allLit = g_glint_shadow_denoiser_classify_and == 0xFFFFFFFFu;
-    bool clear = !anyReceiver || allLit || g_glint_shadow_denoiser_classify_or == 0u;
+    bool anyReceiver = g_glint_shadow_denoiser_classify_receivers[q] != 0u;
+    bool allLit = g_glint_shadow_denoiser_classify_and[q] == 0xFFFFFFFFu;
+    bool clear = !anyReceiver || allLit || g_glint_shadow_denoiser_classify_or[q] == 0u;
+    // Uniform over the group: whether all four blocks are clear (blocks beyond the image have
+    // no receiver, so they are).
+    bool groupClear = true;
+    [unroll] for (uint b = 0; b < GLINT_SHADOW_DENOISER_CLASSIFY_BLOCKS; ++b)
+        groupClear = groupClear && (g_glint_shadow_denoiser_classify_receivers[b] == 0u ||
+                                    g_glint_shadow_denoiser_classify_and[b] == 0xFFFFFFFFu ||
+                                    g_glint_shadow_denoiser_classify_or[b] == 0u);
 
-    if (groupIndex == 0)
+    uint tilesX = (c.inputSize.x + 7u) / 8u;
+    if (localIndex == 0 && all(tile * 8u < c.inputSize))
     {
-        uint tilesX = (c.inputSize.x + 7u) / 8u;
         uint metadata = clear ? GLINT_SHADOW_DENOISER_TILE_CLEAR : 0u;
         if (clear && anyReceiver && allLit)
             metadata |= GLINT_SHADOW_DENOISER_TILE_LIGHT;
-        GLINT_SHADOW_DENOISER_StoreMetadata(groupId.y * tilesX + groupId.x, metadata);
+        GLINT_SHADOW_DENOISER_StoreMetadata(tile.y * tilesX + tile.x, metadata);
 #if GLINT_SHADOW_DENOISER_TILE_LIST
         if (!clear)
-            GLINT_SHADOW_DENOISER_AppendFilterTile(groupId);
+            GLINT_SHADOW_DENOISER_AppendFilterTile(tile);
 #endif
     }
-    if (!clear)
+#endif
+#if GLINT_SHADOW_DENOISER_CLASSIFY_PART != GLINT_SHADOW_DENOISER_CLASSIFY_PART_TILES
+    if (!groupClear)
     {
         // Horizontal 17-tap sums of the 24 rows the block's vertical taps reach, once per
         // (row, column) instead of once per tap: 3 per thread, from the 18 words in groupshared
-        // memory. `clear` is uniform, so the barrier is too. Columns beyond the image use the
-        // last one (their sums go unused).
-        int column = min(int(groupId.x * 8u + (groupIndex & 7u)), int(c.inputSize.x) - 1);
-        [unroll] for (uint part = 0; part < 3u; ++part)
+        // memory. `groupClear` is uniform, so the barrier is too. Columns beyond the image use
+        // the last one (their sums go unused).
+        if (!clear)
         {
-            uint row = (groupIndex >> 3) + part * 8u;
-            g_glint_shadow_denoiser_classify_rows[row * 8u + (groupIndex & 7u)] = GLINT_SHADOW_DENOISER_RowSum(
-                groupId, column, int(groupId.y * 8u + row) - 8, c.inputSize);
+            int column = min(int(tile.x * 8u + local.x), int(c.inputSize.x) - 1);
+            [unroll] for (uint part = 0; part < 3u; ++part)
+            {
+                uint row = local.y + part * 8u;
+                g_glint_shadow_denoiser_classify_rows[(q * 24u + row) * 8u + local.x] =
+                    GLINT_SHADOW_DENOISER_RowSum(q, tile, column, int(tile.y * 8u + row) - 8, c.inputSize);
+            }
         }
         GroupMemoryBarrierWithGroupSync();
     }
-    if (clear)
+#endif
+#if GLINT_SHADOW_DENOISER_CLASSIFY_PART != GLINT_SHADOW_DENOISER_CLASSIFY_PART_LISTED
+    if (clear && inside)
     {
-        if (!inside)
-            return;
         float value = anyReceiver && allLit && receiver ? 1.0 : 0.0;
 #if GLINT_SHADOW_DENOISER_TILE_LIST
         GLINT_SHADOW_DENOISER_StoreClearOutput(pixel, float2(value, 0.0));
@@ -386,39 +462,47 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint2 groupThreadId, uint gro
 #endif
         if ((c.flags & GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_REBUILD_CLEAR) == 0u)
             GLINT_SHADOW_DENOISER_StoreMoments(pixel, float4(value, 0.0, receiver ? 1.0 : 0.0, value));
-        return;
     }
-    // A block that is not clear: no thread returns before the anti-lag test's barriers.
-    // Pixels outside the image or not receiving run along (as disoccluded, loading in-image
-    // pixels only) and store their defined zeros after it.
-    bool active = inside && receiver;
+#endif
+    // The tiles part stops here (the listed part does the rest).
+    if (groupClear || GLINT_SHADOW_DENOISER_CLASSIFY_PART == GLINT_SHADOW_DENOISER_CLASSIFY_PART_TILES)
+        return;
+    // A group with a block that is not clear: no thread returns before the anti-lag test's
+    // barriers. Pixels outside the image or not receiving, and every pixel of the group's clear
+    // blocks (stored above), run along (as disoccluded, loading in-image pixels only); the
+    // former store their defined zeros after it.
+    bool active = inside && receiver && !clear;
 
     // Local mean and variance: 17x17 Gaussian, rows first.
     float mean = 0.0;
     [unroll] for (int r = -8; r <= 8; ++r)
         mean += GLINT_SHADOW_DENOISER_GaussianWeight(abs(r)) *
-                g_glint_shadow_denoiser_classify_rows[uint(int(groupThreadId.y) + r + 8) * 8u + groupThreadId.x];
+                g_glint_shadow_denoiser_classify_rows[(q * 24u + uint(int(local.y) + r + 8)) * 8u + local.x];
     mean = clamp(mean, 0.0, 1.0);
     float spatialVariance = max(mean - mean * mean, 0.0);
     float spatialSigma = sqrt(spatialVariance);
-    uint ownWord = GLINT_SHADOW_DENOISER_BlockWord(groupId, 0, loadPixel.y >> 2);
+    uint ownWord = GLINT_SHADOW_DENOISER_BlockWord(q, tile, 0, loadPixel.y >> 2);
     float x = ((ownWord >> (uint(loadPixel.y & 3) * 8u + uint(loadPixel.x & 7))) & 1u) != 0u ? 1.0 : 0.0;
 
-    // Motion of the closest receiver of the 2x2 quad.
-    int2 quad = pixel & ~1;
-    int2 motionPixel = loadPixel;
-    float closest = z;
-    [unroll] for (int q = 0; q < 4; ++q)
+    // Motion of the closest receiver of the 2x2 quad (not needed in clear blocks).
+    float2 motion = float2(0.0, 0.0);
+    if (!clear)
     {
-        int2 other = min(quad + int2(q & 1, q >> 1), int2(c.inputSize) - 1);
-        float otherZ = GLINT_SHADOW_DENOISER_ClassifyViewDepth(GLINT_SHADOW_DENOISER_LoadDepth(other), c.viewDepth);
-        if (otherZ > 0.0 && otherZ < closest)
+        int2 quad = pixel & ~1;
+        int2 motionPixel = loadPixel;
+        float closest = z;
+        [unroll] for (int k = 0; k < 4; ++k)
         {
-            closest = otherZ;
-            motionPixel = other;
+            int2 other = min(quad + int2(k & 1, k >> 1), int2(c.inputSize) - 1);
+            float otherZ = GLINT_SHADOW_DENOISER_ClassifyViewDepth(GLINT_SHADOW_DENOISER_LoadDepth(other), c.viewDepth);
+            if (otherZ > 0.0 && otherZ < closest)
+            {
+                closest = otherZ;
+                motionPixel = other;
+            }
         }
+        motion = GLINT_SHADOW_DENOISER_LoadMotion(motionPixel);
     }
-    float2 motion = GLINT_SHADOW_DENOISER_LoadMotion(motionPixel);
     float2 uv = (float2(pixel) + 0.5) / float2(c.inputSize);
     float2 uvPrevious = uv + motion;
     bool disoccluded = !active || (c.flags & GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_RESET) != 0u ||
@@ -469,12 +553,12 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint2 groupThreadId, uint gro
     // flag is uniform, so every thread of the block reaches the test's barriers or none does.
     float antiLagLength = 1024.0;
     if ((c.flags & GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_ANTI_LAG) != 0u)
-        antiLagLength = GLINT_SHADOW_DENOISER_GroupAntiLagLength(historyFound, pixel, previousPixel, z, previousZ, groupId,
-                                                                 groupIndex, groupThreadId, c.inputSize, c.viewDepth,
+        antiLagLength = GLINT_SHADOW_DENOISER_GroupAntiLagLength(historyFound, pixel, previousPixel, z, previousZ, q,
+                                                                 tile, localIndex, local, c.inputSize, c.viewDepth,
                                                                  c.flags);
     if (!active)
     {
-        if (inside)
+        if (inside && !clear)
         {
             GLINT_SHADOW_DENOISER_StoreShadowVariance(pixel, float2(0.0, 0.0));
             GLINT_SHADOW_DENOISER_StoreMoments(pixel, float4(0.0, 0.0, 0.0, 0.0));

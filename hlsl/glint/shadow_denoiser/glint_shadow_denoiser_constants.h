@@ -13,6 +13,9 @@
 #define GLINT_SHADOW_DENOISER_PREPARE_GROUP_WIDTH 32
 #define GLINT_SHADOW_DENOISER_PREPARE_GROUP_HEIGHT 8
 #define GLINT_SHADOW_DENOISER_PREPARE_GROUP_TILES_X 8
+// A group of classification's tiles part works on 2x2 tiles of 8x8 pixels, one per
+// groupThreadId.z (the other parts on one).
+#define GLINT_SHADOW_DENOISER_CLASSIFY_TILE_BLOCKS 4
 // The filter works on 8x8 pixel tiles with a 4-pixel apron (step 4 x radius 1).
 #define GLINT_SHADOW_DENOISER_FILTER_TILE 8
 #define GLINT_SHADOW_DENOISER_FILTER_APRON 4

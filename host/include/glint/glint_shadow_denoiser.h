@@ -40,6 +40,12 @@ struct ShadowDenoiserDesc {
     // first over the 8x8 tile +- 2 pixels in groupshared memory), then "filter2"; same taps and
     // results as "filter0..2". Saves PAIR_SAVING at 1080p on an H100 (docs/performance.md).
     bool pairedFilter = true;
+    // With the filter's tile list (skipClearedTiles, three dispatches): classification in two
+    // dispatches, "classify" (every tile, 2x2 tiles a group: metadata, list, clear tiles'
+    // output) and "temporal" (the listed tiles, indirectly). One dispatch of one tile a group
+    // spends most of its time starting groups for clear tiles. Same results; saves
+    // SPLIT_SAVING at 1080p on an H100 (docs/performance.md).
+    bool splitClassify = true;
     // FidelityFX's "contrast recovery" mean^max(1.2 - variance, 1) in the last pass. Off by
     // default: it darkens penumbrae (docs/shadow_denoiser.md, "Convergence").
     bool contrastRemap = false;

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 
 namespace glint {
 namespace {
@@ -151,6 +152,40 @@ Pass classifyPass(const ShadowDenoiserDesc& desc, Extent2D tiles) {
     return pass;
 }
 
+// Keeps the uses of the named bindings only.
+void keepBindings(Pass& pass, std::initializer_list<const char*> bindings) {
+    std::erase_if(pass.uses, [&](const ResourceUse& use) {
+        return std::none_of(bindings.begin(), bindings.end(), [&](const char* name) { return use.binding == name; });
+    });
+}
+
+// Classification in two dispatches (ShadowDenoiserDesc::splitClassify): "classify" tests every
+// tile, 2 x 2 tiles a group, and writes the metadata, the tile list and the clear tiles'
+// output; "temporal" runs the rest on the listed tiles, indirectly from the list.
+void pushSplitClassify(const ShadowDenoiserDesc& desc, Extent2D tiles, EffectPlan& plan) {
+    const Pass whole = classifyPass(desc, tiles);
+    Pass classify = whole;
+    classify.pipeline = "shadow_denoiser_classify.tiles";
+    classify.groupSize[2] = GLINT_SHADOW_DENOISER_CLASSIFY_TILE_BLOCKS;
+    classify.dispatch =
+        DirectDispatch{core::divideRoundUp(desc.size.width, 16), core::divideRoundUp(desc.size.height, 16), 1};
+    keepBindings(classify, {"g_glint_constants", "g_glint_shadow_mask", "g_glint_depth", "g_glint_tile_metadata",
+                            "g_glint_moments", "g_glint_filter_args", "g_glint_filter_tiles",
+                            "g_glint_filter_output"});
+    Pass temporal = whole;
+    temporal.name = "temporal";
+    temporal.pipeline = "shadow_denoiser_classify.listed";
+    temporal.dispatch = IndirectDispatch{"shadow_filter_args", 0};
+    keepBindings(temporal, {"g_glint_constants", "g_glint_shadow_mask", "g_glint_depth", "g_glint_previous_depth",
+                            "g_glint_normals", "g_glint_motion", "g_glint_moments_history",
+                            "g_glint_previous_metadata", "g_glint_shadow_variance", "g_glint_moments",
+                            "g_glint_filter_tiles"});
+    for (ResourceUse& use : temporal.uses)
+        if (use.binding == "g_glint_filter_tiles") use.access = Access::Read;
+    plan.passes.push_back(std::move(classify));
+    plan.passes.push_back(std::move(temporal));
+}
+
 } // namespace
 
 std::string shadowTileMetadataName(std::uint32_t frameIndex) {
@@ -207,7 +242,10 @@ Result planShadowDenoiser(const ShadowDenoiserDesc& desc, EffectPlan& plan, std:
         plan.buffers.push_back({"shadow_tile_metadata1", tileCount * 4u, false});
         plan.images.push_back({"shadow_moments0", w, h, 1, Format::RGBA32Float});
         plan.images.push_back({"shadow_moments1", w, h, 1, Format::RGBA32Float});
-        plan.passes.push_back(classifyPass(desc, tiles));
+        if (usesTileList(desc) && desc.splitClassify)
+            pushSplitClassify(desc, tiles, plan);
+        else
+            plan.passes.push_back(classifyPass(desc, tiles));
     }
     if (!desc.filter) return Result::Ok;
     plan.images.push_back({"shadow_output", w, h, 1, Format::RG32Float});
