@@ -144,7 +144,8 @@ void applySetting(EffectSettings& settings, const std::string& assignment) {
             "varianceThreshold, denoiser.historyClipScale, denoiser.maxHistoryLength, denoiser.spatialPath, "
             "denoiser.reconstructionRadius, denoiser.cleanupSigma, shadows.filter, shadows.classify, "
             "shadows.skipClearedTiles, "
-            "shadows.fusedFilter, shadows.pairedFilter, shadows.splitClassify, shadows.antiLag, shadows.rebuildClearHistory, shadows.filterVarianceScale, "
+            "shadows.fusedFilter, shadows.pairedFilter, shadows.splitClassify, shadows.antiLag, "
+            "shadows.rebuildClearHistory, shadows.filterVarianceScale, "
             "shadows.depthSigma, shadows.normalPower)");
     settings.assignments.push_back(assignment);
 }

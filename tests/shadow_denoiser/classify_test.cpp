@@ -385,3 +385,79 @@ TEST_CASE("fused filter after classification: the three-dispatch result, with an
     }
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }
+
+TEST_CASE("split classification: metadata and moments match the CPU reference", "[classify][tiles]") {
+    // With the filter's tile list, classification runs as "classify" (2x2 tiles a group) and
+    // "temporal" (the listed tiles). Odd sizes leave partial groups on both borders.
+    for (const Extent2D size : {Extent2D{64, 48}, Extent2D{203, 77}, Extent2D{13, 7}}) {
+        ShadowDenoiserDesc desc = classifyDesc(size.width, size.height);
+        desc.filter = true;
+        REQUIRE(desc.splitClassify);
+        EffectPlan plan;
+        REQUIRE(planShadowDenoiser(desc, plan, nullptr) == Result::Ok);
+        REQUIRE(plan.passes[2].name == "temporal");
+        const test::ShadowInputs inputs = movingInputs(size.width, size.height, size.width + 5u);
+        const std::size_t count = std::size_t{size.width} * size.height;
+        std::vector<float> moments, shadow;
+        randomHistory(count, size.height, moments, shadow);
+        test::ShadowRunner runner(desc);
+        runner.setHistory(desc.frameIndex, moments, shadow);
+        const test::ShadowOutputs actual = runner.run(desc, inputs);
+        const reference::ShadowClassifyOutputs expected =
+            reference::shadowClassify(referenceInputs(desc, inputs, moments));
+        INFO(size.width << "x" << size.height);
+        CHECK(actual.metadata == expected.metadata);
+        // Both kinds of tile (beyond 13x7, which has two busy ones), so both parts wrote something.
+        CHECK(std::count(expected.metadata.begin(), expected.metadata.end(), 0u) > 0);
+        if (size.width > 13)
+            CHECK(std::count(expected.metadata.begin(), expected.metadata.end(), 0u) <
+                  static_cast<std::ptrdiff_t>(expected.metadata.size()));
+        CHECK(countMismatches(storedMoments(desc, actual),
+                              storedMoments(desc, expected.moments, expected.metadata)) == 0u);
+    }
+    GLINT_REQUIRE_NO_VALIDATION_ERRORS();
+}
+
+TEST_CASE("split classification and the paired filter: the one- and three-dispatch results",
+          "[classify][tiles]") {
+    // As the fused filter's test: odd size, every kind of tile meeting at group borders, three
+    // frames with motion so the histories and the anti-lag windows take part.
+    ShadowDenoiserDesc desc = classifyDesc(53, 37);
+    desc.filter = true;
+    test::ShadowInputs inputs = movingInputs(53, 37, 29);
+    for (std::uint32_t y = 0; y < 37; ++y)
+        for (std::uint32_t x = 0; x < 53; ++x) {
+            float& v = inputs.visibility[y * 53 + x];
+            if (x < 12) v = 1.0f;
+            if (x >= 40) v = 0.0f;
+        }
+    const auto runFrames = [&](bool split, bool paired) {
+        desc.splitClassify = split;
+        desc.pairedFilter = paired;
+        test::ShadowRunner runner(desc);
+        test::ShadowOutputs last;
+        for (std::uint32_t frame = 0; frame < 3; ++frame) {
+            desc.frameIndex = frame;
+            desc.resetHistory = frame == 0;
+            last = runner.run(desc, inputs);
+        }
+        return last;
+    };
+    const test::ShadowOutputs baseline = runFrames(false, false);
+    REQUIRE(baseline.filteredTiles > 0u);
+    for (const auto& [split, paired] :
+         {std::pair{true, false}, std::pair{false, true}, std::pair{true, true}}) {
+        INFO("splitClassify " << split << ", pairedFilter " << paired);
+        const test::ShadowOutputs other = runFrames(split, paired);
+        CHECK(other.metadata == baseline.metadata);
+        CHECK(other.filteredTiles == baseline.filteredTiles);
+        REQUIRE(other.filtered.size() == baseline.filtered.size());
+        float worst = 0.0f;
+        for (std::size_t i = 0; i < baseline.filtered.size(); ++i)
+            worst = std::max(worst, std::abs(other.filtered[i] - baseline.filtered[i]));
+        // Same operations in the same order; only the compiler's contraction may differ.
+        CHECK(worst <= 1e-5f);
+        CHECK(countMismatches(storedMoments(desc, other), storedMoments(desc, baseline)) == 0u);
+    }
+    GLINT_REQUIRE_NO_VALIDATION_ERRORS();
+}

@@ -67,13 +67,44 @@ TEST_CASE("shadow plan: passes, resources and sizes", "[plan]") {
         GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_ANTI_LAG | GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_REBUILD_CLEAR;
     CHECK(classifyFlags() == (GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_SKIP_CLEAR | kDefaults));
 
-    // Three dispatches (the default): filter0..2 of 8x8 groups, indirect over the tiles
-    // classification lists (prepare resets the list), two scratch images.
+    // The default: classification in two parts ("classify" over every tile, 2x2 tiles a
+    // group; "temporal" indirect over the tiles it lists), then "filter01" (steps 1 and 2) and
+    // "filter2", indirect over the same list (prepare resets it).
     desc.fusedFilter = false;
     REQUIRE(planShadowDenoiser(desc, plan, &error) == Result::Ok);
     REQUIRE(plan.passes.size() == 5);
     CHECK(plan.passes[0].pipeline == "shadow_denoiser_prepare.list");
+    CHECK(plan.passes[1].name == "classify");
+    CHECK(plan.passes[1].pipeline == "shadow_denoiser_classify.tiles");
+    CHECK(plan.passes[1].groupSize[2] == GLINT_SHADOW_DENOISER_CLASSIFY_TILE_BLOCKS);
+    CHECK(std::get<DirectDispatch>(plan.passes[1].dispatch).groupsX == 1);
+    CHECK(std::get<DirectDispatch>(plan.passes[1].dispatch).groupsY == 1);
+    CHECK(plan.passes[2].name == "temporal");
+    CHECK(plan.passes[2].pipeline == "shadow_denoiser_classify.listed");
+    CHECK(std::get<IndirectDispatch>(plan.passes[2].dispatch).resource == "shadow_filter_args");
+    CHECK(plan.passes[3].name == "filter01");
+    CHECK(plan.passes[3].pipeline == "shadow_denoiser_filter.pair_list");
+    CHECK(plan.passes[3].zeroBuffers == std::vector<std::string>{"shadow_filter_work"});
+    CHECK(std::get<IndirectDispatch>(plan.passes[3].dispatch).resource == "shadow_filter_args");
+    CHECK(plan.passes[4].name == "filter2");
+    CHECK(plan.passes[4].pipeline == "shadow_denoiser_filter.list");
+    // Each part binds only what it reads or writes; the temporal part writes the moments.
+    const auto binds = [](const Pass& pass, const std::string& binding) {
+        for (const ResourceUse& use : pass.uses)
+            if (use.binding == binding) return true;
+        return false;
+    };
+    CHECK(binds(plan.passes[1], "g_glint_filter_args"));
+    CHECK_FALSE(binds(plan.passes[1], "g_glint_motion"));
+    CHECK(binds(plan.passes[2], "g_glint_motion"));
+    CHECK_FALSE(binds(plan.passes[2], "g_glint_filter_args"));
+    // One classification dispatch and three filter dispatches when asked.
+    desc.splitClassify = false;
+    desc.pairedFilter = false;
+    REQUIRE(planShadowDenoiser(desc, plan, &error) == Result::Ok);
+    REQUIRE(plan.passes.size() == 5);
     CHECK(plan.passes[1].pipeline == "shadow_denoiser_classify.list");
+    CHECK(std::get<DirectDispatch>(plan.passes[1].dispatch).groupsX == 2);
     CHECK(plan.passes[2].name == "filter0");
     CHECK(plan.passes[4].name == "filter2");
     CHECK(plan.passes[2].pipeline == "shadow_denoiser_filter.list");
@@ -91,6 +122,11 @@ TEST_CASE("shadow plan: passes, resources and sizes", "[plan]") {
     REQUIRE(planShadowDenoiser(desc, plan, &error) == Result::Ok);
     CHECK(plan.passes[0].pipeline == "shadow_denoiser_prepare");
     CHECK(plan.passes[2].pipeline == "shadow_denoiser_filter");
+    CHECK(std::get<DirectDispatch>(plan.passes[2].dispatch).groupsX == 2);
+    desc.pairedFilter = true;
+    REQUIRE(planShadowDenoiser(desc, plan, &error) == Result::Ok);
+    REQUIRE(plan.passes.size() == 4);
+    CHECK(plan.passes[2].pipeline == "shadow_denoiser_filter.pair");
     CHECK(std::get<DirectDispatch>(plan.passes[2].dispatch).groupsX == 2);
     desc.skipClearedTiles = true;
     desc.resetHistory = true;

@@ -155,7 +155,8 @@ Pass classifyPass(const ShadowDenoiserDesc& desc, Extent2D tiles) {
 // Keeps the uses of the named bindings only.
 void keepBindings(Pass& pass, std::initializer_list<const char*> bindings) {
     std::erase_if(pass.uses, [&](const ResourceUse& use) {
-        return std::none_of(bindings.begin(), bindings.end(), [&](const char* name) { return use.binding == name; });
+        return std::none_of(bindings.begin(), bindings.end(),
+                            [&](const char* name) { return use.binding == name; });
     });
 }
 
@@ -167,19 +168,20 @@ void pushSplitClassify(const ShadowDenoiserDesc& desc, Extent2D tiles, EffectPla
     Pass classify = whole;
     classify.pipeline = "shadow_denoiser_classify.tiles";
     classify.groupSize[2] = GLINT_SHADOW_DENOISER_CLASSIFY_TILE_BLOCKS;
-    classify.dispatch =
-        DirectDispatch{core::divideRoundUp(desc.size.width, 16), core::divideRoundUp(desc.size.height, 16), 1};
-    keepBindings(classify, {"g_glint_constants", "g_glint_shadow_mask", "g_glint_depth", "g_glint_tile_metadata",
-                            "g_glint_moments", "g_glint_filter_args", "g_glint_filter_tiles",
-                            "g_glint_filter_output"});
+    classify.dispatch = DirectDispatch{
+        core::divideRoundUp(desc.size.width, 8 * GLINT_SHADOW_DENOISER_CLASSIFY_TILE_BLOCKS_X),
+        core::divideRoundUp(desc.size.height, 8 * GLINT_SHADOW_DENOISER_CLASSIFY_TILE_BLOCKS_Y), 1};
+    keepBindings(classify,
+                 {"g_glint_constants", "g_glint_shadow_mask", "g_glint_depth", "g_glint_tile_metadata",
+                  "g_glint_moments", "g_glint_filter_args", "g_glint_filter_tiles", "g_glint_filter_output"});
     Pass temporal = whole;
     temporal.name = "temporal";
     temporal.pipeline = "shadow_denoiser_classify.listed";
     temporal.dispatch = IndirectDispatch{"shadow_filter_args", 0};
-    keepBindings(temporal, {"g_glint_constants", "g_glint_shadow_mask", "g_glint_depth", "g_glint_previous_depth",
-                            "g_glint_normals", "g_glint_motion", "g_glint_moments_history",
-                            "g_glint_previous_metadata", "g_glint_shadow_variance", "g_glint_moments",
-                            "g_glint_filter_tiles"});
+    keepBindings(temporal,
+                 {"g_glint_constants", "g_glint_shadow_mask", "g_glint_depth", "g_glint_previous_depth",
+                  "g_glint_normals", "g_glint_motion", "g_glint_moments_history", "g_glint_previous_metadata",
+                  "g_glint_shadow_variance", "g_glint_moments", "g_glint_filter_tiles"});
     for (ResourceUse& use : temporal.uses)
         if (use.binding == "g_glint_filter_tiles") use.access = Access::Read;
     plan.passes.push_back(std::move(classify));
@@ -266,7 +268,8 @@ Result planShadowDenoiser(const ShadowDenoiserDesc& desc, EffectPlan& plan, std:
         // Steps 1 and 2 in one dispatch ("filter01"), into scratch 1; step 4 reads it.
         Pass pair = filterPass(desc, 0, input, "shadow_scratch1");
         pair.name = "filter01";
-        pair.pipeline = usesTileList(desc) ? "shadow_denoiser_filter.pair_list" : "shadow_denoiser_filter.pair";
+        pair.pipeline =
+            usesTileList(desc) ? "shadow_denoiser_filter.pair_list" : "shadow_denoiser_filter.pair";
         plan.passes.push_back(std::move(pair));
         plan.passes.push_back(filterPass(desc, 2, "shadow_scratch1", "shadow_output"));
         return Result::Ok;
