@@ -38,20 +38,20 @@ struct ShadowDenoiserDesc {
     bool fusedFilter = false;
     // Without fusedFilter: the iterations with steps 1 and 2 in one dispatch ("filter01", the
     // first over the 8x8 tile +- 2 pixels in groupshared memory), then "filter2"; same taps and
-    // results as "filter0..2". Saves PAIR_SAVING at 1080p on an H100 (docs/performance.md).
+    // results as "filter0..2". Saves 3.7 us at 1080p on an H100 (docs/performance.md).
     bool pairedFilter = true;
     // With the filter's tile list (skipClearedTiles, three dispatches): classification in two
     // dispatches, "classify" (every tile, 2x2 tiles a group: metadata, list, clear tiles'
     // output) and "temporal" (the listed tiles, indirectly). One dispatch of one tile a group
     // spends most of its time starting groups for clear tiles. Same results; saves
-    // SPLIT_SAVING at 1080p on an H100 (docs/performance.md).
+    // 2.9 us at 1080p on an H100 (docs/performance.md).
     bool splitClassify = true;
     // FidelityFX's "contrast recovery" mean^max(1.2 - variance, 1) in the last pass. Off by
     // default: it darkens penumbrae (docs/shadow_denoiser.md, "Convergence").
     bool contrastRemap = false;
     // Classification's anti-lag test: a history its 5x5 neighbourhood contradicts is shortened,
     // so moving shadows are followed within a few frames (docs/shadow_denoiser.md, "Motion").
-    // Costs about 4.6 us at 1080p on an H100 (68.0 against 63.4 us; docs/performance.md).
+    // Costs about 4.4 us at 1080p on an H100 (62.2 against 57.8 us; docs/performance.md).
     bool antiLag = true;
     // Clear tiles store no moments; next frame rebuilds their history from this frame's tile
     // metadata and depth (both frames' "shadow_previous_depth" must be the frame before's
