@@ -167,6 +167,29 @@ test::ShadowInputs movingInputs(std::uint32_t width, std::uint32_t height, std::
     return inputs;
 }
 
+// A lit band (x < 12) and a shadowed band (x >= 40) around the penumbra, so tiles of every kind
+// meet at group borders.
+void addUniformBands(test::ShadowInputs& inputs, std::uint32_t width, std::uint32_t height) {
+    for (std::uint32_t y = 0; y < height; ++y)
+        for (std::uint32_t x = 0; x < width; ++x) {
+            float& v = inputs.visibility[std::size_t{y} * width + x];
+            if (x < 12) v = 1.0f;
+            if (x >= 40) v = 0.0f;
+        }
+}
+
+// The last of three frames (the first a camera cut) with the same inputs.
+test::ShadowOutputs runThreeFrames(ShadowDenoiserDesc desc, const test::ShadowInputs& inputs) {
+    test::ShadowRunner runner(desc);
+    test::ShadowOutputs last;
+    for (std::uint32_t frame = 0; frame < 3; ++frame) {
+        desc.frameIndex = frame;
+        desc.resetHistory = frame == 0;
+        last = runner.run(desc, inputs);
+    }
+    return last;
+}
+
 } // namespace
 
 TEST_CASE("classify 64x48 with history and motion: matches the CPU reference", "[classify]") {
@@ -349,26 +372,14 @@ TEST_CASE("fused filter after classification: the three-dispatch result, with an
     ShadowDenoiserDesc desc = classifyDesc(53, 37);
     desc.filter = true;
     test::ShadowInputs inputs = test::makeShadowInputs(53, 37, 23);
-    for (std::uint32_t y = 0; y < 37; ++y)
-        for (std::uint32_t x = 0; x < 53; ++x) {
-            float& v = inputs.visibility[y * 53 + x];
-            if (x < 12) v = 1.0f;
-            if (x >= 40) v = 0.0f;
-        }
+    addUniformBands(inputs, 53, 37);
     inputs.previousDepth = inputs.depth;
     for (bool skip : {true, false}) {
         desc.skipClearedTiles = skip;
         std::vector<test::ShadowOutputs> results;
         for (bool fused : {false, true}) {
             desc.fusedFilter = fused;
-            test::ShadowRunner runner(desc);
-            test::ShadowOutputs last;
-            for (std::uint32_t frame = 0; frame < 3; ++frame) {
-                desc.frameIndex = frame;
-                desc.resetHistory = frame == 0;
-                last = runner.run(desc, inputs);
-            }
-            results.push_back(last);
+            results.push_back(runThreeFrames(desc, inputs));
         }
         INFO("skipClearedTiles " << skip);
         REQUIRE(results[0].filtered.size() == results[1].filtered.size());
@@ -425,23 +436,11 @@ TEST_CASE("split classification and the paired filter: the one- and three-dispat
     ShadowDenoiserDesc desc = classifyDesc(53, 37);
     desc.filter = true;
     test::ShadowInputs inputs = movingInputs(53, 37, 29);
-    for (std::uint32_t y = 0; y < 37; ++y)
-        for (std::uint32_t x = 0; x < 53; ++x) {
-            float& v = inputs.visibility[y * 53 + x];
-            if (x < 12) v = 1.0f;
-            if (x >= 40) v = 0.0f;
-        }
+    addUniformBands(inputs, 53, 37);
     const auto runFrames = [&](bool split, bool paired) {
         desc.splitClassify = split;
         desc.pairedFilter = paired;
-        test::ShadowRunner runner(desc);
-        test::ShadowOutputs last;
-        for (std::uint32_t frame = 0; frame < 3; ++frame) {
-            desc.frameIndex = frame;
-            desc.resetHistory = frame == 0;
-            last = runner.run(desc, inputs);
-        }
-        return last;
+        return runThreeFrames(desc, inputs);
     };
     const test::ShadowOutputs baseline = runFrames(false, false);
     REQUIRE(baseline.filteredTiles > 0u);
