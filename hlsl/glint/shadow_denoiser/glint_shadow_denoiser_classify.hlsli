@@ -34,7 +34,7 @@
 //   left the pass bound by the rate at which the GPU starts groups, not by their work (24.4
 //   against 13.3 us at 1080p on an H100 for an all-clear frame, docs/performance.md);
 // - GLINT_SHADOW_DENOISER_CLASSIFY_PART_LISTED (with the tile list): the temporal part of the
-//   blocks that pass listed, one a group, dispatched indirectly from the list's arguments; it
+//   blocks the tiles part listed, one a group, dispatched indirectly from the list's arguments; it
 //   takes  uint2 GLINT_SHADOW_DENOISER_LoadFilterTile(uint listIndex)  as the filter does.
 // Both parts together write what the whole pass writes. (Four blocks a group for the whole
 // pass measured slower: its few busy groups then fill the SMs the clear ones would share.)
