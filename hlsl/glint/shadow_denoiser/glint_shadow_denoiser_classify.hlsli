@@ -264,9 +264,9 @@ float GLINT_SHADOW_DENOISER_AntiLagLength(GLINT_ShadowDenoiserAntiLagSums sums)
     return excess > 0.0 ? max(GLINT_SHADOW_DENOISER_ANTILAG_LENGTH / (excess * excess), 1.0) : 1024.0;
 }
 
-// The anti-lag length of every pixel of block q that asks for it (`wanted`; 1024 for the
-// others). Called by every thread of a group with a block that is not clear: it synchronises
-// the group (twice, whichever path each block takes).
+// The anti-lag length of every pixel of the block that asks for it (`wanted`; 1024 for the
+// others). Called by every thread of a block that is not clear (one block a group in the
+// parts that run it): it synchronises the group twice.
 // When all those pixels moved by the same whole-pixel offset, their windows are one 12x12
 // region: each thread fetches about 2 of its positions into groupshared memory instead of all
 // 25 of its own window (same terms, same order of summation, same result).
@@ -287,7 +287,7 @@ float GLINT_SHADOW_DENOISER_GroupAntiLagLength(bool wanted, int2 pixel, int2 pre
     GroupMemoryBarrierWithGroupSync();
     uint low = g_glint_shadow_denoiser_classify_offset_min[q];
     uint high = g_glint_shadow_denoiser_classify_offset_max[q];
-    // A block nobody in which asks has low > high: it fills no window.
+    // A block in which nobody asks has low > high: it fills no window.
     bool uniformWindow = low == high;
     uint windowBase = q * GLINT_SHADOW_DENOISER_ANTILAG_SLOTS;
     if (uniformWindow)
@@ -301,7 +301,6 @@ float GLINT_SHADOW_DENOISER_GroupAntiLagLength(bool wanted, int2 pixel, int2 pre
                 GLINT_SHADOW_DENOISER_AntiLagTexel(current, current + uniformOffset, inputSize, viewDepth, flags);
         }
     }
-    // Outside the branch: the other blocks of the group may have taken the other path.
     GroupMemoryBarrierWithGroupSync();
     if (!wanted)
         return 1024.0;
@@ -406,7 +405,6 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint3 groupThreadId, GLINT_Sh
         g_glint_shadow_denoiser_classify_words[q * 18u + localIndex] = word;
     GroupMemoryBarrierWithGroupSync();
     const bool clear = false;
-    const bool groupClear = false;
 #else
     if (localIndex == 0)
     {
@@ -428,14 +426,8 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint3 groupThreadId, GLINT_Sh
     GroupMemoryBarrierWithGroupSync();
     bool anyReceiver = g_glint_shadow_denoiser_classify_receivers[q] != 0u;
     bool allLit = g_glint_shadow_denoiser_classify_and[q] == 0xFFFFFFFFu;
+    // Blocks beyond the image have no receiver: clear.
     bool clear = !anyReceiver || allLit || g_glint_shadow_denoiser_classify_or[q] == 0u;
-    // Uniform over the group: whether all four blocks are clear (blocks beyond the image have
-    // no receiver, so they are).
-    bool groupClear = true;
-    [unroll] for (uint b = 0; b < GLINT_SHADOW_DENOISER_CLASSIFY_BLOCKS; ++b)
-        groupClear = groupClear && (g_glint_shadow_denoiser_classify_receivers[b] == 0u ||
-                                    g_glint_shadow_denoiser_classify_and[b] == 0xFFFFFFFFu ||
-                                    g_glint_shadow_denoiser_classify_or[b] == 0u);
 
     uint tilesX = (c.inputSize.x + 7u) / 8u;
     if (localIndex == 0 && all(tile * 8u < c.inputSize))
@@ -451,21 +443,18 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint3 groupThreadId, GLINT_Sh
     }
 #endif
 #if GLINT_SHADOW_DENOISER_CLASSIFY_PART != GLINT_SHADOW_DENOISER_CLASSIFY_PART_TILES
-    if (!groupClear)
+    if (!clear)
     {
         // Horizontal 17-tap sums of the 24 rows the block's vertical taps reach, once per
         // (row, column) instead of once per tap: 3 per thread, from the 18 words in groupshared
-        // memory. `groupClear` is uniform, so the barrier is too. Columns beyond the image use
-        // the last one (their sums go unused).
-        if (!clear)
+        // memory. One block a group here, so `clear` is uniform and the barrier too. Columns
+        // beyond the image use the last one (their sums go unused).
+        int column = min(int(tile.x * 8u + local.x), int(c.inputSize.x) - 1);
+        [unroll] for (uint part = 0; part < 3u; ++part)
         {
-            int column = min(int(tile.x * 8u + local.x), int(c.inputSize.x) - 1);
-            [unroll] for (uint part = 0; part < 3u; ++part)
-            {
-                uint row = local.y + part * 8u;
-                g_glint_shadow_denoiser_classify_rows[(q * 24u + row) * 8u + local.x] =
-                    GLINT_SHADOW_DENOISER_RowSum(q, tile, column, int(tile.y * 8u + row) - 8, c.inputSize);
-            }
+            uint row = local.y + part * 8u;
+            g_glint_shadow_denoiser_classify_rows[(q * 24u + row) * 8u + local.x] =
+                GLINT_SHADOW_DENOISER_RowSum(q, tile, column, int(tile.y * 8u + row) - 8, c.inputSize);
         }
         GroupMemoryBarrierWithGroupSync();
     }
@@ -485,13 +474,12 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint3 groupThreadId, GLINT_Sh
     }
 #endif
     // The tiles part stops here (the listed part does the rest).
-    if (groupClear || GLINT_SHADOW_DENOISER_CLASSIFY_PART == GLINT_SHADOW_DENOISER_CLASSIFY_PART_TILES)
+    if (clear || GLINT_SHADOW_DENOISER_CLASSIFY_PART == GLINT_SHADOW_DENOISER_CLASSIFY_PART_TILES)
         return;
-    // A group with a block that is not clear: no thread returns before the anti-lag test's
-    // barriers. Pixels outside the image or not receiving, and every pixel of the group's clear
-    // blocks (stored above), run along (as disoccluded, loading in-image pixels only); the
-    // former store their defined zeros after it.
-    bool active = inside && receiver && !clear;
+    // A block that is not clear: no thread returns before the anti-lag test's barriers.
+    // Pixels outside the image or not receiving run along (as disoccluded, loading in-image
+    // pixels only) and store their defined zeros after it.
+    bool active = inside && receiver;
 
     // Local mean and variance: 17x17 Gaussian, rows first.
     float mean = 0.0;
@@ -504,11 +492,8 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint3 groupThreadId, GLINT_Sh
     uint ownWord = GLINT_SHADOW_DENOISER_BlockWord(q, tile, 0, loadPixel.y >> 2);
     float x = ((ownWord >> (uint(loadPixel.y & 3) * 8u + uint(loadPixel.x & 7))) & 1u) != 0u ? 1.0 : 0.0;
 
-    // Not needed in clear blocks. (Loading it before the barriers in the listed part measured
-    // no faster.)
-    float2 motion = float2(0.0, 0.0);
-    if (!clear)
-        motion = GLINT_SHADOW_DENOISER_QuadMotion(pixel, loadPixel, z, c.inputSize, c.viewDepth);
+    // (Loading it before the barriers in the listed part measured no faster.)
+    float2 motion = GLINT_SHADOW_DENOISER_QuadMotion(pixel, loadPixel, z, c.inputSize, c.viewDepth);
     float2 uv = (float2(pixel) + 0.5) / float2(c.inputSize);
     float2 uvPrevious = uv + motion;
     bool disoccluded = !active || (c.flags & GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_RESET) != 0u ||
@@ -564,7 +549,7 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint3 groupThreadId, GLINT_Sh
                                                                  c.flags);
     if (!active)
     {
-        if (inside && !clear)
+        if (inside)
         {
             GLINT_SHADOW_DENOISER_StoreShadowVariance(pixel, float2(0.0, 0.0));
             GLINT_SHADOW_DENOISER_StoreMoments(pixel, float4(0.0, 0.0, 0.0, 0.0));

@@ -172,15 +172,15 @@ void pushSplitClassify(const ShadowDenoiserDesc& desc, Extent2D tiles, EffectPla
         core::divideRoundUp(desc.size.width, 8 * GLINT_SHADOW_DENOISER_CLASSIFY_TILE_BLOCKS_X),
         core::divideRoundUp(desc.size.height, 8 * GLINT_SHADOW_DENOISER_CLASSIFY_TILE_BLOCKS_Y), 1};
     keepBindings(classify,
-                 {"g_glint_constants", "g_glint_shadow_mask", "g_glint_depth", "g_glint_tile_metadata",
-                  "g_glint_moments", "g_glint_filter_args", "g_glint_filter_tiles", "g_glint_filter_output"});
+                 {"g_glint_shadow_mask", "g_glint_depth", "g_glint_tile_metadata", "g_glint_moments",
+                  "g_glint_filter_args", "g_glint_filter_tiles", "g_glint_filter_output"});
     Pass temporal = whole;
     temporal.name = "temporal";
     temporal.pipeline = "shadow_denoiser_classify.listed";
     temporal.dispatch = IndirectDispatch{"shadow_filter_args", 0};
     keepBindings(temporal,
-                 {"g_glint_constants", "g_glint_shadow_mask", "g_glint_depth", "g_glint_previous_depth",
-                  "g_glint_normals", "g_glint_motion", "g_glint_moments_history", "g_glint_previous_metadata",
+                 {"g_glint_shadow_mask", "g_glint_depth", "g_glint_previous_depth", "g_glint_normals",
+                  "g_glint_motion", "g_glint_moments_history", "g_glint_previous_metadata",
                   "g_glint_shadow_variance", "g_glint_moments", "g_glint_filter_tiles"});
     for (ResourceUse& use : temporal.uses)
         if (use.binding == "g_glint_filter_tiles") use.access = Access::Read;
