@@ -99,6 +99,10 @@ groupshared uint g_glint_shadow_denoiser_classify_offset_max[GLINT_SHADOW_DENOIS
 #define GLINT_SHADOW_DENOISER_ANTILAG_SLOTS (GLINT_SHADOW_DENOISER_ANTILAG_SPAN * GLINT_SHADOW_DENOISER_ANTILAG_SPAN)
 groupshared float4 g_glint_shadow_denoiser_classify_window[GLINT_SHADOW_DENOISER_CLASSIFY_BLOCKS *
                                                           GLINT_SHADOW_DENOISER_ANTILAG_SLOTS];
+// Their centre-independent score terms (GLINT_SHADOW_DENOISER_AntiLagTerms; w unused, so one
+// 16-byte read a position).
+groupshared float4 g_glint_shadow_denoiser_classify_window_terms[GLINT_SHADOW_DENOISER_CLASSIFY_BLOCKS *
+                                                                GLINT_SHADOW_DENOISER_ANTILAG_SLOTS];
 
 // View depth of a receiver (finite depth strictly inside (1e-6, 1 - 1e-6)), or -1.
 float GLINT_SHADOW_DENOISER_ClassifyViewDepth(float depth, float4 viewDepth)
@@ -221,24 +225,38 @@ GLINT_ShadowDenoiserAntiLagSums GLINT_SHADOW_DENOISER_AntiLagBegin()
     return sums;
 }
 
-// Adds one window position; it counts when its history is present and it is a receiver
-// within ANTILAG_DEPTH relative view depth of the centre in both frames.
-void GLINT_SHADOW_DENOISER_AntiLagAdd(inout GLINT_ShadowDenoiserAntiLagSums sums, float4 texel, float z, float previousZ)
+// The score terms of one window position that do not depend on the window's centre (see
+// GLINT_SHADOW_DENOISER_AntiLagLength): (binomial variance, surprise, surprise variance). With
+// the window in groupshared memory each position's three divisions run once for the block
+// instead of once for each of the up to 25 pixels whose window holds it. Meaningless (and
+// never added) when the texel's history is missing.
+float4 GLINT_SHADOW_DENOISER_AntiLagTerms(float4 texel)
 {
-    bool valid = texel.x > 0.0 && texel.y > 0.0 && abs(texel.x - z) <= GLINT_SHADOW_DENOISER_ANTILAG_DEPTH * z &&
-                 abs(texel.y - previousZ) <= GLINT_SHADOW_DENOISER_ANTILAG_DEPTH * previousZ;
-    if (!valid)
-        return;
     float h = texel.z;
     float samples = abs(texel.w);
     float bit = texel.w > 0.0 ? 1.0 : 0.0;
     float p = (h * samples + 0.25) / (samples + 0.5);
-    sums.observed += bit;
-    sums.expected += h;
-    sums.variance += p * (1.0 - p) * (1.0 + 1.0 / (samples + 1.0));
     float q = (h * samples + 1.0) / (samples + 2.0);
-    sums.surprise += abs(bit - h) - (q * (1.0 - h) + (1.0 - q) * h);
-    sums.surpriseVariance += q * (1.0 - q) * (1.0 - 2.0 * h) * (1.0 - 2.0 * h);
+    return float4(p * (1.0 - p) * (1.0 + 1.0 / (samples + 1.0)), abs(bit - h) - (q * (1.0 - h) + (1.0 - q) * h),
+                  q * (1.0 - q) * (1.0 - 2.0 * h) * (1.0 - 2.0 * h), 0.0);
+}
+
+// True when a window position counts: its history is present and it is a receiver within
+// ANTILAG_DEPTH relative view depth of the centre in both frames.
+bool GLINT_SHADOW_DENOISER_AntiLagCounts(float4 texel, float z, float previousZ)
+{
+    return texel.x > 0.0 && texel.y > 0.0 && abs(texel.x - z) <= GLINT_SHADOW_DENOISER_ANTILAG_DEPTH * z &&
+           abs(texel.y - previousZ) <= GLINT_SHADOW_DENOISER_ANTILAG_DEPTH * previousZ;
+}
+
+// Adds one counting window position (texel and its AntiLagTerms).
+void GLINT_SHADOW_DENOISER_AntiLagAdd(inout GLINT_ShadowDenoiserAntiLagSums sums, float4 texel, float4 terms)
+{
+    sums.observed += texel.w > 0.0 ? 1.0 : 0.0;
+    sums.expected += texel.z;
+    sums.variance += terms.x;
+    sums.surprise += terms.y;
+    sums.surpriseVariance += terms.z;
 }
 
 // Anti-lag (docs/shadow_denoiser.md, "Convergence"): the longest history that the 5x5 window
@@ -268,8 +286,9 @@ float GLINT_SHADOW_DENOISER_AntiLagLength(GLINT_ShadowDenoiserAntiLagSums sums)
 // others). Called by every thread of a block that is not clear (one block a group in the
 // parts that run it): it synchronises the group twice.
 // When all those pixels moved by the same whole-pixel offset, their windows are one 12x12
-// region: each thread fetches about 2 of its positions into groupshared memory instead of all
-// 25 of its own window (same terms, same order of summation, same result).
+// region: each thread fetches about 2 of its positions, with their score terms, into
+// groupshared memory instead of all 25 of its own window (same terms, same order of summation,
+// same result).
 float GLINT_SHADOW_DENOISER_GroupAntiLagLength(bool wanted, int2 pixel, int2 previousPixel, float z, float previousZ,
                                                uint q, uint2 tile, uint localIndex, uint2 local, uint2 inputSize,
                                                float4 viewDepth, uint flags)
@@ -297,8 +316,10 @@ float GLINT_SHADOW_DENOISER_GroupAntiLagLength(bool wanted, int2 pixel, int2 pre
         for (uint i = localIndex; i < uint(span * span); i += 64u)
         {
             int2 current = origin + int2(int(i % uint(span)), int(i / uint(span)));
-            g_glint_shadow_denoiser_classify_window[windowBase + i] =
+            float4 texel =
                 GLINT_SHADOW_DENOISER_AntiLagTexel(current, current + uniformOffset, inputSize, viewDepth, flags);
+            g_glint_shadow_denoiser_classify_window[windowBase + i] = texel;
+            g_glint_shadow_denoiser_classify_window_terms[windowBase + i] = GLINT_SHADOW_DENOISER_AntiLagTerms(texel);
         }
     }
     GroupMemoryBarrierWithGroupSync();
@@ -311,16 +332,22 @@ float GLINT_SHADOW_DENOISER_GroupAntiLagLength(bool wanted, int2 pixel, int2 pre
         // Rows in a loop, columns unrolled (as the reflections denoiser's 9x9 statistics).
         [loop] for (int dy = -radius; dy <= radius; ++dy)
             [unroll] for (int dx = -radius; dx <= radius; ++dx)
-                GLINT_SHADOW_DENOISER_AntiLagAdd(sums, g_glint_shadow_denoiser_classify_window[int(centre) + dy * span + dx],
-                                                 z, previousZ);
+            {
+                uint slot = uint(int(centre) + dy * span + dx);
+                float4 texel = g_glint_shadow_denoiser_classify_window[slot];
+                if (GLINT_SHADOW_DENOISER_AntiLagCounts(texel, z, previousZ))
+                    GLINT_SHADOW_DENOISER_AntiLagAdd(sums, texel, g_glint_shadow_denoiser_classify_window_terms[slot]);
+            }
         return GLINT_SHADOW_DENOISER_AntiLagLength(sums);
     }
     for (int dy = -radius; dy <= radius; ++dy)
         for (int dx = -radius; dx <= radius; ++dx)
-            GLINT_SHADOW_DENOISER_AntiLagAdd(sums,
-                                             GLINT_SHADOW_DENOISER_AntiLagTexel(pixel + int2(dx, dy), previousPixel + int2(dx, dy),
-                                                                                inputSize, viewDepth, flags),
-                                             z, previousZ);
+        {
+            float4 texel = GLINT_SHADOW_DENOISER_AntiLagTexel(pixel + int2(dx, dy), previousPixel + int2(dx, dy),
+                                                              inputSize, viewDepth, flags);
+            if (GLINT_SHADOW_DENOISER_AntiLagCounts(texel, z, previousZ))
+                GLINT_SHADOW_DENOISER_AntiLagAdd(sums, texel, GLINT_SHADOW_DENOISER_AntiLagTerms(texel));
+        }
     return GLINT_SHADOW_DENOISER_AntiLagLength(sums);
 }
 
