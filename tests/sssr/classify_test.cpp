@@ -108,6 +108,34 @@ TEST_CASE("classification matches the CPU classification for 1, 2 and 4 samples 
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }
 
+TEST_CASE("classification matches the CPU classification when groups of 2x2 tiles overhang the image",
+          "[sssr][classify]") {
+    // A group covers 2x2 tiles of 8x8. 200x72 has 25x9 tiles (odd both ways), so the last
+    // column and row of groups have blocks wholly outside the image; 8x8 is one tile and three
+    // empty blocks. Such blocks must list no tile and no ray.
+    for (const auto& size : {std::pair{200u, 72u}, std::pair{8u, 8u}}) {
+        INFO(size.first << "x" << size.second);
+        test::SssrTestView view = randomView(size.first, size.second, false, 5u + size.first);
+        gpu::SssrRunner runner(test::testContext(), view.desc);
+        runner.upload(view.inputs);
+        runner.run(view.desc);
+        const gpu::SssrFrameOutputs out = runner.readback();
+        const auto inputs = referenceInputs(view);
+        const reference::SssrClassification expected = reference::sssrClassify(inputs);
+        REQUIRE(expected.tileCount > 0);
+        CHECK(out.counters[1] == expected.rayCount);
+        CHECK(out.counters[3] == expected.tileCount);
+        CHECK(sorted(out.rayList) == expected.rays);
+        CHECK(sorted(out.tileList) == expected.tiles);
+        for (std::size_t i = 0; i < inputs.alpha.size(); ++i) {
+            INFO("pixel " << i);
+            const bool background = reference::sssrIsBackground(inputs.depth[i], inputs.reversedDepth);
+            REQUIRE(out.roughness[i] == Approx(background ? 1.0f : inputs.alpha[i]).margin(1e-7));
+        }
+    }
+    GLINT_REQUIRE_NO_VALIDATION_ERRORS();
+}
+
 TEST_CASE("variance-guided tracing adds rays where the reprojected variance history is high",
           "[sssr][classify]") {
     test::SssrTestView view = randomView(40, 24, false, 7);
