@@ -99,10 +99,6 @@ groupshared uint g_glint_shadow_denoiser_classify_offset_max[GLINT_SHADOW_DENOIS
 #define GLINT_SHADOW_DENOISER_ANTILAG_SLOTS (GLINT_SHADOW_DENOISER_ANTILAG_SPAN * GLINT_SHADOW_DENOISER_ANTILAG_SPAN)
 groupshared float4 g_glint_shadow_denoiser_classify_window[GLINT_SHADOW_DENOISER_CLASSIFY_BLOCKS *
                                                           GLINT_SHADOW_DENOISER_ANTILAG_SLOTS];
-// Their centre-independent score terms (GLINT_SHADOW_DENOISER_AntiLagTerms; w unused, so one
-// 16-byte read a position).
-groupshared float4 g_glint_shadow_denoiser_classify_window_terms[GLINT_SHADOW_DENOISER_CLASSIFY_BLOCKS *
-                                                                GLINT_SHADOW_DENOISER_ANTILAG_SLOTS];
 
 // View depth of a receiver (finite depth strictly inside (1e-6, 1 - 1e-6)), or -1.
 float GLINT_SHADOW_DENOISER_ClassifyViewDepth(float depth, float4 viewDepth)
@@ -225,38 +221,24 @@ GLINT_ShadowDenoiserAntiLagSums GLINT_SHADOW_DENOISER_AntiLagBegin()
     return sums;
 }
 
-// The score terms of one window position that do not depend on the window's centre (see
-// GLINT_SHADOW_DENOISER_AntiLagLength): (binomial variance, surprise, surprise variance). With
-// the window in groupshared memory each position's three divisions run once for the block
-// instead of once for each of the up to 25 pixels whose window holds it. Meaningless (and
-// never added) when the texel's history is missing.
-float4 GLINT_SHADOW_DENOISER_AntiLagTerms(float4 texel)
+// Adds one window position; it counts when its history is present and it is a receiver
+// within ANTILAG_DEPTH relative view depth of the centre in both frames.
+void GLINT_SHADOW_DENOISER_AntiLagAdd(inout GLINT_ShadowDenoiserAntiLagSums sums, float4 texel, float z, float previousZ)
 {
+    bool valid = texel.x > 0.0 && texel.y > 0.0 && abs(texel.x - z) <= GLINT_SHADOW_DENOISER_ANTILAG_DEPTH * z &&
+                 abs(texel.y - previousZ) <= GLINT_SHADOW_DENOISER_ANTILAG_DEPTH * previousZ;
+    if (!valid)
+        return;
     float h = texel.z;
     float samples = abs(texel.w);
     float bit = texel.w > 0.0 ? 1.0 : 0.0;
     float p = (h * samples + 0.25) / (samples + 0.5);
+    sums.observed += bit;
+    sums.expected += h;
+    sums.variance += p * (1.0 - p) * (1.0 + 1.0 / (samples + 1.0));
     float q = (h * samples + 1.0) / (samples + 2.0);
-    return float4(p * (1.0 - p) * (1.0 + 1.0 / (samples + 1.0)), abs(bit - h) - (q * (1.0 - h) + (1.0 - q) * h),
-                  q * (1.0 - q) * (1.0 - 2.0 * h) * (1.0 - 2.0 * h), 0.0);
-}
-
-// True when a window position counts: its history is present and it is a receiver within
-// ANTILAG_DEPTH relative view depth of the centre in both frames.
-bool GLINT_SHADOW_DENOISER_AntiLagCounts(float4 texel, float z, float previousZ)
-{
-    return texel.x > 0.0 && texel.y > 0.0 && abs(texel.x - z) <= GLINT_SHADOW_DENOISER_ANTILAG_DEPTH * z &&
-           abs(texel.y - previousZ) <= GLINT_SHADOW_DENOISER_ANTILAG_DEPTH * previousZ;
-}
-
-// Adds one counting window position (texel and its AntiLagTerms).
-void GLINT_SHADOW_DENOISER_AntiLagAdd(inout GLINT_ShadowDenoiserAntiLagSums sums, float4 texel, float4 terms)
-{
-    sums.observed += texel.w > 0.0 ? 1.0 : 0.0;
-    sums.expected += texel.z;
-    sums.variance += terms.x;
-    sums.surprise += terms.y;
-    sums.surpriseVariance += terms.z;
+    sums.surprise += abs(bit - h) - (q * (1.0 - h) + (1.0 - q) * h);
+    sums.surpriseVariance += q * (1.0 - q) * (1.0 - 2.0 * h) * (1.0 - 2.0 * h);
 }
 
 // Anti-lag (docs/shadow_denoiser.md, "Convergence"): the longest history that the 5x5 window
@@ -282,23 +264,25 @@ float GLINT_SHADOW_DENOISER_AntiLagLength(GLINT_ShadowDenoiserAntiLagSums sums)
     return excess > 0.0 ? max(GLINT_SHADOW_DENOISER_ANTILAG_LENGTH / (excess * excess), 1.0) : 1024.0;
 }
 
-// The anti-lag length of every pixel of the block that asks for it (`wanted`; 1024 for the
-// others). Called by every thread of a block that is not clear (one block a group in the
-// parts that run it): it synchronises the group twice.
-// When all those pixels moved by the same whole-pixel offset, their windows are one 12x12
-// region: each thread fetches about 2 of its positions, with their score terms, into
-// groupshared memory instead of all 25 of its own window (same terms, same order of summation,
-// same result).
-float GLINT_SHADOW_DENOISER_GroupAntiLagLength(bool wanted, int2 pixel, int2 previousPixel, float z, float previousZ,
-                                               uint q, uint2 tile, uint localIndex, uint2 local, uint2 inputSize,
-                                               float4 viewDepth, uint flags)
+// The anti-lag test of a block that is not clear (one block a group in the parts that run it),
+// in two calls that every thread of the block makes, each synchronising the group once, so
+// that the window's loads overlap the pixels' own history loads:
+// - AntiLagWindow, as soon as the pixels' reprojected positions are known: when every
+//   candidate (a pixel that reprojects into the image) moved by the same whole-pixel offset,
+//   their windows are one 12x12 region, and each thread fetches about 2 of its positions into
+//   groupshared memory instead of all 25 of its own window. Returns whether it did.
+// - AntiLagWindowLength, after the history test: the length for the pixels that found a history
+//   (`wanted`, a subset of the candidates, so the window holds their positions too), 1024 for
+//   the others. Same terms, same order of summation, same result as the per-pixel loop that
+//   runs when the candidates moved by different offsets.
+bool GLINT_SHADOW_DENOISER_AntiLagWindow(bool candidate, int2 offset, uint q, uint2 tile, uint localIndex,
+                                         uint2 inputSize, float4 viewDepth, uint flags)
 {
     const int radius = GLINT_SHADOW_DENOISER_ANTILAG_RADIUS;
     const int span = GLINT_SHADOW_DENOISER_ANTILAG_SPAN;
-    int2 offset = previousPixel - pixel;
     // Offsets lie within +-16383 (image sizes), so the biased halves never carry.
     uint packed = uint(offset.x + 32768) | (uint(offset.y + 32768) << 16);
-    if (wanted)
+    if (candidate)
     {
         InterlockedMin(g_glint_shadow_denoiser_classify_offset_min[q], packed);
         InterlockedMax(g_glint_shadow_denoiser_classify_offset_max[q], packed);
@@ -306,48 +290,50 @@ float GLINT_SHADOW_DENOISER_GroupAntiLagLength(bool wanted, int2 pixel, int2 pre
     GroupMemoryBarrierWithGroupSync();
     uint low = g_glint_shadow_denoiser_classify_offset_min[q];
     uint high = g_glint_shadow_denoiser_classify_offset_max[q];
-    // A block in which nobody asks has low > high: it fills no window.
+    // A block without candidates has low > high: it fills no window.
     bool uniformWindow = low == high;
-    uint windowBase = q * GLINT_SHADOW_DENOISER_ANTILAG_SLOTS;
     if (uniformWindow)
     {
+        uint windowBase = q * GLINT_SHADOW_DENOISER_ANTILAG_SLOTS;
         int2 uniformOffset = int2(int(low & 0xFFFFu) - 32768, int(low >> 16) - 32768);
         int2 origin = int2(tile * 8u) - radius;
         for (uint i = localIndex; i < uint(span * span); i += 64u)
         {
             int2 current = origin + int2(int(i % uint(span)), int(i / uint(span)));
-            float4 texel =
+            g_glint_shadow_denoiser_classify_window[windowBase + i] =
                 GLINT_SHADOW_DENOISER_AntiLagTexel(current, current + uniformOffset, inputSize, viewDepth, flags);
-            g_glint_shadow_denoiser_classify_window[windowBase + i] = texel;
-            g_glint_shadow_denoiser_classify_window_terms[windowBase + i] = GLINT_SHADOW_DENOISER_AntiLagTerms(texel);
         }
     }
+    return uniformWindow;
+}
+
+float GLINT_SHADOW_DENOISER_AntiLagWindowLength(bool wanted, bool uniformWindow, int2 pixel, int2 previousPixel, float z,
+                                                float previousZ, uint q, uint2 local, uint2 inputSize, float4 viewDepth,
+                                                uint flags)
+{
+    const int radius = GLINT_SHADOW_DENOISER_ANTILAG_RADIUS;
+    const int span = GLINT_SHADOW_DENOISER_ANTILAG_SPAN;
     GroupMemoryBarrierWithGroupSync();
     if (!wanted)
         return 1024.0;
     GLINT_ShadowDenoiserAntiLagSums sums = GLINT_SHADOW_DENOISER_AntiLagBegin();
     if (uniformWindow)
     {
-        uint centre = windowBase + (local.y + uint(radius)) * uint(span) + local.x + uint(radius);
+        uint centre =
+            q * GLINT_SHADOW_DENOISER_ANTILAG_SLOTS + (local.y + uint(radius)) * uint(span) + local.x + uint(radius);
         // Rows in a loop, columns unrolled (as the reflections denoiser's 9x9 statistics).
         [loop] for (int dy = -radius; dy <= radius; ++dy)
             [unroll] for (int dx = -radius; dx <= radius; ++dx)
-            {
-                uint slot = uint(int(centre) + dy * span + dx);
-                float4 texel = g_glint_shadow_denoiser_classify_window[slot];
-                if (GLINT_SHADOW_DENOISER_AntiLagCounts(texel, z, previousZ))
-                    GLINT_SHADOW_DENOISER_AntiLagAdd(sums, texel, g_glint_shadow_denoiser_classify_window_terms[slot]);
-            }
+                GLINT_SHADOW_DENOISER_AntiLagAdd(sums, g_glint_shadow_denoiser_classify_window[int(centre) + dy * span + dx],
+                                                 z, previousZ);
         return GLINT_SHADOW_DENOISER_AntiLagLength(sums);
     }
     for (int dy = -radius; dy <= radius; ++dy)
         for (int dx = -radius; dx <= radius; ++dx)
-        {
-            float4 texel = GLINT_SHADOW_DENOISER_AntiLagTexel(pixel + int2(dx, dy), previousPixel + int2(dx, dy),
-                                                              inputSize, viewDepth, flags);
-            if (GLINT_SHADOW_DENOISER_AntiLagCounts(texel, z, previousZ))
-                GLINT_SHADOW_DENOISER_AntiLagAdd(sums, texel, GLINT_SHADOW_DENOISER_AntiLagTerms(texel));
-        }
+            GLINT_SHADOW_DENOISER_AntiLagAdd(sums,
+                                             GLINT_SHADOW_DENOISER_AntiLagTexel(pixel + int2(dx, dy), previousPixel + int2(dx, dy),
+                                                                                inputSize, viewDepth, flags),
+                                             z, previousZ);
     return GLINT_SHADOW_DENOISER_AntiLagLength(sums);
 }
 
@@ -526,14 +512,20 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint3 groupThreadId, GLINT_Sh
     bool disoccluded = !active || (c.flags & GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_RESET) != 0u ||
                        !GLINT_IsFinite(uvPrevious.x) || !GLINT_IsFinite(uvPrevious.y) || any(uvPrevious < 0.0) ||
                        any(uvPrevious > 1.0);
-    int2 previousPixel = int2(0, 0);
+    int2 previousPixel = disoccluded ? int2(0, 0) : min(int2(uvPrevious * float2(c.inputSize)), int2(c.inputSize) - 1);
+    // Anti-lag: the 17x17 clamp cannot see a shadow edge that moved inside its window. The
+    // flag is uniform, so every thread of the block reaches the test's barriers or none does.
+    bool antiLag = (c.flags & GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_ANTI_LAG) != 0u;
+    bool uniformWindow = false;
+    if (antiLag)
+        uniformWindow = GLINT_SHADOW_DENOISER_AntiLagWindow(!disoccluded, previousPixel - pixel, q, tile, localIndex,
+                                                            c.inputSize, c.viewDepth, c.flags);
     float previousZ = -1.0;
     if (!disoccluded)
     {
         float4 ndc = float4(2.0 * uv.x - 1.0, c.ndcYSign * (2.0 * uv.y - 1.0), depth, 1.0);
         float4 previousClip = mul(c.reproject, ndc);
         float reprojectedZ = GLINT_SHADOW_DENOISER_ClassifyViewDepth(previousClip.z / previousClip.w, c.viewDepth);
-        previousPixel = min(int2(uvPrevious * float2(c.inputSize)), int2(c.inputSize) - 1);
         previousZ =
             GLINT_SHADOW_DENOISER_ClassifyViewDepth(GLINT_SHADOW_DENOISER_LoadPreviousDepth(previousPixel), c.viewDepth);
         float4 world = mul(c.inverseViewProj, ndc);
@@ -567,13 +559,10 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint3 groupThreadId, GLINT_Sh
         }
     }
 
-    // Anti-lag: the 17x17 clamp cannot see a shadow edge that moved inside its window. The
-    // flag is uniform, so every thread of the block reaches the test's barriers or none does.
     float antiLagLength = 1024.0;
-    if ((c.flags & GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_ANTI_LAG) != 0u)
-        antiLagLength = GLINT_SHADOW_DENOISER_GroupAntiLagLength(historyFound, pixel, previousPixel, z, previousZ, q,
-                                                                 tile, localIndex, local, c.inputSize, c.viewDepth,
-                                                                 c.flags);
+    if (antiLag)
+        antiLagLength = GLINT_SHADOW_DENOISER_AntiLagWindowLength(historyFound, uniformWindow, pixel, previousPixel, z,
+                                                                  previousZ, q, local, c.inputSize, c.viewDepth, c.flags);
     if (!active)
     {
         if (inside)
