@@ -19,17 +19,15 @@ uint GLINT_SSSR_AddRays(uint count)
     return previous;
 }
 void GLINT_SSSR_StoreRay(uint index, uint entry) { g_glint_check_words[index + 4] = entry; }
-uint GLINT_SSSR_AddTiles(uint count)
+uint GLINT_SSSR_AddTile()
 {
     uint previous;
-    InterlockedAdd(g_glint_check_words[2], count, previous);
+    InterlockedAdd(g_glint_check_words[2], 1u, previous);
     return previous;
 }
 void GLINT_SSSR_StoreTile(uint index, uint entry) { g_glint_check_words[index + 8] = entry; }
 
-// 2x2 tiles of 8x8 per group, one per groupThreadId.z (see the header's dispatch comment).
-[numthreads(GLINT_SSSR_TILE, GLINT_SSSR_TILE, GLINT_SSSR_CLASSIFY_TILE_BLOCKS)] void main(uint3 groupId : SV_GroupID,
-                                                                                  uint3 groupThreadId : SV_GroupThreadID)
+[numthreads(8, 8, 1)] void main(uint3 groupId : SV_GroupID, uint3 groupThreadId : SV_GroupThreadID)
 {
-    GLINT_SSSR_Classify(g_glint_sssr, groupId.xy, groupThreadId);
+    GLINT_SSSR_Classify(g_glint_sssr, groupId.xy, groupThreadId.xy);
 }

@@ -108,11 +108,10 @@ TEST_CASE("classification matches the CPU classification for 1, 2 and 4 samples 
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }
 
-TEST_CASE("classification matches the CPU classification when groups of 2x2 tiles overhang the image",
+TEST_CASE("classification matches the CPU classification on odd tile grids and a single tile",
           "[sssr][classify]") {
-    // A group covers 2x2 tiles of 8x8. 200x72 has 25x9 tiles (odd both ways), so the last
-    // column and row of groups have blocks wholly outside the image; 8x8 is one tile and three
-    // empty blocks. Such blocks must list no tile and no ray.
+    // 200x72 has 25x9 tiles (odd both ways); 8x8 is one tile. (Also the guard for any future
+    // grouping of several tiles a group, where such grids leave blocks outside the image.)
     for (const auto& size : {std::pair{200u, 72u}, std::pair{8u, 8u}}) {
         INFO(size.first << "x" << size.second);
         test::SssrTestView view = randomView(size.first, size.second, false, 5u + size.first);

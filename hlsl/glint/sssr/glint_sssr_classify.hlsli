@@ -22,18 +22,12 @@
 //   void   GLINT_SSSR_StoreConfidence(int2 pixel, float confidence);
 //   uint   GLINT_SSSR_AddRays(uint count);   atomic add to counter 0, returns the previous value
 //   void   GLINT_SSSR_StoreRay(uint index, uint entry);
-//   uint   GLINT_SSSR_AddTiles(uint count);  atomic add of count to counter 2, returns the previous value
+//   uint   GLINT_SSSR_AddTile();             atomic add of 1 to counter 2, returns the previous value
 //   void   GLINT_SSSR_StoreTile(uint index, uint entry);
 //
-// Dispatch: [numthreads(GLINT_SSSR_TILE, GLINT_SSSR_TILE, GLINT_SSSR_CLASSIFY_TILE_BLOCKS)]
-// (8x8x4), ceil(W / 16) x ceil(H / 16) groups; pass GLINT_SSSR_Classify the group id and the
-// group thread id. groupThreadId.z = q picks one of the group's 2x2 8x8 tiles (blocks): tile =
-// groupId * (BLOCKS_X, BLOCKS_Y) + (q % BLOCKS_X, q / BLOCKS_X), GLINT_SSSR_CLASSIFY_TILE_BLOCKS_X
-// and _Y being 2. Why: one-tile groups of 64 threads are bound by the group-launch rate, and a
-// group of four tiles takes one AddRays and one AddTiles (each at most once, from one thread)
-// for all of them. Quads never straddle tiles, so every quad decision is made in the block's
-// groupshared state and holds for any subgroup size; a wave may cover part of a block, one
-// block or several (the per-block flags fall back to per-lane groupshared atomics then).
+// Dispatch: [numthreads(8, 8, 1)], ceil(W / 8) x ceil(H / 8) groups, one 8x8 tile per group.
+// Quads never straddle tiles, so every quad decision is made in groupshared memory and holds
+// for any subgroup size.
 #ifndef GLINT_SSSR_CLASSIFY_HLSLI
 #define GLINT_SSSR_CLASSIFY_HLSLI
 
@@ -51,48 +45,42 @@ void GLINT_SSSR_StoreRadiance(int2 pixel, float4 radianceAndHitDistance);
 void GLINT_SSSR_StoreConfidence(int2 pixel, float confidence);
 uint GLINT_SSSR_AddRays(uint count);
 void GLINT_SSSR_StoreRay(uint index, uint entry);
-uint GLINT_SSSR_AddTiles(uint count);
+uint GLINT_SSSR_AddTile();
 void GLINT_SSSR_StoreTile(uint index, uint entry);
 
 #define GLINT_SSSR_STATE_TRACES 1u
 #define GLINT_SSSR_STATE_REQUIRES_COPY 2u
 
-#define GLINT_SSSR_BLOCK_PIXELS (GLINT_SSSR_TILE * GLINT_SSSR_TILE)
-
-// Per block (8x8 tile, indexed by groupThreadId.z): the pixels' states and whether any pixel
-// is glossy. Per group: the rays (one AddRays) and the tiles' base (one AddTiles).
-groupshared uint g_glint_sssr_state[GLINT_SSSR_CLASSIFY_TILE_BLOCKS * GLINT_SSSR_BLOCK_PIXELS];
-groupshared uint g_glint_sssr_any_glossy[GLINT_SSSR_CLASSIFY_TILE_BLOCKS];
+groupshared uint g_glint_sssr_state[GLINT_SSSR_TILE * GLINT_SSSR_TILE];
 groupshared uint g_glint_sssr_ray_count;
 groupshared uint g_glint_sssr_ray_base;
-groupshared uint g_glint_sssr_tile_base;
+groupshared uint g_glint_sssr_any_glossy;
 
-uint GLINT_SSSR_StateAt(uint block, uint2 local)
+uint GLINT_SSSR_StateAt(uint2 local)
 {
-    return g_glint_sssr_state[block * GLINT_SSSR_BLOCK_PIXELS + local.y * GLINT_SSSR_TILE + local.x];
+    return g_glint_sssr_state[local.y * GLINT_SSSR_TILE + local.x];
 }
 
 // The quad neighbour a pixel that needs a copy takes its ray from: the first of x^1, y^1 and
 // both that traces (1, 2, 3), or 0 when none does and the pixel must trace itself (the
-// reference leaves such pixels black, defect 11). Out-of-image neighbours never trace. Quads
-// never straddle tiles, so the neighbour is always in the same block.
-uint GLINT_SSSR_DonorOf(uint block, uint2 local)
+// reference leaves such pixels black, defect 11). Out-of-image neighbours never trace.
+uint GLINT_SSSR_DonorOf(uint2 local)
 {
-    if ((GLINT_SSSR_StateAt(block, local ^ uint2(1, 0)) & GLINT_SSSR_STATE_TRACES) != 0)
+    if ((GLINT_SSSR_StateAt(local ^ uint2(1, 0)) & GLINT_SSSR_STATE_TRACES) != 0)
         return 1u;
-    if ((GLINT_SSSR_StateAt(block, local ^ uint2(0, 1)) & GLINT_SSSR_STATE_TRACES) != 0)
+    if ((GLINT_SSSR_StateAt(local ^ uint2(0, 1)) & GLINT_SSSR_STATE_TRACES) != 0)
         return 2u;
-    if ((GLINT_SSSR_StateAt(block, local ^ uint2(1, 1)) & GLINT_SSSR_STATE_TRACES) != 0)
+    if ((GLINT_SSSR_StateAt(local ^ uint2(1, 1)) & GLINT_SSSR_STATE_TRACES) != 0)
         return 3u;
     return 0u;
 }
 
 // True when the neighbour at local ^ offset needs a copy and chose this pixel (code = offset).
-bool GLINT_SSSR_ChoseMe(uint block, uint2 local, uint2 offset, uint code)
+bool GLINT_SSSR_ChoseMe(uint2 local, uint2 offset, uint code)
 {
     uint2 neighbour = local ^ offset;
-    return (GLINT_SSSR_StateAt(block, neighbour) & GLINT_SSSR_STATE_REQUIRES_COPY) != 0 &&
-           GLINT_SSSR_DonorOf(block, neighbour) == code;
+    return (GLINT_SSSR_StateAt(neighbour) & GLINT_SSSR_STATE_REQUIRES_COPY) != 0 &&
+           GLINT_SSSR_DonorOf(neighbour) == code;
 }
 
 // Variance of last frame at the reprojected position; off-screen history counts as high so
@@ -106,22 +94,15 @@ bool GLINT_SSSR_HighVariance(GLINT_SssrConstants c, int2 pixel, float2 uv)
     return !(GLINT_SSSR_SampleVarianceHistory(previousUv) <= c.varianceThreshold);
 }
 
-// groupThreadId: (x, y) the pixel in its tile, z the tile (block) in the group's 2x2.
-void GLINT_SSSR_Classify(GLINT_SssrConstants c, uint2 groupId, uint3 groupThreadId)
+void GLINT_SSSR_Classify(GLINT_SssrConstants c, uint2 groupId, uint2 local)
 {
-    uint2 local = groupThreadId.xy;
-    uint block = groupThreadId.z;
     uint localIndex = local.y * GLINT_SSSR_TILE + local.x;
-    uint stateIndex = block * GLINT_SSSR_BLOCK_PIXELS + localIndex;
-    if (stateIndex == 0)
-        g_glint_sssr_ray_count = 0;
     if (localIndex == 0)
-        g_glint_sssr_any_glossy[block] = 0;
-    uint2 tile = groupId * uint2(GLINT_SSSR_CLASSIFY_TILE_BLOCKS_X, GLINT_SSSR_CLASSIFY_TILE_BLOCKS_Y) +
-                 uint2(block % GLINT_SSSR_CLASSIFY_TILE_BLOCKS_X, block / GLINT_SSSR_CLASSIFY_TILE_BLOCKS_X);
-    uint2 pixel = tile * GLINT_SSSR_TILE + local;
-    // A block whose tile lies outside the image (right and bottom borders) has no pixel in the
-    // image: it stores nothing, traces nothing and, having no glossy pixel, is never listed.
+    {
+        g_glint_sssr_ray_count = 0;
+        g_glint_sssr_any_glossy = 0;
+    }
+    uint2 pixel = groupId * GLINT_SSSR_TILE + local;
     bool inImage = all(pixel < c.inputSize);
     int2 ipixel = int2(pixel);
     float2 uv = (float2(pixel) + 0.5) * c.inverseInputSize;
@@ -160,59 +141,42 @@ void GLINT_SSSR_Classify(GLINT_SssrConstants c, uint2 groupId, uint3 groupThread
         traces = true;
         copies = false;
     }
-    g_glint_sssr_state[stateIndex] = (traces ? GLINT_SSSR_STATE_TRACES : 0u) | (copies ? GLINT_SSSR_STATE_REQUIRES_COPY : 0u);
+    g_glint_sssr_state[localIndex] = (traces ? GLINT_SSSR_STATE_TRACES : 0u) | (copies ? GLINT_SSSR_STATE_REQUIRES_COPY : 0u);
     GroupMemoryBarrierWithGroupSync();
 
-    if (copies && GLINT_SSSR_DonorOf(block, local) == 0)
+    if (copies && GLINT_SSSR_DonorOf(local) == 0)
         traces = true; // promoted: no neighbour traces for it
     uint copyFlags = 0;
     if (traces && !copies)
     {
-        copyFlags |= GLINT_SSSR_ChoseMe(block, local, uint2(1, 0), 1u) ? GLINT_SSSR_RAY_COPY_H : 0u;
-        copyFlags |= GLINT_SSSR_ChoseMe(block, local, uint2(0, 1), 2u) ? GLINT_SSSR_RAY_COPY_V : 0u;
-        copyFlags |= GLINT_SSSR_ChoseMe(block, local, uint2(1, 1), 3u) ? GLINT_SSSR_RAY_COPY_D : 0u;
+        copyFlags |= GLINT_SSSR_ChoseMe(local, uint2(1, 0), 1u) ? GLINT_SSSR_RAY_COPY_H : 0u;
+        copyFlags |= GLINT_SSSR_ChoseMe(local, uint2(0, 1), 2u) ? GLINT_SSSR_RAY_COPY_V : 0u;
+        copyFlags |= GLINT_SSSR_ChoseMe(local, uint2(1, 1), 3u) ? GLINT_SSSR_RAY_COPY_D : 0u;
     }
 
-    // Compaction: one global atomic for the whole group (all its blocks), entries in arbitrary
-    // order within the group. Within a wave the slots come from a prefix count and one
-    // groupshared atomic per wave (instead of one per pixel); this holds for any wave size and
-    // any mapping of lanes to blocks, and the order of the entries is unspecified either way.
+    // Compaction: one global atomic per group, entries in arbitrary order within the group.
+    // Within a wave the slots come from a prefix count and one groupshared atomic per wave
+    // (instead of one per pixel); this holds for any wave size, and the order of the entries
+    // is unspecified either way.
     uint waveRays = WaveActiveCountBits(traces);
     uint waveBase = 0;
     if (WaveIsFirstLane() && waveRays > 0)
         InterlockedAdd(g_glint_sssr_ray_count, waveRays, waveBase);
     uint slot = WaveReadLaneFirst(waveBase) + WavePrefixCountBits(traces);
-    // Any glossy pixel per block. A wave inside one block (up to 64 lanes, or however the lanes
-    // map to blocks) sets its block's flag once; a wave spanning blocks (e.g. 128 lanes) cannot
-    // tell from WaveActiveAnyTrue which block its glossy lanes are in, so there each glossy lane
-    // sets its own block's flag. Wave ops stay outside the conditions: they need every lane.
-    bool waveGlossy = WaveActiveAnyTrue(glossy);
-    bool waveInOneBlock = WaveActiveAllEqual(block);
-    bool firstLane = WaveIsFirstLane();
-    if (waveInOneBlock ? (firstLane && waveGlossy) : glossy)
-        InterlockedOr(g_glint_sssr_any_glossy[block], 1u);
+    bool waveGlossy = WaveActiveAnyTrue(glossy); // outside the condition: wave ops need every lane
+    if (WaveIsFirstLane() && waveGlossy)
+        InterlockedOr(g_glint_sssr_any_glossy, 1u);
     GroupMemoryBarrierWithGroupSync();
-    if (stateIndex == 0)
+    if (localIndex == 0)
     {
         if (g_glint_sssr_ray_count > 0)
             g_glint_sssr_ray_base = GLINT_SSSR_AddRays(g_glint_sssr_ray_count);
-        uint glossyTiles = 0;
-        for (uint q = 0; q < GLINT_SSSR_CLASSIFY_TILE_BLOCKS; ++q)
-            glossyTiles += g_glint_sssr_any_glossy[q] != 0 ? 1u : 0u;
-        if (glossyTiles > 0)
-            g_glint_sssr_tile_base = GLINT_SSSR_AddTiles(glossyTiles);
+        if (g_glint_sssr_any_glossy != 0)
+            GLINT_SSSR_StoreTile(GLINT_SSSR_AddTile(), GLINT_SSSR_PackTile(groupId * GLINT_SSSR_TILE));
     }
     GroupMemoryBarrierWithGroupSync();
     if (traces)
         GLINT_SSSR_StoreRay(g_glint_sssr_ray_base + slot, GLINT_SSSR_PackRay(pixel, copyFlags));
-    if (localIndex == 0 && g_glint_sssr_any_glossy[block] != 0)
-    {
-        // The tile's rank among the group's glossy tiles.
-        uint rank = 0;
-        for (uint q = 0; q < block; ++q)
-            rank += g_glint_sssr_any_glossy[q] != 0 ? 1u : 0u;
-        GLINT_SSSR_StoreTile(g_glint_sssr_tile_base + rank, GLINT_SSSR_PackTile(tile * GLINT_SSSR_TILE));
-    }
 
     if (!inImage)
         return;

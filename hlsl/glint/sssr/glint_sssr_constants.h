@@ -9,12 +9,6 @@
 // Classification and the denoiser work on 8x8 tiles; the intersection traces one ray per
 // thread in groups of 64.
 #define GLINT_SSSR_TILE 8
-// A classification group covers 2x2 of those tiles, one per groupThreadId.z (8x8x4 threads):
-// full-frame passes of 64-thread groups are bound by the group-launch rate (measured ~2x on an
-// H100), and a group's rays and tiles then take one global atomic each instead of one per tile.
-#define GLINT_SSSR_CLASSIFY_TILE_BLOCKS_X 2
-#define GLINT_SSSR_CLASSIFY_TILE_BLOCKS_Y 2
-#define GLINT_SSSR_CLASSIFY_TILE_BLOCKS (GLINT_SSSR_CLASSIFY_TILE_BLOCKS_X * GLINT_SSSR_CLASSIFY_TILE_BLOCKS_Y)
 #define GLINT_SSSR_RAYS_PER_GROUP 64
 // The intersection's indirect grid is (min(groups, 1024), ceil(groups / 1024), 1): ray index =
 // (group.y * 1024 + group.x) * 64 + thread.

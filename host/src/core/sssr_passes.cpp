@@ -116,12 +116,7 @@ Pass sssrPass(const char* name, const char* pipeline, std::uint32_t groupX, std:
 Pass classifyPass(const SssrDesc& desc, const std::vector<std::byte>& constants) {
     Pass pass = sssrPass("classify", desc.halfPrecisionStorage ? "sssr_classify.half" : "sssr_classify",
                          GLINT_SSSR_TILE, GLINT_SSSR_TILE, constants);
-    // 2x2 tiles of 8x8 per group, one per groupThreadId.z: one-tile groups are bound by the
-    // group-launch rate, and each group takes one global atomic for its rays and one for its tiles.
-    pass.groupSize[2] = GLINT_SSSR_CLASSIFY_TILE_BLOCKS;
-    pass.dispatch = DirectDispatch{
-        core::divideRoundUp(desc.size.width, GLINT_SSSR_TILE * GLINT_SSSR_CLASSIFY_TILE_BLOCKS_X),
-        core::divideRoundUp(desc.size.height, GLINT_SSSR_TILE * GLINT_SSSR_CLASSIFY_TILE_BLOCKS_Y), 1};
+    pass.dispatch = core::gridFor(desc.size.width, desc.size.height, 1, pass.groupSize);
     pass.uses = {{"g_glint_depth", "depth", Access::Read},
                  {"g_glint_normals", "normals", Access::Read},
                  {"g_glint_material", "material", Access::Read},
