@@ -45,17 +45,32 @@ struct GLINT_RD_PrefilterSums
     float weight;
 };
 
-// One tap of the prefilter at a constant offset from the centre slot.
+// The per-pixel factors of a tap's weight, in base-2 exponent units (see GLINT_RD_PrefilterTap).
+struct GLINT_RD_PrefilterRates
+{
+    float depth;    // log2(e) 4 / z: relative depth difference
+    float radiance; // log2(e) (0.6 + 0.1 var): distance from the tile average
+};
+
+// log2 of GLINT_RD_RadianceWeight's floor (0.01).
+#define GLINT_RD_LOG2_RADIANCE_FLOOR -6.64385619
+
+// One tap of the prefilter at a constant offset from the centre slot. Its weight is
+// max(N.Nq, 0)^512 exp(-4 |z - zq| / z) GLINT_RD_RadianceWeight(...) varianceWeight, computed
+// as one exp2 of the summed exponents (the radiance weight's floor applied to its exponent,
+// which is monotonic): one log2, one exp2 and one length a tap instead of two exps and a pow.
+// A normal at 90 degrees or more gives log2(0) = -inf and a weight of 0, as pow does.
 void GLINT_RD_PrefilterTap(inout GLINT_RD_PrefilterSums sums, uint centre, int2 offset, float4 geometry,
-                           float3 average, float ownVariance, float varianceWeight)
+                           float3 average, GLINT_RD_PrefilterRates rates, float varianceWeight)
 {
     uint index = uint(int(centre) + offset.y * GLINT_RD_PREFILTER_SPAN + offset.x);
     float4 q = g_glint_rd_prefilter_radiance[index];
     float4 qGeometry = g_glint_rd_prefilter_geometry[index];
     // Relative depth difference (reference defect 5: the reference multiplies by z).
-    float w = pow(max(dot(geometry.xyz, qGeometry.xyz), 0.0), 512.0) *
-              exp(-4.0 * abs(geometry.w - qGeometry.w) / geometry.w) *
-              GLINT_RD_RadianceWeight(average, q.rgb, ownVariance) * varianceWeight;
+    float exponent = 512.0 * log2(max(dot(geometry.xyz, qGeometry.xyz), 0.0)) -
+                     abs(geometry.w - qGeometry.w) * rates.depth +
+                     max(-length(average - q.rgb) * rates.radiance, GLINT_RD_LOG2_RADIANCE_FLOOR);
+    float w = exp2(exponent) * varianceWeight;
     // Only glossy neighbours count. A neighbour that is not glossy is weighted by an exact 0 (a
     // select, not a branch): everything in the span is finite (radiance sanitised, the normal
     // unit or (0, 0, 1), depth -1), so w is finite and its terms add exactly nothing.
@@ -121,6 +136,9 @@ void GLINT_RD_Prefilter(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint
         return;
     }
     float varianceWeight = max(0.1, 1.0 - exp(-4.4 * own.a));
+    GLINT_RD_PrefilterRates rates;
+    rates.depth = 1.44269504 * 4.0 / geometry.w;
+    rates.radiance = 1.44269504 * (0.6 + 0.1 * own.a);
     float centreWeight = GLINT_RD_RadianceWeight(average, own.rgb, own.a);
     GLINT_RD_PrefilterSums sums;
     sums.radiance = centreWeight * own.rgb;
@@ -132,21 +150,21 @@ void GLINT_RD_Prefilter(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint
     // The table is kept as specified; the CPU reference uses the same one. Written out call by
     // call, so that every offset is a constant: a static const table indexed by the loop counter
     // was a function-local array in SPIR-V, re-stored on every iteration.
-    GLINT_RD_PrefilterTap(sums, centre, int2(0, 1), geometry, average, own.a, varianceWeight);
-    GLINT_RD_PrefilterTap(sums, centre, int2(-2, 1), geometry, average, own.a, varianceWeight);
-    GLINT_RD_PrefilterTap(sums, centre, int2(2, -3), geometry, average, own.a, varianceWeight);
-    GLINT_RD_PrefilterTap(sums, centre, int2(-3, 0), geometry, average, own.a, varianceWeight);
-    GLINT_RD_PrefilterTap(sums, centre, int2(1, 2), geometry, average, own.a, varianceWeight);
-    GLINT_RD_PrefilterTap(sums, centre, int2(-1, -2), geometry, average, own.a, varianceWeight);
-    GLINT_RD_PrefilterTap(sums, centre, int2(3, 0), geometry, average, own.a, varianceWeight);
-    GLINT_RD_PrefilterTap(sums, centre, int2(-3, 3), geometry, average, own.a, varianceWeight);
-    GLINT_RD_PrefilterTap(sums, centre, int2(0, -3), geometry, average, own.a, varianceWeight);
-    GLINT_RD_PrefilterTap(sums, centre, int2(-1, -1), geometry, average, own.a, varianceWeight);
-    GLINT_RD_PrefilterTap(sums, centre, int2(2, 1), geometry, average, own.a, varianceWeight);
-    GLINT_RD_PrefilterTap(sums, centre, int2(-2, -2), geometry, average, own.a, varianceWeight);
-    GLINT_RD_PrefilterTap(sums, centre, int2(1, 0), geometry, average, own.a, varianceWeight);
-    GLINT_RD_PrefilterTap(sums, centre, int2(0, 2), geometry, average, own.a, varianceWeight);
-    GLINT_RD_PrefilterTap(sums, centre, int2(3, -1), geometry, average, own.a, varianceWeight);
+    GLINT_RD_PrefilterTap(sums, centre, int2(0, 1), geometry, average, rates, varianceWeight);
+    GLINT_RD_PrefilterTap(sums, centre, int2(-2, 1), geometry, average, rates, varianceWeight);
+    GLINT_RD_PrefilterTap(sums, centre, int2(2, -3), geometry, average, rates, varianceWeight);
+    GLINT_RD_PrefilterTap(sums, centre, int2(-3, 0), geometry, average, rates, varianceWeight);
+    GLINT_RD_PrefilterTap(sums, centre, int2(1, 2), geometry, average, rates, varianceWeight);
+    GLINT_RD_PrefilterTap(sums, centre, int2(-1, -2), geometry, average, rates, varianceWeight);
+    GLINT_RD_PrefilterTap(sums, centre, int2(3, 0), geometry, average, rates, varianceWeight);
+    GLINT_RD_PrefilterTap(sums, centre, int2(-3, 3), geometry, average, rates, varianceWeight);
+    GLINT_RD_PrefilterTap(sums, centre, int2(0, -3), geometry, average, rates, varianceWeight);
+    GLINT_RD_PrefilterTap(sums, centre, int2(-1, -1), geometry, average, rates, varianceWeight);
+    GLINT_RD_PrefilterTap(sums, centre, int2(2, 1), geometry, average, rates, varianceWeight);
+    GLINT_RD_PrefilterTap(sums, centre, int2(-2, -2), geometry, average, rates, varianceWeight);
+    GLINT_RD_PrefilterTap(sums, centre, int2(1, 0), geometry, average, rates, varianceWeight);
+    GLINT_RD_PrefilterTap(sums, centre, int2(0, 2), geometry, average, rates, varianceWeight);
+    GLINT_RD_PrefilterTap(sums, centre, int2(3, -1), geometry, average, rates, varianceWeight);
     float4 result = float4(sums.radiance / sums.weight, sums.variance / (sums.weight * sums.weight));
     GLINT_RD_StorePrefiltered(int2(pixel), float4(GLINT_RD_SanitizeRadiance(result.rgb),
                                                   clamp(GLINT_FiniteOr(result.a, 1.0), 0.0, 65504.0)));
