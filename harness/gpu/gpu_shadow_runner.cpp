@@ -30,6 +30,14 @@ std::vector<std::uint32_t> readWords(const Context& context, const vk::Buffer& b
     return words;
 }
 
+// The output's texels as (shadow, variance) pairs; one-channel formats get variance 0.
+std::vector<float> asShadowVariance(std::vector<float> texels, Format format) {
+    if (format == Format::RG32Float) return texels;
+    std::vector<float> pairs(2 * texels.size(), 0.0f);
+    for (std::size_t i = 0; i < texels.size(); ++i) pairs[2 * i] = texels[i];
+    return pairs;
+}
+
 EffectPlan planOrThrow(const ShadowDenoiserDesc& desc) {
     EffectPlan plan;
     std::string error;
@@ -93,7 +101,9 @@ ShadowOutputs ShadowRunner::run(const ShadowDenoiserDesc& desc, const ShadowInpu
         outputs.moments = readbackImage(context_, owned_.images.at(written));
         if (!desc.filter) outputs.classified = readbackImage(context_, owned_.images.at("shadow_scratch0"));
     }
-    if (desc.filter) outputs.filtered = readbackImage(context_, owned_.images.at("shadow_output"));
+    if (desc.filter)
+        outputs.filtered =
+            asShadowVariance(readbackImage(context_, owned_.images.at("shadow_output")), desc.outputFormat);
     return outputs;
 }
 

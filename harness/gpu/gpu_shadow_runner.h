@@ -29,8 +29,10 @@ struct ShadowOutputs {
     std::vector<std::uint32_t> metadata; // with classification
     std::vector<float> classified;       // RG of scratch 0 after classification (no filter)
     std::vector<float> moments;          // RGBA written this frame
-    std::vector<float> filtered;         // RG of "shadow_output" (with the filter)
-    std::uint32_t filteredTiles = 0;     // "shadow_filter_work" when tiles are skipped
+    // "shadow_output" (with the filter) as RG (shadow, variance) whatever its format: R8Unorm and
+    // R16Float carry no variance, so .y is 0 for them.
+    std::vector<float> filtered;
+    std::uint32_t filteredTiles = 0; // "shadow_filter_work" when tiles are skipped
 };
 
 class ShadowRunner {

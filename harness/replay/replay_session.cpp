@@ -346,7 +346,9 @@ struct Session::Shadows {
         const std::vector<float>& final = desc.filter ? out.filtered : out.classified;
         const std::string pass = !desc.filter ? "classify" : desc.fusedFilter ? "filter" : "filter2";
         add("denoised", pass, channelsOf(w, h, final, 2, 1));
-        add("variance", pass, channelsOf(w, h, final, 2, 1, 1));
+        // One-channel output formats carry no variance (ShadowOutputs::filtered).
+        if (!desc.filter || desc.outputFormat == Format::RG32Float)
+            add("variance", pass, channelsOf(w, h, final, 2, 1, 1));
         if (auto reference = layerImage(frame, "reference.shadow", 1)) add("reference", "input", *reference);
         if (!options.intermediates) return;
 

@@ -34,6 +34,13 @@ SpatialPath parseSpatialPath(const std::string& name, const std::string& value) 
     throw std::invalid_argument("--set denoiser." + name + " needs prefilter or ratio, got '" + value + "'");
 }
 
+Format parseShadowOutputFormat(const std::string& name, const std::string& value) {
+    if (value == "r8") return Format::R8Unorm;
+    if (value == "r16f") return Format::R16Float;
+    if (value == "rg32f") return Format::RG32Float;
+    throw std::invalid_argument("--set shadows." + name + " needs r8, r16f or rg32f, got '" + value + "'");
+}
+
 bool applySssr(SssrDesc& desc, const std::string& name, const std::string& value) {
     if (name == "samplesPerQuad")
         desc.samplesPerQuad = parseUint(name, value);
@@ -87,6 +94,8 @@ bool applyShadow(ShadowDenoiserDesc& desc, const std::string& name, const std::s
         desc.pairedFilter = parseBool(name, value);
     else if (name == "splitClassify")
         desc.splitClassify = parseBool(name, value);
+    else if (name == "outputFormat")
+        desc.outputFormat = parseShadowOutputFormat(name, value);
     else if (name == "rebuildClearHistory")
         desc.rebuildClearHistory = parseBool(name, value);
     else if (name == "depthSigma")
@@ -144,7 +153,8 @@ void applySetting(EffectSettings& settings, const std::string& assignment) {
             "varianceThreshold, denoiser.historyClipScale, denoiser.maxHistoryLength, denoiser.spatialPath, "
             "denoiser.reconstructionRadius, denoiser.cleanupSigma, shadows.filter, shadows.classify, "
             "shadows.skipClearedTiles, "
-            "shadows.fusedFilter, shadows.pairedFilter, shadows.splitClassify, shadows.antiLag, "
+            "shadows.fusedFilter, shadows.pairedFilter, shadows.splitClassify, shadows.outputFormat, "
+            "shadows.antiLag, "
             "shadows.rebuildClearHistory, shadows.filterVarianceScale, "
             "shadows.depthSigma, shadows.normalPower)");
     settings.assignments.push_back(assignment);

@@ -8,8 +8,10 @@
 //   reflections denoiser: denoiser.historyClipScale, denoiser.maxHistoryLength,
 //                         denoiser.spatialPath (prefilter | ratio), denoiser.reconstructionRadius,
 //                         denoiser.cleanupSigma
-//   shadows: shadows.filter, shadows.classify, shadows.skipClearedTiles, shadows.depthSigma,
-//            shadows.normalPower
+//   shadows: shadows.filter, shadows.classify, shadows.skipClearedTiles, shadows.fusedFilter,
+//            shadows.pairedFilter, shadows.splitClassify, shadows.outputFormat (r8 | r16f | rg32f),
+//            shadows.antiLag, shadows.rebuildClearHistory, shadows.filterVarianceScale,
+//            shadows.depthSigma, shadows.normalPower
 #pragma once
 
 #include "glint/glint_reflections_denoiser.h"
@@ -24,7 +26,7 @@ namespace glint::replay {
 struct EffectSettings {
     SssrDesc sssr;                        // only the tunables are read from it
     ReflectionsDenoiserDesc denoiser;     // the tunables copyDenoiserTunables copies
-    ShadowDenoiserDesc shadows;           // filter, classify, skipClearedTiles, depthSigma, normalPower
+    ShadowDenoiserDesc shadows;           // the shadows.* tunables above
     std::vector<std::string> assignments; // as given, for reports
 };
 

@@ -22,6 +22,9 @@ glint_cli_test(NAME "run with frames outside the capture is a usage error" LABEL
 glint_cli_test(NAME "run with an unknown setting is a usage error naming it" LABELS unit EXIT 2
   STDERR_ONE_LINE "unknown setting 'nosuch'"
   COMMAND run "${GLINT_CLI_SAMPLE_DIR}/sample" --set nosuch=1 --out "${PROJECT_BINARY_DIR}/test-output/cli/run_bad")
+glint_cli_test(NAME "run with an unknown shadow output format is a usage error naming the formats" LABELS unit EXIT 2
+  STDERR_ONE_LINE "shadows.outputFormat needs r8, r16f or rg32f, got 'rgba32f'"
+  COMMAND run "${GLINT_CLI_SAMPLE_DIR}/sample" --set shadows.outputFormat=rgba32f --out "${PROJECT_BINARY_DIR}/test-output/cli/run_bad")
 glint_cli_test(NAME "dump of a pass the replay does not have is a usage error" LABELS gpu EXIT 2
   STDERR_ONE_LINE "no pass named 'nosuch'"
   COMMAND dump "${GLINT_CLI_SAMPLE_DIR}/sample" --pass nosuch --out "${PROJECT_BINARY_DIR}/test-output/cli/dump_bad")

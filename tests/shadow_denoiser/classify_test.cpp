@@ -31,6 +31,9 @@ ShadowDenoiserDesc classifyDesc(std::uint32_t width, std::uint32_t height) {
     desc.filter = false;
     desc.inverseViewProjection = kInverseViewProjection;
     desc.eyePosition = {0.0f, 0.5f, 1.0f};
+    // The tests that enable the filter compare its output and variance at tight tolerances: they
+    // test the filter's arithmetic, so the output keeps both channels in 32-bit floats.
+    desc.outputFormat = Format::RG32Float;
     return desc;
 }
 
@@ -149,62 +152,21 @@ void checkClassify(ShadowDenoiserDesc desc, test::ShadowInputs inputs, std::uint
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }
 
-// Motion of (1.3, -0.7) pixels, and a region whose previous depth is 40% farther. The motion is
-// deliberately not a multiple of half a pixel: with (1.5, -0.5) every previous position lands
-// exactly on a pixel edge, where the history pixel index is discontinuous and a one-ulp
-// difference in GPU arithmetic (seen on NVIDIA) picks the neighbour's history.
-test::ShadowInputs movingInputs(std::uint32_t width, std::uint32_t height, std::uint32_t seed) {
-    test::ShadowInputs inputs = test::makeShadowInputs(width, height, seed);
-    for (std::size_t i = 0; i < inputs.motion.size(); i += 2) {
-        inputs.motion[i] = 1.3f / static_cast<float>(width);
-        inputs.motion[i + 1] = -0.7f / static_cast<float>(height);
-    }
-    for (std::uint32_t y = 0; y < height; ++y)
-        for (std::uint32_t x = 0; x < width / 4; ++x) {
-            float& d = inputs.previousDepth[std::size_t{y} * width + x];
-            if (d < 1.0f) d = std::min(d + 0.02f, 0.999f);
-        }
-    return inputs;
-}
-
-// A lit band (x < 12) and a shadowed band (x >= 40) around the penumbra, so tiles of every kind
-// meet at group borders.
-void addUniformBands(test::ShadowInputs& inputs, std::uint32_t width, std::uint32_t height) {
-    for (std::uint32_t y = 0; y < height; ++y)
-        for (std::uint32_t x = 0; x < width; ++x) {
-            float& v = inputs.visibility[std::size_t{y} * width + x];
-            if (x < 12) v = 1.0f;
-            if (x >= 40) v = 0.0f;
-        }
-}
-
-// The last of three frames (the first a camera cut) with the same inputs.
-test::ShadowOutputs runThreeFrames(ShadowDenoiserDesc desc, const test::ShadowInputs& inputs) {
-    test::ShadowRunner runner(desc);
-    test::ShadowOutputs last;
-    for (std::uint32_t frame = 0; frame < 3; ++frame) {
-        desc.frameIndex = frame;
-        desc.resetHistory = frame == 0;
-        last = runner.run(desc, inputs);
-    }
-    return last;
-}
-
 } // namespace
 
 TEST_CASE("classify 64x48 with history and motion: matches the CPU reference", "[classify]") {
     ShadowDenoiserDesc desc = classifyDesc(64, 48);
-    checkClassify(desc, movingInputs(64, 48, 11), 1);
+    checkClassify(desc, test::movingShadowInputs(64, 48, 11), 1);
     desc.frameIndex = 1;
     desc.vulkanNdc = false;
-    checkClassify(desc, movingInputs(64, 48, 12), 2);
+    checkClassify(desc, test::movingShadowInputs(64, 48, 12), 2);
     // Without the anti-lag test (the reference skips its cap too).
     desc.antiLag = false;
-    checkClassify(desc, movingInputs(64, 48, 12), 2);
+    checkClassify(desc, test::movingShadowInputs(64, 48, 12), 2);
     // An explicit filter variance scale reaches the stored variance.
     desc.antiLag = true;
     desc.filterVarianceScale = 0.7f;
-    checkClassify(desc, movingInputs(64, 48, 12), 2);
+    checkClassify(desc, test::movingShadowInputs(64, 48, 12), 2);
 }
 
 // A zoom: the motion grows away from the image centre, so the whole-pixel offset to the previous
@@ -213,7 +175,7 @@ TEST_CASE("classify 64x48 with history and motion: matches the CPU reference", "
 // match the reference.
 TEST_CASE("classify with a zoom: uniform and mixed block offsets match the CPU reference", "[classify]") {
     constexpr std::uint32_t width = 64, height = 48;
-    test::ShadowInputs inputs = movingInputs(width, height, 21);
+    test::ShadowInputs inputs = test::movingShadowInputs(width, height, 21);
     std::size_t uniformBlocks = 0, mixedBlocks = 0;
     for (std::uint32_t by = 0; by < height / 8; ++by)
         for (std::uint32_t bx = 0; bx < width / 8; ++bx) {
@@ -280,20 +242,20 @@ TEST_CASE("classify: clear tiles' rebuilt histories match the stored ones over f
 }
 
 TEST_CASE("classify 1x1, 13x7 and 203x77: match the CPU reference", "[classify]") {
-    checkClassify(classifyDesc(1, 1), movingInputs(1, 1, 13), 3);
-    checkClassify(classifyDesc(13, 7), movingInputs(13, 7, 14), 4);
-    checkClassify(classifyDesc(203, 77), movingInputs(203, 77, 15), 5);
+    checkClassify(classifyDesc(1, 1), test::movingShadowInputs(1, 1, 13), 3);
+    checkClassify(classifyDesc(13, 7), test::movingShadowInputs(13, 7, 14), 4);
+    checkClassify(classifyDesc(203, 77), test::movingShadowInputs(203, 77, 15), 5);
 }
 
 TEST_CASE("classify: a camera cut ignores every history", "[classify][reset]") {
     ShadowDenoiserDesc desc = classifyDesc(64, 48);
     desc.resetHistory = true;
-    checkClassify(desc, movingInputs(64, 48, 16), 6);
+    checkClassify(desc, test::movingShadowInputs(64, 48, 16), 6);
     test::ShadowRunner runner(desc);
     std::vector<float> moments, shadow;
     randomHistory(64 * 48, 7, moments, shadow);
     runner.setHistory(0, moments, shadow);
-    const test::ShadowOutputs outputs = runner.run(desc, movingInputs(64, 48, 16));
+    const test::ShadowOutputs outputs = runner.run(desc, test::movingShadowInputs(64, 48, 16));
     for (std::size_t i = 0; i < 64 * 48; ++i) CHECK(outputs.moments[4 * i + 2] <= 1.0f);
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }
@@ -317,7 +279,7 @@ TEST_CASE("classify and filter: non-finite inputs and histories give finite outp
     const float inf = std::numeric_limits<float>::infinity();
     ShadowDenoiserDesc desc = classifyDesc(45, 29);
     desc.filter = true;
-    test::ShadowInputs inputs = movingInputs(45, 29, 18);
+    test::ShadowInputs inputs = test::movingShadowInputs(45, 29, 18);
     const std::size_t count = inputs.depth.size();
     for (std::size_t i = 0; i < count; i += 5) inputs.depth[i] = i % 2 ? nan : inf;
     for (std::size_t i = 1; i < count; i += 7) inputs.previousDepth[i] = nan;
@@ -372,14 +334,14 @@ TEST_CASE("fused filter after classification: the three-dispatch result, with an
     ShadowDenoiserDesc desc = classifyDesc(53, 37);
     desc.filter = true;
     test::ShadowInputs inputs = test::makeShadowInputs(53, 37, 23);
-    addUniformBands(inputs, 53, 37);
+    test::addUniformBands(inputs, 53, 37);
     inputs.previousDepth = inputs.depth;
     for (bool skip : {true, false}) {
         desc.skipClearedTiles = skip;
         std::vector<test::ShadowOutputs> results;
         for (bool fused : {false, true}) {
             desc.fusedFilter = fused;
-            results.push_back(runThreeFrames(desc, inputs));
+            results.push_back(test::runThreeFrames(desc, inputs));
         }
         INFO("skipClearedTiles " << skip);
         REQUIRE(results[0].filtered.size() == results[1].filtered.size());
@@ -407,7 +369,7 @@ TEST_CASE("split classification: metadata and moments match the CPU reference", 
         EffectPlan plan;
         REQUIRE(planShadowDenoiser(desc, plan, nullptr) == Result::Ok);
         REQUIRE(plan.passes[2].name == "temporal");
-        const test::ShadowInputs inputs = movingInputs(size.width, size.height, size.width + 5u);
+        const test::ShadowInputs inputs = test::movingShadowInputs(size.width, size.height, size.width + 5u);
         const std::size_t count = std::size_t{size.width} * size.height;
         std::vector<float> moments, shadow;
         randomHistory(count, size.height, moments, shadow);
@@ -435,12 +397,12 @@ TEST_CASE("split classification and the paired filter: the one- and three-dispat
     // frames with motion so the histories and the anti-lag windows take part.
     ShadowDenoiserDesc desc = classifyDesc(53, 37);
     desc.filter = true;
-    test::ShadowInputs inputs = movingInputs(53, 37, 29);
-    addUniformBands(inputs, 53, 37);
+    test::ShadowInputs inputs = test::movingShadowInputs(53, 37, 29);
+    test::addUniformBands(inputs, 53, 37);
     const auto runFrames = [&](bool split, bool paired) {
         desc.splitClassify = split;
         desc.pairedFilter = paired;
-        return runThreeFrames(desc, inputs);
+        return test::runThreeFrames(desc, inputs);
     };
     const test::ShadowOutputs baseline = runFrames(false, false);
     REQUIRE(baseline.filteredTiles > 0u);

@@ -1,4 +1,5 @@
 // The shadow denoiser plan and the CPU packer's bit layout.
+#include "core/shader_library.h"
 #include "reference/shadow_denoiser_reference.h"
 
 #include "glint/glint_shadow_denoiser.h"
@@ -6,9 +7,14 @@
 
 #include <catch2/catch.hpp>
 
+#include <array>
 #include <cstddef>
 #include <cstring>
+#include <iterator>
 #include <limits>
+#include <string>
+#include <utility>
+#include <vector>
 
 using namespace glint;
 
@@ -30,7 +36,7 @@ TEST_CASE("shadow plan: passes, resources and sizes", "[plan]") {
     CHECK(std::get<DirectDispatch>(plan.passes[1].dispatch).groupsY == 1);
     REQUIRE(plan.buffers.size() == 4);
     CHECK(plan.buffers[3].name == "shadow_filter_work");
-    CHECK(plan.passes[2].pipeline == "shadow_denoiser_filter.fused_skip");
+    CHECK(plan.passes[2].pipeline == "shadow_denoiser_filter.fused_skip_r8");
     CHECK(plan.passes[2].zeroBuffers == std::vector<std::string>{"shadow_filter_work"});
     CHECK(plan.passes[2].groupSize[0] == 16);
     CHECK(std::get<DirectDispatch>(plan.passes[2].dispatch).groupsX == 1);
@@ -75,7 +81,7 @@ TEST_CASE("shadow plan: passes, resources and sizes", "[plan]") {
     REQUIRE(plan.passes.size() == 5);
     CHECK(plan.passes[0].pipeline == "shadow_denoiser_prepare.list");
     CHECK(plan.passes[1].name == "classify");
-    CHECK(plan.passes[1].pipeline == "shadow_denoiser_classify.tiles");
+    CHECK(plan.passes[1].pipeline == "shadow_denoiser_classify.tiles_r8");
     CHECK(plan.passes[1].groupSize[2] == GLINT_SHADOW_DENOISER_CLASSIFY_TILE_BLOCKS);
     CHECK(std::get<DirectDispatch>(plan.passes[1].dispatch).groupsX == 1);
     CHECK(std::get<DirectDispatch>(plan.passes[1].dispatch).groupsY == 1);
@@ -87,7 +93,7 @@ TEST_CASE("shadow plan: passes, resources and sizes", "[plan]") {
     CHECK(plan.passes[3].zeroBuffers == std::vector<std::string>{"shadow_filter_work"});
     CHECK(std::get<IndirectDispatch>(plan.passes[3].dispatch).resource == "shadow_filter_args");
     CHECK(plan.passes[4].name == "filter2");
-    CHECK(plan.passes[4].pipeline == "shadow_denoiser_filter.list");
+    CHECK(plan.passes[4].pipeline == "shadow_denoiser_filter.list_r8");
     // Each part binds only what it reads or writes; the temporal part writes the moments.
     const auto binds = [](const Pass& pass, const std::string& binding) {
         for (const ResourceUse& use : pass.uses)
@@ -103,7 +109,7 @@ TEST_CASE("shadow plan: passes, resources and sizes", "[plan]") {
     desc.pairedFilter = false;
     REQUIRE(planShadowDenoiser(desc, plan, &error) == Result::Ok);
     REQUIRE(plan.passes.size() == 5);
-    CHECK(plan.passes[1].pipeline == "shadow_denoiser_classify.list");
+    CHECK(plan.passes[1].pipeline == "shadow_denoiser_classify.list_r8");
     CHECK(std::get<DirectDispatch>(plan.passes[1].dispatch).groupsX == 2);
     CHECK(plan.passes[2].name == "filter0");
     CHECK(plan.passes[4].name == "filter2");
@@ -145,6 +151,150 @@ TEST_CASE("shadow plan: passes, resources and sizes", "[plan]") {
     REQUIRE(planShadowDenoiser(desc, plan, &error) == Result::Ok);
     CHECK(plan.passes.size() == 1);
     CHECK(plan.images.empty());
+}
+
+namespace {
+
+const Pass* findPass(const EffectPlan& plan, const std::string& name) {
+    for (const Pass& pass : plan.passes)
+        if (pass.name == name) return &pass;
+    return nullptr;
+}
+
+const ImageDesc* findImage(const EffectPlan& plan, const std::string& name) {
+    for (const ImageDesc& image : plan.images)
+        if (image.name == name) return &image;
+    return nullptr;
+}
+
+// A pass of a plan variant and its pipeline per output format (RG32F, R16F, R8): the same
+// for passes that do not write "shadow_output".
+struct ExpectedPass {
+    const char* name;
+    std::array<const char*, 3> pipelines;
+    bool writesOutput() const { return std::string(pipelines[0]) != pipelines[2]; }
+};
+
+ExpectedPass scratchPass(const char* name, const char* pipeline) {
+    return {name, {pipeline, pipeline, pipeline}};
+}
+
+struct PlanVariant {
+    const char* what;
+    struct {
+        bool classify, skipClearedTiles, splitClassify, pairedFilter, fusedFilter;
+    } flags;
+    std::vector<ExpectedPass> passes; // after "prepare"
+};
+
+} // namespace
+
+TEST_CASE("shadow plan: the output format picks the final output's format and permutations", "[plan]") {
+    ShadowDenoiserDesc desc;
+    desc.size = {53, 37};
+    EffectPlan plan;
+    std::string error;
+    // The default: one 8-bit channel.
+    REQUIRE(planShadowDenoiser(desc, plan, &error) == Result::Ok);
+    REQUIRE(findImage(plan, "shadow_output") != nullptr);
+    CHECK(findImage(plan, "shadow_output")->format == Format::R8Unorm);
+    CHECK(findPass(plan, "classify")->pipeline == "shadow_denoiser_classify.tiles_r8");
+    CHECK(findPass(plan, "temporal")->pipeline == "shadow_denoiser_classify.listed");
+    CHECK(findPass(plan, "filter01")->pipeline == "shadow_denoiser_filter.pair_list");
+    CHECK(findPass(plan, "filter2")->pipeline == "shadow_denoiser_filter.list_r8");
+
+    const ExpectedPass listFilter2{"filter2",
+                                   {"shadow_denoiser_filter.list", "shadow_denoiser_filter.list_r16f",
+                                    "shadow_denoiser_filter.list_r8"}};
+    const ExpectedPass plainFilter2{
+        "filter2", {"shadow_denoiser_filter", "shadow_denoiser_filter.r16f", "shadow_denoiser_filter.r8"}};
+    const ExpectedPass plainClassify = scratchPass("classify", "shadow_denoiser_classify");
+    const std::vector<PlanVariant> variants = {
+        {"default",
+         {true, true, true, true, false},
+         {{"classify",
+           {"shadow_denoiser_classify.tiles", "shadow_denoiser_classify.tiles_r16f",
+            "shadow_denoiser_classify.tiles_r8"}},
+          scratchPass("temporal", "shadow_denoiser_classify.listed"),
+          scratchPass("filter01", "shadow_denoiser_filter.pair_list"),
+          listFilter2}},
+        {"one classification dispatch, three filter dispatches",
+         {true, true, false, false, false},
+         {{"classify",
+           {"shadow_denoiser_classify.list", "shadow_denoiser_classify.list_r16f",
+            "shadow_denoiser_classify.list_r8"}},
+          scratchPass("filter0", "shadow_denoiser_filter.list"),
+          scratchPass("filter1", "shadow_denoiser_filter.list"),
+          listFilter2}},
+        {"fused with tile skipping",
+         {true, true, true, true, true},
+         {plainClassify,
+          {"filter",
+           {"shadow_denoiser_filter.fused_skip", "shadow_denoiser_filter.fused_skip_r16f",
+            "shadow_denoiser_filter.fused_skip_r8"}}}},
+        {"fused without tile skipping",
+         {true, false, true, true, true},
+         {plainClassify,
+          {"filter",
+           {"shadow_denoiser_filter.fused", "shadow_denoiser_filter.fused_r16f",
+            "shadow_denoiser_filter.fused_r8"}}}},
+        {"paired without tile skipping",
+         {true, false, true, true, false},
+         {plainClassify, scratchPass("filter01", "shadow_denoiser_filter.pair"), plainFilter2}},
+        {"three filter dispatches without classification",
+         {false, true, true, false, false},
+         {scratchPass("filter0", "shadow_denoiser_filter"), scratchPass("filter1", "shadow_denoiser_filter"),
+          plainFilter2}},
+    };
+    const Format formats[] = {Format::RG32Float, Format::R16Float, Format::R8Unorm};
+    for (std::size_t f = 0; f < std::size(formats); ++f)
+        for (const PlanVariant& variant : variants) {
+            INFO(variant.what << ", format " << f);
+            desc.outputFormat = formats[f];
+            desc.classify = variant.flags.classify;
+            desc.skipClearedTiles = variant.flags.skipClearedTiles;
+            desc.splitClassify = variant.flags.splitClassify;
+            desc.pairedFilter = variant.flags.pairedFilter;
+            desc.fusedFilter = variant.flags.fusedFilter;
+            REQUIRE(planShadowDenoiser(desc, plan, &error) == Result::Ok);
+            REQUIRE(findImage(plan, "shadow_output") != nullptr);
+            CHECK(findImage(plan, "shadow_output")->format == formats[f]);
+            // Only the final output changes: the scratch images stay (shadow, variance).
+            for (const char* scratch : {"shadow_scratch0", "shadow_scratch1"})
+                if (const ImageDesc* image = findImage(plan, scratch))
+                    CHECK(image->format == Format::RG32Float);
+            CHECK(plan.passes.size() == 1 + variant.passes.size());
+            for (const ExpectedPass& expected : variant.passes) {
+                const Pass* pass = findPass(plan, expected.name);
+                REQUIRE(pass != nullptr);
+                CHECK(pass->pipeline == expected.pipelines[f]);
+                CHECK_FALSE(core::findShader(pass->pipeline).empty()); // the permutation is built
+                bool writesOutput = false;
+                for (const ResourceUse& use : pass->uses) writesOutput |= use.resource == "shadow_output";
+                CHECK(writesOutput == expected.writesOutput());
+            }
+        }
+    // Without the filter there is no output image to format.
+    desc.filter = false;
+    desc.classify = true;
+    REQUIRE(planShadowDenoiser(desc, plan, &error) == Result::Ok);
+    CHECK(findImage(plan, "shadow_output") == nullptr);
+    CHECK(findPass(plan, "classify")->pipeline == "shadow_denoiser_classify");
+}
+
+TEST_CASE("shadow plan: an unsupported output format is refused", "[plan]") {
+    ShadowDenoiserDesc desc;
+    desc.size = {16, 16};
+    EffectPlan plan;
+    for (Format format :
+         {Format::RGBA32Float, Format::R32Float, Format::RG16Float, Format::RGBA8Unorm, Format::R32Uint}) {
+        desc.outputFormat = format;
+        std::string error;
+        CHECK(planShadowDenoiser(desc, plan, &error) == Result::InvalidArgument);
+        CHECK(error.find("shadow denoiser") == 0);
+        CHECK(error.find("outputFormat") != std::string::npos);
+        CHECK(error.find('\n') == std::string::npos);
+    }
 }
 
 TEST_CASE("shadow plan: invalid descriptions are refused", "[plan]") {

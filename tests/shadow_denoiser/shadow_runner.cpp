@@ -56,4 +56,42 @@ ShadowInputs makeShadowInputs(std::uint32_t width, std::uint32_t height, std::ui
     return inputs;
 }
 
+// The previous depth is 40% farther in the left quarter. The motion is deliberately not a
+// multiple of half a pixel: with (1.5, -0.5) every previous position lands exactly on a pixel edge, where the
+// history pixel index is discontinuous and a one-ulp difference in GPU arithmetic (seen on NVIDIA) picks the
+// neighbour's history.
+ShadowInputs movingShadowInputs(std::uint32_t width, std::uint32_t height, std::uint32_t seed) {
+    ShadowInputs inputs = makeShadowInputs(width, height, seed);
+    for (std::size_t i = 0; i < inputs.motion.size(); i += 2) {
+        inputs.motion[i] = 1.3f / static_cast<float>(width);
+        inputs.motion[i + 1] = -0.7f / static_cast<float>(height);
+    }
+    for (std::uint32_t y = 0; y < height; ++y)
+        for (std::uint32_t x = 0; x < width / 4; ++x) {
+            float& d = inputs.previousDepth[std::size_t{y} * width + x];
+            if (d < 1.0f) d = std::min(d + 0.02f, 0.999f);
+        }
+    return inputs;
+}
+
+void addUniformBands(ShadowInputs& inputs, std::uint32_t width, std::uint32_t height) {
+    for (std::uint32_t y = 0; y < height; ++y)
+        for (std::uint32_t x = 0; x < width; ++x) {
+            float& v = inputs.visibility[std::size_t{y} * width + x];
+            if (x < 12) v = 1.0f;
+            if (x >= 40) v = 0.0f;
+        }
+}
+
+ShadowOutputs runThreeFrames(ShadowDenoiserDesc desc, const ShadowInputs& inputs) {
+    ShadowRunner runner(desc);
+    ShadowOutputs last;
+    for (std::uint32_t frame = 0; frame < 3; ++frame) {
+        desc.frameIndex = frame;
+        desc.resetHistory = frame == 0;
+        last = runner.run(desc, inputs);
+    }
+    return last;
+}
+
 } // namespace glint::test

@@ -2,6 +2,7 @@
 // main. Engines read this file as the integration example for
 // glint/shadow_denoiser/glint_shadow_denoiser_classify.hlsli.
 #include "entry/common/glint_entry_common.hlsli"
+#include "entry/shadow_denoiser/shadow_denoiser_output.hlsli"
 #include "glint/shadow_denoiser/glint_shadow_denoiser_constants.h"
 #include "glint/shadow_denoiser/glint_shadow_denoiser_classify.hlsli"
 
@@ -20,9 +21,11 @@
 #if GLINT_SHADOW_DENOISER_TILE_LIST
 // Permutations "list", "tiles" and "listed": the filter's tile list (indirect arguments first
 // written by prepare); "tiles" appends to it, "listed" (dispatched from it) reads it.
+// g_glint_filter_output is the final output ("shadow_output"), in the format
+// GLINT_SHADOW_DENOISER_OUTPUT_FORMAT picks (shadow_denoiser_output.hlsli).
 [[vk::binding(11, 0)]] RWStructuredBuffer<uint> g_glint_filter_args;
 [[vk::binding(12, 0)]] RWStructuredBuffer<uint> g_glint_filter_tiles;
-[[vk::binding(13, 0)]] GLINT_IMAGE_FORMAT(rg32f) RWTexture2D<float2> g_glint_filter_output;
+[[vk::binding(13, 0)]] GLINT_SHADOW_DENOISER_OUTPUT_IMAGE g_glint_filter_output;
 
 void GLINT_SHADOW_DENOISER_AppendFilterTile(uint2 tile)
 {
@@ -33,7 +36,7 @@ void GLINT_SHADOW_DENOISER_AppendFilterTile(uint2 tile)
 
 void GLINT_SHADOW_DENOISER_StoreClearOutput(int2 pixel, float2 value)
 {
-    g_glint_filter_output[pixel] = value;
+    g_glint_filter_output[pixel] = GLINT_SHADOW_DENOISER_OUTPUT_TEXEL(value);
 }
 
 uint2 GLINT_SHADOW_DENOISER_LoadFilterTile(uint listIndex)

@@ -7,7 +7,10 @@
 // GLINT_SHADOW_DENOISER_TILE_LIST=1 dispatches indirectly over the tiles classification listed;
 // GLINT_SHADOW_DENOISER_TILE_SKIP=1 (fused only) skips groups of cleared tiles. Both count the
 // tiles they filter. GLINT_SHADOW_DENOISER_FILTER_PAIR=1 runs steps 1 and 2 in one dispatch.
+// GLINT_SHADOW_DENOISER_OUTPUT_FORMAT (shadow_denoiser_output.hlsli) picks the output's format:
+// rg32f for the scratch images, any for the final output (the plan picks the last step's).
 #include "entry/common/glint_entry_common.hlsli"
+#include "entry/shadow_denoiser/shadow_denoiser_output.hlsli"
 #include "glint/shadow_denoiser/glint_shadow_denoiser_constants.h"
 #include "glint/shadow_denoiser/glint_shadow_denoiser_filter.hlsli"
 
@@ -15,7 +18,7 @@
 [[vk::binding(1, 0)]] Texture2D<float2> g_glint_filter_input;
 [[vk::binding(2, 0)]] Texture2D<float> g_glint_depth;
 [[vk::binding(3, 0)]] Texture2D<float4> g_glint_normals;
-[[vk::binding(4, 0)]] GLINT_IMAGE_FORMAT(rg32f) RWTexture2D<float2> g_glint_filter_output;
+[[vk::binding(4, 0)]] GLINT_SHADOW_DENOISER_OUTPUT_IMAGE g_glint_filter_output;
 #if GLINT_SHADOW_DENOISER_TILE_LIST
 [[vk::binding(7, 0)]] StructuredBuffer<uint> g_glint_filter_tiles;
 
@@ -59,7 +62,7 @@ float3 GLINT_SHADOW_DENOISER_LoadNormal(int2 pixel)
 
 void GLINT_SHADOW_DENOISER_StoreFiltered(int2 pixel, float2 meanVariance)
 {
-    g_glint_filter_output[pixel] = meanVariance;
+    g_glint_filter_output[pixel] = GLINT_SHADOW_DENOISER_OUTPUT_TEXEL(meanVariance);
 }
 
 #if GLINT_SHADOW_DENOISER_FILTER_FUSED

@@ -22,7 +22,8 @@
 // With GLINT_SHADOW_DENOISER_TILE_LIST=1 (for the filter's tile list):
 //   void   GLINT_SHADOW_DENOISER_AppendFilterTile(uint2 tile);   once per tile that is not clear
 //   void   GLINT_SHADOW_DENOISER_StoreClearOutput(int2 pixel, float2 value);
-//          the filter's final (shadow, variance) of a clear tile's pixel; its
+//          the filter's final (shadow, variance) of a clear tile's pixel (a one-channel output
+//          may keep .x only); its
 //          StoreShadowVariance is then skipped, as with GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_SKIP_CLEAR.
 // Every loaded value may be non-finite: such histories count as missing, such depths as sky.
 //

@@ -14,7 +14,8 @@
 //       Unpacked world-space normal (need not be unit length). Non-finite or zero normals
 //       make the pixel accept no neighbour (only its own sample).
 //   void   GLINT_SHADOW_DENOISER_StoreFiltered(int2 pixel, float2 meanVariance);
-//       Writes the result; the final pass writes (remapped mean, variance).
+//       Writes the result; the final pass writes (remapped mean, variance). The image's format
+//       is the integration's choice: a one-channel output may keep .x only.
 //
 // Tile skipping (tile metadata from the classification pass) takes these callbacks too:
 //   uint   GLINT_SHADOW_DENOISER_LoadTileMetadata(uint tileIndex);   one word per 8x8 tile

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <initializer_list>
+#include <string_view>
 
 namespace glint {
 namespace {
@@ -21,6 +22,19 @@ bool usesTileList(const ShadowDenoiserDesc& desc) {
 
 Result invalid(std::string* error, const std::string& message) {
     return core::invalidArgument(error, "shadow denoiser", message);
+}
+
+bool supportedOutputFormat(Format format) {
+    return format == Format::R8Unorm || format == Format::R16Float || format == Format::RG32Float;
+}
+
+// The permutation of `pipeline` that stores the final output in desc.outputFormat
+// (hlsl/CMakeLists.txt): "_r16f"/"_r8" after a suffix, ".r16f"/".r8" on a bare module name.
+// Only the passes that write "shadow_output" take it; the scratch images stay RG32F.
+std::string outputPipeline(const ShadowDenoiserDesc& desc, const std::string& pipeline) {
+    if (desc.outputFormat == Format::RG32Float) return pipeline;
+    const char* format = desc.outputFormat == Format::R8Unorm ? "r8" : "r16f";
+    return pipeline + (pipeline.find('.') == std::string::npos ? "." : "_") + format;
 }
 
 bool positiveFinite(float value) {
@@ -93,6 +107,7 @@ Pass filterPass(const ShadowDenoiserDesc& desc, std::uint32_t index, const char*
         // Classification wrote the clear tiles of the output; this pass adds the listed ones.
         if (index == 2) pass.uses[3].access = Access::ReadWrite;
     }
+    if (std::string_view(output) == "shadow_output") pass.pipeline = outputPipeline(desc, pass.pipeline);
     return pass;
 }
 
@@ -100,8 +115,9 @@ Pass filterPass(const ShadowDenoiserDesc& desc, std::uint32_t index, const char*
 Pass fusedFilterPass(const ShadowDenoiserDesc& desc, const char* input) {
     Pass pass = filterPass(desc, 2, input, "shadow_output");
     pass.name = "filter";
-    pass.pipeline = desc.classify && desc.skipClearedTiles ? "shadow_denoiser_filter.fused_skip"
-                                                           : "shadow_denoiser_filter.fused";
+    pass.pipeline =
+        outputPipeline(desc, desc.classify && desc.skipClearedTiles ? "shadow_denoiser_filter.fused_skip"
+                                                                    : "shadow_denoiser_filter.fused");
     pass.groupSize[0] = GLINT_SHADOW_DENOISER_FILTER_FUSED_TILE;
     pass.groupSize[1] = GLINT_SHADOW_DENOISER_FILTER_FUSED_TILE;
     pass.dispatch = core::gridFor(desc.size.width, desc.size.height, 1, pass.groupSize);
@@ -144,7 +160,8 @@ Pass classifyPass(const ShadowDenoiserDesc& desc, Extent2D tiles) {
                  {"g_glint_shadow_variance", "shadow_scratch0", Access::Write},
                  {"g_glint_moments", odd ? "shadow_moments1" : "shadow_moments0", Access::Write}};
     if (usesTileList(desc)) {
-        pass.pipeline = "shadow_denoiser_classify.list";
+        // It writes the clear tiles' final output.
+        pass.pipeline = outputPipeline(desc, "shadow_denoiser_classify.list");
         pass.uses.push_back({"g_glint_filter_args", "shadow_filter_args", Access::ReadWrite});
         pass.uses.push_back({"g_glint_filter_tiles", "shadow_filter_tiles", Access::Write});
         pass.uses.push_back({"g_glint_filter_output", "shadow_output", Access::Write});
@@ -166,7 +183,7 @@ void keepBindings(Pass& pass, std::initializer_list<const char*> bindings) {
 void pushSplitClassify(const ShadowDenoiserDesc& desc, Extent2D tiles, EffectPlan& plan) {
     const Pass whole = classifyPass(desc, tiles);
     Pass classify = whole;
-    classify.pipeline = "shadow_denoiser_classify.tiles";
+    classify.pipeline = outputPipeline(desc, "shadow_denoiser_classify.tiles");
     classify.groupSize[2] = GLINT_SHADOW_DENOISER_CLASSIFY_TILE_BLOCKS;
     classify.dispatch = DirectDispatch{
         core::divideRoundUp(desc.size.width, 8 * GLINT_SHADOW_DENOISER_CLASSIFY_TILE_BLOCKS_X),
@@ -222,6 +239,9 @@ Result planShadowDenoiser(const ShadowDenoiserDesc& desc, EffectPlan& plan, std:
     if (!std::isfinite(desc.normalUnpackMul) || !std::isfinite(desc.normalUnpackAdd))
         return invalid(error, "normal unpack factors must be finite");
 
+    if (!supportedOutputFormat(desc.outputFormat))
+        return invalid(error, "outputFormat must be R8Unorm, R16Float or RG32Float");
+
     if (!core::isFinite(desc.reprojection) || !core::isFinite(desc.inverseViewProjection))
         return invalid(error, "camera matrices must be finite");
 
@@ -250,7 +270,7 @@ Result planShadowDenoiser(const ShadowDenoiserDesc& desc, EffectPlan& plan, std:
             plan.passes.push_back(classifyPass(desc, tiles));
     }
     if (!desc.filter) return Result::Ok;
-    plan.images.push_back({"shadow_output", w, h, 1, Format::RG32Float});
+    plan.images.push_back({"shadow_output", w, h, 1, desc.outputFormat});
     if (desc.classify && desc.skipClearedTiles) plan.buffers.push_back({"shadow_filter_work", 4, false});
     if (usesTileList(desc)) {
         const std::uint64_t tileCount =
