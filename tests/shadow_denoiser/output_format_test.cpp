@@ -18,13 +18,21 @@ using namespace glint;
 
 namespace {
 
-// Whether `stored` is what storing x in `format` may give. R8: clamp(x, 0, 1) rounded to the
-// nearest of 256 steps (Vulkan's "should round to nearest"; float slack on the CPU side). R16F:
-// Vulkan leaves the rounding mode of float conversions undefined ("rounded to one or the
-// other", fundamentals-fp-conversion) and lavapipe truncates, so either half next to x.
+// Whether `stored` is what storing x in `format` may give. R8: one of the two 8-bit steps
+// next to clamp(x, 0, 1) (Vulkan's float-to-normalized conversion returns either of the two
+// closest values and only recommends the nearer: lavapipe rounds to nearest; the H100 driver
+// 580.159.04 stored the farther one for 21 of the 53x37 pixels, e.g. 240/255 for 240.51/255,
+// as an fp16 intermediate would, not truncation); the 1e-4 step of slack covers the CPU's float
+// arithmetic. R16F: Vulkan leaves the rounding mode of float conversions undefined ("rounded
+// to one or the other", fundamentals-fp-conversion) and lavapipe truncates, so either half
+// next to x.
 bool storedAs(Format format, float x, float stored) {
-    if (format == Format::R8Unorm)
-        return std::abs(stored - std::clamp(x, 0.0f, 1.0f)) <= 0.5f / 255.0f + 1e-6f;
+    if (format == Format::R8Unorm) {
+        const float steps = std::clamp(x, 0.0f, 1.0f) * 255.0f;
+        const float step = std::round(stored * 255.0f);
+        return std::abs(stored * 255.0f - step) <= 1e-3f && step >= std::floor(steps - 1e-4f) &&
+               step <= std::ceil(steps + 1e-4f);
+    }
     const std::uint16_t nearest = gpu::floatToHalf(x);
     const float rounded = gpu::halfToFloat(nearest);
     if (stored == rounded) return true;
