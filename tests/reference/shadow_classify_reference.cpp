@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace glint::reference {
 namespace {
@@ -53,10 +54,11 @@ ShadowClassifyOutputs shadowClassify(const ShadowClassifyInputs& in) {
         const std::uint32_t centre = (word(x >> 3, row >> 2) >> shift) & 0xFFu;
         const std::uint32_t right = (word((x >> 3) + 1, row >> 2) >> shift) & 0xFFu;
         const std::uint32_t window = (left | (centre << 8) | (right << 16)) >> (x & 7);
-        float sum = 0.0f;
-        for (int k = 0; k <= 16; ++k)
-            if ((window >> k) & 1u) sum += kGaussian[std::abs(k - 8)];
-        return sum;
+        // The Gaussian weight of the lit and of the shadowed samples, each summed: 1 - lit as a
+        // difference is ill-conditioned when only a few edge samples are shadowed.
+        float lit = 0.0f, shadowed = 0.0f;
+        for (int k = 0; k <= 16; ++k) ((window >> k) & 1u ? lit : shadowed) += kGaussian[std::abs(k - 8)];
+        return std::pair{lit, shadowed};
     };
 
     auto sampleBit = [&](int x, int y) {
@@ -141,10 +143,15 @@ ShadowClassifyOutputs shadowClassify(const ShadowClassifyInputs& in) {
                         continue;
                     }
                     if (!receiver) continue;
-                    float mean = 0.0f;
-                    for (int r = -8; r <= 8; ++r) mean += kGaussian[std::abs(r)] * rowSum(x, y + r);
-                    mean = std::clamp(mean, 0.0f, 1.0f);
-                    const float spatialVariance = std::max(mean - mean * mean, 0.0f);
+                    float lit = 0.0f, shadowed = 0.0f;
+                    for (int r = -8; r <= 8; ++r) {
+                        const auto [rowLit, rowShadowed] = rowSum(x, y + r);
+                        lit += kGaussian[std::abs(r)] * rowLit;
+                        shadowed += kGaussian[std::abs(r)] * rowShadowed;
+                    }
+                    const float mean = std::clamp(lit, 0.0f, 1.0f);
+                    // mean (1 - mean), with 1 - mean summed as such.
+                    const float spatialVariance = std::max(mean * std::clamp(shadowed, 0.0f, 1.0f), 0.0f);
                     const float spatialSigma = std::sqrt(spatialVariance);
                     const float sample =
                         ((word(x >> 3, y >> 2) >> ((y & 3) * 8 + (x & 7))) & 1u) ? 1.0f : 0.0f;
