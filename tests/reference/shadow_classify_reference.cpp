@@ -7,8 +7,11 @@
 namespace glint::reference {
 namespace {
 
-constexpr float kGaussian[9] = {0.11082929f, 0.10679958f, 0.09556847f, 0.07941266f, 0.06127663f,
-                                0.04390662f, 0.02921428f, 0.01805055f, 0.01035657f};
+// The shader's weights: exp(-3 i^2 / 81) normalized, rounded to multiples of 2^-20 so that a
+// row's 17 sum to exactly 1 (row sums and their complements are exact in float).
+constexpr float kGaussian[9] = {0.11083221435546875f,    0.10679912567138671875f, 0.09556865692138671875f,
+                                0.0794124603271484375f,  0.06127643585205078125f, 0.04390621185302734375f,
+                                0.02921390533447265625f, 0.01805019378662109375f, 0.010356903076171875f};
 
 float viewDepthOf(float d, const float c[3]) {
     if (!std::isfinite(d) || !(d > 1e-6f && d < 1.0f - 1e-6f)) return -1.0f;
@@ -54,11 +57,13 @@ ShadowClassifyOutputs shadowClassify(const ShadowClassifyInputs& in) {
         const std::uint32_t centre = (word(x >> 3, row >> 2) >> shift) & 0xFFu;
         const std::uint32_t right = (word((x >> 3) + 1, row >> 2) >> shift) & 0xFFu;
         const std::uint32_t window = (left | (centre << 8) | (right << 16)) >> (x & 7);
-        // The Gaussian weight of the lit and of the shadowed samples, each summed: 1 - lit as a
-        // difference is ill-conditioned when only a few edge samples are shadowed.
-        float lit = 0.0f, shadowed = 0.0f;
-        for (int k = 0; k <= 16; ++k) ((window >> k) & 1u ? lit : shadowed) += kGaussian[std::abs(k - 8)];
-        return std::pair{lit, shadowed};
+        // The Gaussian weight of the lit and of the shadowed samples, both exact (kGaussian); the
+        // second is summed down the column on its own, since 1 - mean is ill-conditioned when
+        // only a few edge samples are shadowed.
+        float lit = 0.0f;
+        for (int k = 0; k <= 16; ++k)
+            if ((window >> k) & 1u) lit += kGaussian[std::abs(k - 8)];
+        return std::pair{lit, 1.0f - lit};
     };
 
     auto sampleBit = [&](int x, int y) {

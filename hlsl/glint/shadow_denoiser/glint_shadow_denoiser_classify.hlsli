@@ -111,9 +111,19 @@ float GLINT_SHADOW_DENOISER_ClassifyViewDepth(float depth, float4 viewDepth)
     return GLINT_IsFinite(z) && z > 0.0 ? z : -1.0;
 }
 
-// Normalized 1D weights w(i) = exp(-3 i^2 / 81) / sum_{j=-8..8} exp(-3 j^2 / 81), i = 0..8.
-static const float GLINT_SHADOW_DENOISER_GAUSSIAN_17[9] = {0.11082929, 0.10679958, 0.09556847, 0.07941266, 0.06127663,
-                                                           0.04390662, 0.02921428, 0.01805055, 0.01035657};
+// 1D weights w(i) = exp(-3 i^2 / 81) / sum_{j=-8..8} exp(-3 j^2 / 81), i = 0..8, rounded to
+// multiples of 2^-20 (w(0) adjusted by 3 units) so that the 17 of a row sum to exactly 1: every
+// partial row sum of them is then exact in float, whatever the order or FMA contraction, and so
+// is 1 - a row sum (GLINT_SHADOW_DENOISER_RowSum).
+static const float GLINT_SHADOW_DENOISER_GAUSSIAN_17[9] = {0.11083221435546875,
+                                                           0.10679912567138671875,
+                                                           0.09556865692138671875,
+                                                           0.0794124603271484375,
+                                                           0.06127643585205078125,
+                                                           0.04390621185302734375,
+                                                           0.02921390533447265625,
+                                                           0.01805019378662109375,
+                                                           0.010356903076171875};
 
 float GLINT_SHADOW_DENOISER_GaussianWeight(int i)
 {
@@ -129,13 +139,14 @@ uint GLINT_SHADOW_DENOISER_BlockWord(uint q, uint2 tile, int dx, int tileY)
 }
 
 // Horizontal 17-tap sums for pixel row y (clamped to the image) centred on column x, a column
-// of block q (8x8 tile `tile`): the Gaussian weight of the lit and of the shadowed samples.
-// Both are summed, not the second taken as 1 - the first: the spatial variance is
+// of block q (8x8 tile `tile`): the Gaussian weight of the lit and of the shadowed samples,
+// both exact (the weights are multiples of 2^-20 summing to 1). The spatial variance is
 // mean (1 - mean), and in a window that is lit but for a few samples at its edge 1 - mean is
-// ~1e-5, so its rounding as a difference (which depends on how a compiler contracts the sum
-// into FMAs) changed that variance, the clamp radius and the history length by up to 1 % on
-// NVIDIA against the CPU reference. Mask tiles outside the image clamp to the border tile (as
-// the 18 words do).
+// ~1e-5: taken as the difference of the 17x17 sum from 1, its rounding (which depends on how a
+// compiler contracts the sums into FMAs) changed that variance, the clamp radius and the history
+// length by up to 1 % on NVIDIA against the CPU reference; summed from exact row complements it
+// is accurate in itself. Mask tiles outside the image clamp to the border tile (as the 18 words
+// do).
 float2 GLINT_SHADOW_DENOISER_RowSum(uint q, uint2 tile, int x, int y, uint2 inputSize)
 {
     int row = clamp(y, 0, int(inputSize.y) - 1);
@@ -145,14 +156,10 @@ float2 GLINT_SHADOW_DENOISER_RowSum(uint q, uint2 tile, int x, int y, uint2 inpu
     uint centre = (GLINT_SHADOW_DENOISER_BlockWord(q, tile, 0, tileY) >> shift) & 0xFFu;
     uint right = (GLINT_SHADOW_DENOISER_BlockWord(q, tile, 1, tileY) >> shift) & 0xFFu;
     uint window = (left | (centre << 8) | (right << 16)) >> uint(x & 7);
-    float2 sums = float2(0.0, 0.0);
+    float lit = 0.0;
     [unroll] for (int k = 0; k <= 16; ++k)
-    {
-        float weight = GLINT_SHADOW_DENOISER_GaussianWeight(abs(k - 8));
-        bool lit = ((window >> uint(k)) & 1u) != 0u;
-        sums += float2(lit ? weight : 0.0, lit ? 0.0 : weight);
-    }
-    return sums;
+        lit += ((window >> uint(k)) & 1u) != 0u ? GLINT_SHADOW_DENOISER_GaussianWeight(abs(k - 8)) : 0.0;
+    return float2(lit, 1.0 - lit);
 }
 
 // Last frame's (mean, M2, n, accumulated shadow) of an in-image pixel. With REBUILD_CLEAR a
