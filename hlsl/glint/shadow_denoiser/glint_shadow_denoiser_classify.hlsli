@@ -88,9 +88,9 @@ groupshared uint g_glint_shadow_denoiser_classify_and[GLINT_SHADOW_DENOISER_CLAS
 // Those 18 words (mask tiles tile.x - 1 .. + 1, 2 tile.y - 2 .. + 3, clamped to the mask):
 // every mask bit the 17x17 statistics and the pixel's own sample read.
 groupshared uint g_glint_shadow_denoiser_classify_words[GLINT_SHADOW_DENOISER_CLASSIFY_BLOCKS * 18];
-// Horizontal (lit, shadowed) sums of rows blockOrigin.y - 8 .. blockOrigin.y + 15 (24 x 8
-// columns); see GLINT_SHADOW_DENOISER_RowSum.
-groupshared float2 g_glint_shadow_denoiser_classify_rows[GLINT_SHADOW_DENOISER_CLASSIFY_BLOCKS * 24 * 8];
+// Horizontal lit sums of rows blockOrigin.y - 8 .. blockOrigin.y + 15 (24 x 8 columns); see
+// GLINT_SHADOW_DENOISER_RowSum (the shadowed sum is 1 - this, exactly).
+groupshared float g_glint_shadow_denoiser_classify_rows[GLINT_SHADOW_DENOISER_CLASSIFY_BLOCKS * 24 * 8];
 // Smallest and largest packed offset (previous pixel - pixel) of the block's pixels that run
 // the anti-lag test: equal when the block moved by one whole-pixel offset (always, for a still
 // camera), and the test's windows then overlap exactly.
@@ -138,16 +138,16 @@ uint GLINT_SHADOW_DENOISER_BlockWord(uint q, uint2 tile, int dx, int tileY)
     return g_glint_shadow_denoiser_classify_words[q * 18u + uint((tileY - int(tile.y * 2u) + 2) * 3 + dx + 1)];
 }
 
-// Horizontal 17-tap sums for pixel row y (clamped to the image) centred on column x, a column
-// of block q (8x8 tile `tile`): the Gaussian weight of the lit and of the shadowed samples,
-// both exact (the weights are multiples of 2^-20 summing to 1). The spatial variance is
-// mean (1 - mean), and in a window that is lit but for a few samples at its edge 1 - mean is
-// ~1e-5: taken as the difference of the 17x17 sum from 1, its rounding (which depends on how a
-// compiler contracts the sums into FMAs) changed that variance, the clamp radius and the history
-// length by up to 1 % on NVIDIA against the CPU reference; summed from exact row complements it
-// is accurate in itself. Mask tiles outside the image clamp to the border tile (as the 18 words
-// do).
-float2 GLINT_SHADOW_DENOISER_RowSum(uint q, uint2 tile, int x, int y, uint2 inputSize)
+// Horizontal 17-tap sum for pixel row y (clamped to the image) centred on column x, a column
+// of block q (8x8 tile `tile`): the Gaussian weight of the lit samples, exact, and so is the
+// shadowed samples' weight, 1 minus it (the weights are multiples of 2^-20 summing to 1). The
+// spatial variance is mean (1 - mean), and in a window that is lit but for a few samples at its
+// edge 1 - mean is ~1e-5: taken as the difference of the 17x17 sum from 1, its rounding (which
+// depends on how a compiler contracts the sums into FMAs) changed that variance, the clamp radius
+// and the history length by up to 1 % on NVIDIA against the CPU reference; summed from the exact
+// row complements it is accurate in itself. Mask tiles outside the image clamp to the border
+// tile (as the 18 words do).
+float GLINT_SHADOW_DENOISER_RowSum(uint q, uint2 tile, int x, int y, uint2 inputSize)
 {
     int row = clamp(y, 0, int(inputSize.y) - 1);
     int tileY = row >> 2;
@@ -159,7 +159,7 @@ float2 GLINT_SHADOW_DENOISER_RowSum(uint q, uint2 tile, int x, int y, uint2 inpu
     float lit = 0.0;
     [unroll] for (int k = 0; k <= 16; ++k)
         lit += ((window >> uint(k)) & 1u) != 0u ? GLINT_SHADOW_DENOISER_GaussianWeight(abs(k - 8)) : 0.0;
-    return float2(lit, 1.0 - lit);
+    return lit;
 }
 
 // Last frame's (mean, M2, n, accumulated shadow) of an in-image pixel. With REBUILD_CLEAR a
@@ -516,8 +516,10 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint3 groupThreadId, GLINT_Sh
     // shadowed weight, each summed (GLINT_SHADOW_DENOISER_RowSum).
     float2 litShadowed = float2(0.0, 0.0);
     [unroll] for (int r = -8; r <= 8; ++r)
-        litShadowed += GLINT_SHADOW_DENOISER_GaussianWeight(abs(r)) *
-                       g_glint_shadow_denoiser_classify_rows[(q * 24u + uint(int(local.y) + r + 8)) * 8u + local.x];
+    {
+        float rowLit = g_glint_shadow_denoiser_classify_rows[(q * 24u + uint(int(local.y) + r + 8)) * 8u + local.x];
+        litShadowed += GLINT_SHADOW_DENOISER_GaussianWeight(abs(r)) * float2(rowLit, 1.0 - rowLit);
+    }
     float mean = clamp(litShadowed.x, 0.0, 1.0);
     float spatialVariance = max(mean * clamp(litShadowed.y, 0.0, 1.0), 0.0);
     float spatialSigma = sqrt(spatialVariance);
