@@ -91,9 +91,9 @@ groupshared uint g_glint_shadow_denoiser_classify_words[GLINT_SHADOW_DENOISER_CL
 // Horizontal lit sums of rows blockOrigin.y - 8 .. blockOrigin.y + 15 (24 x 8 columns); see
 // GLINT_SHADOW_DENOISER_RowSum (the shadowed sum is 1 - this, exactly).
 groupshared float g_glint_shadow_denoiser_classify_rows[GLINT_SHADOW_DENOISER_CLASSIFY_BLOCKS * 24 * 8];
-// Smallest and largest packed offset (previous pixel - pixel) of the block's pixels that run
-// the anti-lag test: equal when the block moved by one whole-pixel offset (always, for a still
-// camera), and the test's windows then overlap exactly.
+// Smallest and largest packed offset (previous pixel - pixel) of the block's candidate pixels
+// for the anti-lag test (GLINT_SHADOW_DENOISER_AntiLagWindow): equal when the block moved by one
+// whole-pixel offset (always, for a still camera), and the test's windows then overlap exactly.
 groupshared uint g_glint_shadow_denoiser_classify_offset_min[GLINT_SHADOW_DENOISER_CLASSIFY_BLOCKS];
 groupshared uint g_glint_shadow_denoiser_classify_offset_max[GLINT_SHADOW_DENOISER_CLASSIFY_BLOCKS];
 // Anti-lag terms (GLINT_SHADOW_DENOISER_AntiLagTexel) of the block plus a 2-pixel apron.
