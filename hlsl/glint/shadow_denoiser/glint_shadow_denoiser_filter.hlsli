@@ -122,10 +122,16 @@ uint GLINT_SHADOW_DENOISER_FilterSlot(int2 pixel, int2 spanOrigin, uint2 inputSi
 }
 
 // Loads the (clamped) pixel of every span slot: sanitized (mean, variance) into value buffer 0,
-// (view depth or -1, unit normal) into the geometry.
+// (view depth or -1, unit normal) into the geometry. With the tile list, a slot whose value is
+// fixed (GLINT_SHADOW_DENOISER_FixedValue: a non-receiver, or a receiver in a clear tile, which
+// neither classification nor the earlier passes stored) takes that value here, from its tile's
+// metadata word loaded alongside the value: no second pass over the span and its barrier.
 void GLINT_SHADOW_DENOISER_LoadSpan(uint groupIndex, uint groupThreads, int2 spanOrigin, uint2 inputSize,
                                     float4 viewDepth)
 {
+#if GLINT_SHADOW_DENOISER_TILE_LIST
+    uint tilesX = (inputSize.x + GLINT_SHADOW_DENOISER_FILTER_TILE - 1) / GLINT_SHADOW_DENOISER_FILTER_TILE;
+#endif
     // At most 4 slots a thread (256 / 64, or 900 / 256 fused), unrolled so that their loads
     // are in flight together.
     [unroll] for (uint k = 0; k < 4u; ++k)
@@ -135,13 +141,21 @@ void GLINT_SHADOW_DENOISER_LoadSpan(uint groupIndex, uint groupThreads, int2 spa
             break;
         int2 local = int2(slot % GLINT_SHADOW_DENOISER_FILTER_SPAN, slot / GLINT_SHADOW_DENOISER_FILTER_SPAN);
         int2 pixel = clamp(spanOrigin + local, int2(0, 0), int2(inputSize) - 1);
-        g_glint_shadow_denoiser_filter_values[slot] =
-            GLINT_SHADOW_DENOISER_SanitizeMeanVariance(GLINT_SHADOW_DENOISER_LoadMeanVariance(pixel));
+        float2 value = GLINT_SHADOW_DENOISER_SanitizeMeanVariance(GLINT_SHADOW_DENOISER_LoadMeanVariance(pixel));
         // The normal is loaded whatever the depth, so that both loads are in flight together
         // (a load under `z > 0` would wait for the depth).
         float3 loadedNormal = GLINT_SHADOW_DENOISER_LoadNormal(pixel);
         float z = GLINT_SHADOW_DENOISER_ReceiverViewDepth(GLINT_SHADOW_DENOISER_LoadDepth(pixel), viewDepth);
         float3 n = z > 0.0 ? GLINT_SHADOW_DENOISER_SanitizeNormal(loadedNormal) : float3(0.0, 0.0, 0.0);
+#if GLINT_SHADOW_DENOISER_TILE_LIST
+        uint2 tile = uint2(pixel) / GLINT_SHADOW_DENOISER_FILTER_TILE;
+        uint metadata = GLINT_SHADOW_DENOISER_LoadTileMetadata(tile.y * tilesX + tile.x);
+        if (!(z > 0.0))
+            value = float2(0.0, 0.0);
+        else if ((metadata & GLINT_SHADOW_DENOISER_TILE_CLEAR) != 0u)
+            value = float2((metadata & GLINT_SHADOW_DENOISER_TILE_LIGHT) != 0u ? 1.0 : 0.0, 0.0);
+#endif
+        g_glint_shadow_denoiser_filter_values[slot] = value;
         g_glint_shadow_denoiser_filter_geometry[slot] = float4(z, n);
     }
 }
@@ -296,10 +310,9 @@ int2 GLINT_SHADOW_DENOISER_FilterBegin(uint2 groupId, uint groupIndex, uint2 inp
     spanOrigin = tileOrigin - GLINT_SHADOW_DENOISER_FILTER_APRON;
     GLINT_SHADOW_DENOISER_LoadSpan(groupIndex, 64u, spanOrigin, inputSize, viewDepth);
 #if GLINT_SHADOW_DENOISER_TILE_LIST
-    // Neighbouring clear tiles were not stored by classification or the earlier passes.
+    // Neighbouring clear tiles were not stored by classification or the earlier passes: their
+    // span slots were fixed by LoadSpan; the words stay for GLINT_SHADOW_DENOISER_FixedValue.
     GLINT_SHADOW_DENOISER_LoadSpanMetadata(groupIndex, spanOrigin, inputSize);
-    GroupMemoryBarrierWithGroupSync();
-    GLINT_SHADOW_DENOISER_FixClearInputs(groupIndex, 64u, spanOrigin, inputSize);
 #endif
     GroupMemoryBarrierWithGroupSync();
     return tileOrigin;
