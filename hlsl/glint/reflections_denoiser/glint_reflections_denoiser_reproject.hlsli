@@ -120,9 +120,11 @@ GLINT_RD_History GLINT_RD_EvaluateHistory(GLINT_RD_HistoryTaps taps, GLINT_RD_Su
         // match this pixel's (disocclusion weight >= 0.9).
         bool accepted = weight > 0.0 && taps.listed[t] && guides.z > 0.0 && GLINT_IsFinite(guides.z);
         float3 n = GLINT_RD_DecodeNormal(clamp(GLINT_RD_Finite3(float3(guides.xy, 0.0)).xy, -1.0, 1.0));
-        float fit = exp(-abs(1.0 - max(0.0, dot(n, surface.normal))) * 1.4) *
-                    exp(-abs(guides.z - expectedViewDepth) / expectedViewDepth);
-        accepted = accepted && fit >= 0.9;
+        // exp(-1.4 |1 - max(0, N.n)|) exp(-|z - z'| / z') >= 0.9, compared as exponents (no
+        // exp: the same test, monotonic): 1.4 |1 - max(0, N.n)| + |z - z'| / z' <= -ln 0.9.
+        float misfit = abs(1.0 - max(0.0, dot(n, surface.normal))) * 1.4 +
+                       abs(guides.z - expectedViewDepth) / expectedViewDepth;
+        accepted = accepted && misfit <= 0.10536052;
         // A rejected tap is weighted by an exact 0 (a select, not a branch): every term below
         // is made finite first (n always is), so it adds exactly nothing. Its raw values may be
         // NaN.
