@@ -122,14 +122,15 @@ uint GLINT_SHADOW_DENOISER_FilterSlot(int2 pixel, int2 spanOrigin, uint2 inputSi
 }
 
 // Loads the (clamped) pixel of every span slot: sanitized (mean, variance) into value buffer 0,
-// (view depth or -1, unit normal) into the geometry. With the tile list, a slot whose value is
-// fixed (GLINT_SHADOW_DENOISER_FixedValue: a non-receiver, or a receiver in a clear tile, which
-// neither classification nor the earlier passes stored) takes that value here, from its tile's
-// metadata word loaded alongside the value: no second pass over the span and its barrier.
+// (view depth or -1, unit normal) into the geometry. With tile skipping (the tile list or the
+// fused filter's), a slot whose value is fixed (GLINT_SHADOW_DENOISER_FixedValue: a
+// non-receiver, or a receiver in a clear tile, which neither classification nor the earlier
+// passes stored) takes that value here, from its tile's metadata word loaded alongside the
+// value: no second pass over the span and its barrier.
 void GLINT_SHADOW_DENOISER_LoadSpan(uint groupIndex, uint groupThreads, int2 spanOrigin, uint2 inputSize,
                                     float4 viewDepth)
 {
-#if GLINT_SHADOW_DENOISER_TILE_LIST
+#if GLINT_SHADOW_DENOISER_TILE_SKIP
     uint tilesX = (inputSize.x + GLINT_SHADOW_DENOISER_FILTER_TILE - 1) / GLINT_SHADOW_DENOISER_FILTER_TILE;
 #endif
     // At most 4 slots a thread (256 / 64, or 900 / 256 fused), unrolled so that their loads
@@ -147,7 +148,7 @@ void GLINT_SHADOW_DENOISER_LoadSpan(uint groupIndex, uint groupThreads, int2 spa
         float3 loadedNormal = GLINT_SHADOW_DENOISER_LoadNormal(pixel);
         float z = GLINT_SHADOW_DENOISER_ReceiverViewDepth(GLINT_SHADOW_DENOISER_LoadDepth(pixel), viewDepth);
         float3 n = z > 0.0 ? GLINT_SHADOW_DENOISER_SanitizeNormal(loadedNormal) : float3(0.0, 0.0, 0.0);
-#if GLINT_SHADOW_DENOISER_TILE_LIST
+#if GLINT_SHADOW_DENOISER_TILE_SKIP
         uint2 tile = uint2(pixel) / GLINT_SHADOW_DENOISER_FILTER_TILE;
         uint metadata = GLINT_SHADOW_DENOISER_LoadTileMetadata(tile.y * tilesX + tile.x);
         if (!(z > 0.0))
@@ -270,26 +271,6 @@ bool GLINT_SHADOW_DENOISER_FixedValue(int2 pixel, int2 spanOrigin, uint2 inputSi
 #endif
     return false;
 }
-
-#if GLINT_SHADOW_DENOISER_TILE_SKIP
-// Replaces the loaded inputs of clear tiles' pixels by their constants: with a tile list or the
-// fused filter, classification and the earlier passes do not store clear tiles.
-void GLINT_SHADOW_DENOISER_FixClearInputs(uint groupIndex, uint groupThreads, int2 spanOrigin, uint2 inputSize)
-{
-    // At most 4 slots a thread (256 / 64, or 900 / 256 fused), unrolled so that their loads
-    // are in flight together.
-    [unroll] for (uint k = 0; k < 4u; ++k)
-    {
-        uint slot = groupIndex + k * groupThreads;
-        if (slot >= GLINT_SHADOW_DENOISER_FILTER_SLOTS)
-            break;
-        int2 pixel = spanOrigin + int2(slot % GLINT_SHADOW_DENOISER_FILTER_SPAN, slot / GLINT_SHADOW_DENOISER_FILTER_SPAN);
-        float2 value;
-        if (all(uint2(pixel) < inputSize) && GLINT_SHADOW_DENOISER_FixedValue(pixel, spanOrigin, inputSize, value))
-            g_glint_shadow_denoiser_filter_values[slot] = value;
-    }
-}
-#endif
 
 #if !GLINT_SHADOW_DENOISER_FILTER_FUSED
 // The 8 x 8 filters' start: the group's tile (from the list with GLINT_SHADOW_DENOISER_TILE_LIST,
@@ -422,14 +403,10 @@ void GLINT_SHADOW_DENOISER_FilterFused(uint2 groupId, uint groupIndex, uint2 inp
         return;
     }
 #endif
+    // With tile skipping, classification need not store clear tiles when the fused filter
+    // follows (GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_SKIP_CLEAR): LoadSpan fixes their slots.
     GLINT_SHADOW_DENOISER_LoadSpan(groupIndex, 256u, spanOrigin, inputSize, viewDepth);
     GroupMemoryBarrierWithGroupSync();
-#if GLINT_SHADOW_DENOISER_TILE_SKIP
-    // Classification need not store clear tiles when the fused filter follows
-    // (GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_SKIP_CLEAR).
-    GLINT_SHADOW_DENOISER_FixClearInputs(groupIndex, 256u, spanOrigin, inputSize);
-    GroupMemoryBarrierWithGroupSync();
-#endif
 
     // Iterations 1 and 2: buffer 0 -> 1 over the tile +- 6, buffer 1 -> 0 over the tile +- 4.
     [loop] for (uint iteration = 0; iteration < 2u; ++iteration)
