@@ -5,7 +5,13 @@
 #include "vulkan/vk_check.h"
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <mutex>
 #include <stdexcept>
 #include <vector>
 
@@ -39,12 +45,35 @@ VkAccessFlags accessMaskFor(uint32_t flags) {
     return mask;
 }
 
+// A developer's override of the embedded modules (shader iteration, A/B timings on a device
+// without rebuilding the host): GLINT_SHADER_DIR=<dir> makes <dir>/<name>.spv replace the
+// module of that name where the file exists. The modules read are kept for the process's life,
+// since pipelines may be created from them at any time.
+std::span<const uint32_t> overriddenShader(std::string_view name) {
+    static const char* dir = std::getenv("GLINT_SHADER_DIR");
+    if (!dir || !*dir) return {};
+    static std::mutex mutex;
+    static std::map<std::string, std::vector<uint32_t>, std::less<>> loaded;
+    std::lock_guard lock(mutex);
+    if (auto it = loaded.find(name); it != loaded.end()) return it->second;
+    std::ifstream file(std::string(dir) + "/" + std::string(name) + ".spv", std::ios::binary);
+    if (!file) return {};
+    std::vector<char> bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    if (bytes.empty() || bytes.size() % 4 != 0)
+        throw std::runtime_error("GLINT_SHADER_DIR: " + std::string(name) + ".spv is not a SPIR-V module");
+    std::vector<uint32_t> words(bytes.size() / 4);
+    std::memcpy(words.data(), bytes.data(), bytes.size());
+    std::fprintf(stderr, "glint: pipeline %s from %s\n", std::string(name).c_str(), dir);
+    return loaded.emplace(std::string(name), std::move(words)).first->second;
+}
+
 ComputePipeline& pipelineFor(Executor& executor, const std::string& name) {
     auto it = executor.pipelines.find(name);
-    if (it == executor.pipelines.end())
-        it = executor.pipelines
-                 .emplace(name, createComputePipeline(*executor.device, name, executor.findShader(name)))
-                 .first;
+    if (it == executor.pipelines.end()) {
+        std::span<const uint32_t> code = overriddenShader(name);
+        if (code.empty()) code = executor.findShader(name);
+        it = executor.pipelines.emplace(name, createComputePipeline(*executor.device, name, code)).first;
+    }
     return it->second;
 }
 
