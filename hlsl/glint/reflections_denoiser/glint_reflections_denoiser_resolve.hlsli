@@ -73,22 +73,17 @@ void GLINT_RD_Resolve(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint2 
     }
     GroupMemoryBarrierWithGroupSync();
 
-    // 9x9 Gaussian statistics, separably (GLINT_RD_ColumnStatistics): two span rows a thread,
-    // then the column sums after the barrier. A neighbour that is not glossy holds (0, 0, 0, 0),
-    // so its a (0 or 1) selects it away exactly.
-    [unroll] for (uint part = 0; part < 2u; ++part)
+    // 9x9 Gaussian statistics, separably (GLINT_RD_AccumulateRowPair), the column sums after
+    // the barrier. A neighbour that is not glossy holds (0, 0, 0, 0): its a is the mask.
     {
-        uint row = local.y + part * GLINT_RD_TILE;
-        float4 rowSums = float4(0.0, 0.0, 0.0, 0.0);
-        float3 rowSquares = float3(0.0, 0.0, 0.0);
-        [unroll] for (int x = -GLINT_RD_APRON; x <= GLINT_RD_APRON; ++x)
+        GLINT_RD_RowPair pair = (GLINT_RD_RowPair)0;
+        uint first = GLINT_RD_RowPairRow(localIndex) * GLINT_RD_SPAN + GLINT_RD_RowPairColumn(localIndex);
+        [unroll] for (int i = 0; i < 2 * GLINT_RD_APRON + 2; ++i)
         {
-            float4 q = g_glint_rd_resolve_radiance[row * GLINT_RD_SPAN + local.x + uint(GLINT_RD_APRON + x)];
-            float w = q.a * GLINT_RD_GaussianWeight(x);
-            rowSums += float4(w * q.rgb, w);
-            rowSquares += w * q.rgb * q.rgb;
+            float4 q = g_glint_rd_resolve_radiance[first + uint(i)];
+            GLINT_RD_AccumulateRowPair(pair, i, q.rgb, q.a);
         }
-        GLINT_RD_StoreRowStatistics(row, local.x, rowSums, rowSquares);
+        GLINT_RD_StoreRowPair(localIndex, pair);
     }
     GroupMemoryBarrierWithGroupSync();
 
