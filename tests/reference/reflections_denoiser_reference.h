@@ -89,8 +89,9 @@ struct ResolveInputs {
     bool historyValid = false;
     double historyLength = 1.0;
     double historyClipScale = 0.7;
-    // Added to the neighbourhood's sigma (clamped at 0): 0 for the pass itself; a test probes
-    // how much a rounding error in sigma can move the result with it.
+    // Added to the neighbourhood's mean and sigma (sigma clamped at 0): 0 for the pass itself; a
+    // test probes how much a rounding error in them can move the result with them.
+    Rgb meanOffset{};
     Rgb sigmaOffset{};
 };
 

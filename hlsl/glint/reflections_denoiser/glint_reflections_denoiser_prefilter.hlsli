@@ -88,11 +88,11 @@ void GLINT_RD_Prefilter(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint
     uint2 pixel = tileOrigin + local;
     bool inImage = all(pixel < c.inputSize);
     uint2 clampedPixel = min(pixel, c.inputSize - 1);
-    // The pixel's own roughness and tile average need nothing from the group: loaded with the
-    // span, so that they arrive while the group synchronises instead of after the barrier (the
-    // roughness, then up to two round trips a tile for the average, one after the other).
+    // The pixel's own roughness needs nothing from the group, and the tile averages are loaded
+    // by nine threads: both with the span, so that they arrive while the group synchronises.
     float alpha = GLINT_FiniteOr(GLINT_RD_LoadRoughness(int2(clampedPixel)), 1.0);
-    float3 average = GLINT_RD_AverageAt(c, clampedPixel);
+    uint2 tile = tileOrigin / GLINT_RD_TILE;
+    GLINT_RD_LoadTileAverages(c, tile, localIndex);
     // Unrolled (a fixed count of slots a thread) so that the loads of all of them are in flight
     // together instead of one slot's round trip after the other.
     //
@@ -125,6 +125,7 @@ void GLINT_RD_Prefilter(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint
 
     if (!inImage)
         return;
+    float3 average = GLINT_RD_AverageAt(clampedPixel, tile);
     uint centre = (local.y + GLINT_RD_PREFILTER_APRON) * GLINT_RD_PREFILTER_SPAN + local.x + GLINT_RD_PREFILTER_APRON;
     float4 own = g_glint_rd_prefilter_radiance[centre];
     float4 geometry = g_glint_rd_prefilter_geometry[centre];

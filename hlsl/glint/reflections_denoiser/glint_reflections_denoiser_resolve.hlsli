@@ -33,8 +33,10 @@ void GLINT_RD_StoreOutput(int2 pixel, float4 radianceAndHitDistance);
 void GLINT_RD_StoreRadianceHistory(int2 pixel, float4 radianceAndVariance);
 void GLINT_RD_StoreVariance(int2 pixel, float variance);
 
-// Prefiltered rgb of the span; a = 1 for glossy pixels, 0 otherwise.
-groupshared float4 g_glint_rd_resolve_radiance[GLINT_RD_SPAN * GLINT_RD_SPAN];
+// Prefiltered rgb of the span; a = 1 for glossy pixels, 0 otherwise; as halves
+// (GLINT_RD_PackHalf4): the statistics see the neighbourhood to 11 bits, the pixel's own value
+// is its thread's 32-bit load.
+groupshared uint2 g_glint_rd_resolve_radiance[GLINT_RD_SPAN * GLINT_RD_SPAN];
 
 void GLINT_RD_Resolve(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint2 local)
 {
@@ -44,11 +46,12 @@ void GLINT_RD_Resolve(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint2 
     uint2 pixel = tileOrigin + local;
     bool inImage = all(pixel < c.inputSize);
     int2 ipixel = int2(min(pixel, c.inputSize - 1));
-    // The pixel's own inputs need nothing from the group: loaded with the span, so that they
-    // arrive while the group synchronises instead of after the barrier (the tile average alone
-    // was two dependent round trips a tile). The output image is read before the group writes
-    // it: every pixel is read and written by its own thread only.
-    float3 average = GLINT_RD_AverageAt(c, uint2(ipixel));
+    // The pixel's own inputs need nothing from the group, and the tile averages are loaded by
+    // nine threads: all with the span, so that they arrive while the group synchronises. The
+    // output image is read before the group writes it: every pixel is read and written by its
+    // own thread only.
+    uint2 tile = tileOrigin / GLINT_RD_TILE;
+    GLINT_RD_LoadTileAverages(c, tile, localIndex);
     float4 prefiltered = GLINT_RD_LoadPrefiltered(ipixel);
     float4 reprojected = GLINT_RD_LoadReprojected(ipixel);
     float storedLength = GLINT_RD_LoadLength(ipixel);
@@ -68,8 +71,8 @@ void GLINT_RD_Resolve(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint2 
         bool listed = GLINT_RD_PixelListed(spanPixel);
         float4 spanPrefiltered = GLINT_RD_LoadPrefiltered(spanPixel);
         bool glossy = listed && spanPrefiltered.a >= 0.0;
-        g_glint_rd_resolve_radiance[i] = glossy ? float4(GLINT_RD_SanitizeRadiance(spanPrefiltered.rgb), 1.0)
-                                                : float4(0.0, 0.0, 0.0, 0.0);
+        g_glint_rd_resolve_radiance[i] = GLINT_RD_PackHalf4(
+            glossy ? float4(GLINT_RD_SanitizeRadiance(spanPrefiltered.rgb), 1.0) : float4(0.0, 0.0, 0.0, 0.0));
     }
     GroupMemoryBarrierWithGroupSync();
 
@@ -80,7 +83,7 @@ void GLINT_RD_Resolve(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint2 
         uint first = GLINT_RD_RowPairRow(localIndex) * GLINT_RD_SPAN + GLINT_RD_RowPairColumn(localIndex);
         [unroll] for (int i = 0; i < 2 * GLINT_RD_APRON + 2; ++i)
         {
-            float4 q = g_glint_rd_resolve_radiance[first + uint(i)];
+            float4 q = GLINT_RD_UnpackHalf4(g_glint_rd_resolve_radiance[first + uint(i)]);
             GLINT_RD_AccumulateRowPair(pair, i, q.rgb, q.a);
         }
         GLINT_RD_StoreRowPair(localIndex, pair);
@@ -90,13 +93,14 @@ void GLINT_RD_Resolve(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint2 
     if (!inImage)
         return;
     uint centre = (local.y + GLINT_RD_APRON) * GLINT_RD_SPAN + local.x + GLINT_RD_APRON;
-    if (g_glint_rd_resolve_radiance[centre].a == 0.0)
+    if ((g_glint_rd_resolve_radiance[centre].y >> 16) == 0u)
     {
         // Not glossy: the output keeps classification's value; histories get defined zeros.
         GLINT_RD_StoreRadianceHistory(ipixel, float4(0.0, 0.0, 0.0, 0.0));
         GLINT_RD_StoreVariance(ipixel, 0.0);
         return;
     }
+    float3 average = GLINT_RD_AverageAt(uint2(ipixel), tile);
     float3 sum, sumSquares;
     float weightSum;
     GLINT_RD_ColumnStatistics(local, sum, sumSquares, weightSum);
