@@ -209,7 +209,6 @@ NeighbourhoodStatistics resolveStatistics(const ResolveInputs& in) {
         s.meanSquare[c] /= total;
         s.sigma[c] =
             std::max(std::sqrt(std::abs(s.meanSquare[c] - s.mean[c] * s.mean[c])) + in.sigmaOffset[c], 0.0);
-        s.mean[c] += in.meanOffset[c];
         // The box: spread plus distance from the tile average, scaled.
         s.extent[c] = (s.sigma[c] + std::abs(s.mean[c] - in.average[c])) * in.historyClipScale * 1.4;
     }

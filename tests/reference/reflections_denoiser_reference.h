@@ -89,9 +89,8 @@ struct ResolveInputs {
     bool historyValid = false;
     double historyLength = 1.0;
     double historyClipScale = 0.7;
-    // Added to the neighbourhood's mean and sigma (sigma clamped at 0): 0 for the pass itself; a
-    // test probes how much a rounding error in them can move the result with them.
-    Rgb meanOffset{};
+    // Added to the neighbourhood's sigma (clamped at 0): 0 for the pass itself; a test probes
+    // how much a rounding error in sigma can move the result with it.
     Rgb sigmaOffset{};
 };
 

@@ -8,6 +8,12 @@
 #define RD_ENTRY_COMMON_HLSLI
 
 #include "entry/common/glint_entry_common.hlsli"
+
+// The 16-bit permutation also carries the neighbourhood statistics' spans as halves
+// (glint_reflections_denoiser_common.hlsli, GLINT_RD_SpanTexel); the default stays 32-bit.
+#if GLINT_RD_HALF_STORAGE
+#define GLINT_RD_HALF_GROUPSHARED 1
+#endif
 #include "glint/reflections_denoiser/glint_reflections_denoiser_constants.h"
 
 // A cbuffer holding the struct (not ConstantBuffer<T>) so that glslang can pass it by value.

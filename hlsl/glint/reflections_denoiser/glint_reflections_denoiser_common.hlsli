@@ -202,20 +202,41 @@ void GLINT_RD_ColumnStatistics(uint2 local, out float3 sum, out float3 sumSquare
 }
 #endif
 
-// Four values as halves in two words (x | y << 16, z | w << 16): the groupshared spans that
-// feed neighbourhood statistics, where 11 bits are plenty (every value finite and within the
-// fp16 range first). Half the bytes a groupshared read; the 9x9 statistics are bound by those
-// reads (reproject 62 -> 57 us, resolve 31.8 -> 28.8 us at 1080p on an H100). Vulkan lets the
-// conversion round to either neighbouring half (lavapipe truncates).
-uint2 GLINT_RD_PackHalf4(float4 v)
+// The texels of the groupshared spans that feed the 9x9 neighbourhood statistics (reproject's
+// noisy samples, the resolve's prefiltered radiance): four values each.
+//
+// GLINT_RD_HALF_GROUPSHARED 1 (the 16-bit permutation's choice) carries them as four halves in
+// two words (x | y << 16, z | w << 16): half the bytes a groupshared read, which is what bounds
+// the statistics (reproject 62 -> 57 us, resolve 31.8 -> 28.8 us at 1080p on an H100 in
+// 32-bit storage). Every value is finite and within the fp16 range before it is narrowed, and
+// the sums stay 32-bit (reference defect 4); Vulkan lets the conversion round to either
+// neighbouring half (lavapipe truncates). The default is 32-bit, as the reference asks.
+#ifndef GLINT_RD_HALF_GROUPSHARED
+#define GLINT_RD_HALF_GROUPSHARED 0
+#endif
+#if GLINT_RD_HALF_GROUPSHARED
+#define GLINT_RD_SpanTexel uint2
+GLINT_RD_SpanTexel GLINT_RD_PackSpanTexel(float4 v)
 {
     return uint2(f32tof16(v.x) | (f32tof16(v.y) << 16), f32tof16(v.z) | (f32tof16(v.w) << 16));
 }
 
-float4 GLINT_RD_UnpackHalf4(uint2 p)
+float4 GLINT_RD_UnpackSpanTexel(GLINT_RD_SpanTexel p)
 {
     return float4(f16tof32(p.x), f16tof32(p.x >> 16), f16tof32(p.y), f16tof32(p.y >> 16));
 }
+#else
+#define GLINT_RD_SpanTexel float4
+GLINT_RD_SpanTexel GLINT_RD_PackSpanTexel(float4 v)
+{
+    return v;
+}
+
+float4 GLINT_RD_UnpackSpanTexel(GLINT_RD_SpanTexel p)
+{
+    return p;
+}
+#endif
 
 // Clip x toward the box centre m with half-extent e (Playdead): the point where the segment
 // from m to x leaves the box, or x inside it.

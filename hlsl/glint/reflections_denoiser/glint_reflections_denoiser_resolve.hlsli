@@ -33,10 +33,9 @@ void GLINT_RD_StoreOutput(int2 pixel, float4 radianceAndHitDistance);
 void GLINT_RD_StoreRadianceHistory(int2 pixel, float4 radianceAndVariance);
 void GLINT_RD_StoreVariance(int2 pixel, float variance);
 
-// Prefiltered rgb of the span; a = 1 for glossy pixels, 0 otherwise; as halves
-// (GLINT_RD_PackHalf4): the statistics see the neighbourhood to 11 bits, the pixel's own value
-// is its thread's 32-bit load.
-groupshared uint2 g_glint_rd_resolve_radiance[GLINT_RD_SPAN * GLINT_RD_SPAN];
+// Prefiltered rgb of the span; a = 1 for glossy pixels, 0 otherwise (GLINT_RD_SpanTexel). The
+// pixel's own value is its thread's 32-bit load in either span format.
+groupshared GLINT_RD_SpanTexel g_glint_rd_resolve_radiance[GLINT_RD_SPAN * GLINT_RD_SPAN];
 
 void GLINT_RD_Resolve(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint2 local)
 {
@@ -71,7 +70,7 @@ void GLINT_RD_Resolve(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint2 
         bool listed = GLINT_RD_PixelListed(spanPixel);
         float4 spanPrefiltered = GLINT_RD_LoadPrefiltered(spanPixel);
         bool glossy = listed && spanPrefiltered.a >= 0.0;
-        g_glint_rd_resolve_radiance[i] = GLINT_RD_PackHalf4(
+        g_glint_rd_resolve_radiance[i] = GLINT_RD_PackSpanTexel(
             glossy ? float4(GLINT_RD_SanitizeRadiance(spanPrefiltered.rgb), 1.0) : float4(0.0, 0.0, 0.0, 0.0));
     }
     GroupMemoryBarrierWithGroupSync();
@@ -83,7 +82,7 @@ void GLINT_RD_Resolve(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint2 
         uint first = GLINT_RD_RowPairRow(localIndex) * GLINT_RD_SPAN + GLINT_RD_RowPairColumn(localIndex);
         [unroll] for (int i = 0; i < 2 * GLINT_RD_APRON + 2; ++i)
         {
-            float4 q = GLINT_RD_UnpackHalf4(g_glint_rd_resolve_radiance[first + uint(i)]);
+            float4 q = GLINT_RD_UnpackSpanTexel(g_glint_rd_resolve_radiance[first + uint(i)]);
             GLINT_RD_AccumulateRowPair(pair, i, q.rgb, q.a);
         }
         GLINT_RD_StoreRowPair(localIndex, pair);
@@ -93,7 +92,7 @@ void GLINT_RD_Resolve(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint2 
     if (!inImage)
         return;
     uint centre = (local.y + GLINT_RD_APRON) * GLINT_RD_SPAN + local.x + GLINT_RD_APRON;
-    if ((g_glint_rd_resolve_radiance[centre].y >> 16) == 0u)
+    if (GLINT_RD_UnpackSpanTexel(g_glint_rd_resolve_radiance[centre]).a == 0.0)
     {
         // Not glossy: the output keeps classification's value; histories get defined zeros.
         GLINT_RD_StoreRadianceHistory(ipixel, float4(0.0, 0.0, 0.0, 0.0));
