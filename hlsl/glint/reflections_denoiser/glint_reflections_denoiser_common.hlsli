@@ -202,15 +202,17 @@ void GLINT_RD_ColumnStatistics(uint2 local, out float3 sum, out float3 sumSquare
 }
 #endif
 
-// The texels of the groupshared spans that feed the 9x9 neighbourhood statistics (reproject's
-// noisy samples, the resolve's prefiltered radiance): four values each.
+// The texels of the groupshared spans of radiance: reproject's noisy samples and the resolve's
+// prefiltered radiance (which feed the 9x9 neighbourhood statistics), the prefilter's clamped
+// samples: four values each.
 //
 // GLINT_RD_HALF_GROUPSHARED 1 (the 16-bit permutation's choice) carries them as four halves in
 // two words (x | y << 16, z | w << 16): half the bytes a groupshared read, which is what bounds
-// the statistics (reproject 62 -> 57 us, resolve 31.8 -> 28.8 us at 1080p on an H100 in
-// 32-bit storage). Every value is finite and within the fp16 range before it is narrowed, and
-// the sums stay 32-bit (reference defect 4); Vulkan lets the conversion round to either
-// neighbouring half (lavapipe truncates). The default is 32-bit, as the reference asks.
+// the statistics and the prefilter's taps. With fp16 images (SSSR's radiance, the clamped and
+// prefiltered samples of the 16-bit permutation) that is lossless: the values were read from
+// halves. Every value is finite and within the fp16 range before it is narrowed, and the sums
+// stay 32-bit (reference defect 4). The default is 32-bit, as the reference asks: narrowing
+// 32-bit images' values would round them.
 #ifndef GLINT_RD_HALF_GROUPSHARED
 #define GLINT_RD_HALF_GROUPSHARED 0
 #endif

@@ -30,7 +30,7 @@ void GLINT_RD_StorePrefiltered(int2 pixel, float4 radianceAndVariance);
 #define GLINT_RD_PREFILTER_SLOTS_PER_THREAD \
     ((GLINT_RD_PREFILTER_SLOTS + GLINT_RD_TILE * GLINT_RD_TILE - 1) / (GLINT_RD_TILE * GLINT_RD_TILE))
 
-groupshared float4 g_glint_rd_prefilter_radiance[GLINT_RD_PREFILTER_SLOTS]; // rgb, variance
+groupshared GLINT_RD_SpanTexel g_glint_rd_prefilter_radiance[GLINT_RD_PREFILTER_SLOTS]; // rgb, variance
 groupshared float4 g_glint_rd_prefilter_geometry[GLINT_RD_PREFILTER_SLOTS]; // normal, view depth (-1: not glossy)
 
 float GLINT_RD_RadianceWeight(float3 average, float3 radiance, float variance)
@@ -64,7 +64,7 @@ void GLINT_RD_PrefilterTap(inout GLINT_RD_PrefilterSums sums, uint centre, int2 
                            float3 average, GLINT_RD_PrefilterRates rates, float varianceWeight)
 {
     uint index = uint(int(centre) + offset.y * GLINT_RD_PREFILTER_SPAN + offset.x);
-    float4 q = g_glint_rd_prefilter_radiance[index];
+    float4 q = GLINT_RD_UnpackSpanTexel(g_glint_rd_prefilter_radiance[index]);
     float4 qGeometry = g_glint_rd_prefilter_geometry[index];
     // Relative depth difference (reference defect 5: the reference multiplies by z).
     float exponent = 512.0 * log2(max(dot(geometry.xyz, qGeometry.xyz), 0.0)) -
@@ -116,8 +116,8 @@ void GLINT_RD_Prefilter(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint
             float4 clamped = GLINT_RD_LoadClamped(spanPixel);
             bool glossy = listed && clamped.a >= 0.0;
             float variance = clamp(GLINT_FiniteOr(clamped.a, 1.0), 0.0, 65504.0);
-            g_glint_rd_prefilter_radiance[i] = glossy ? float4(GLINT_RD_SanitizeRadiance(clamped.rgb), variance)
-                                                      : float4(0.0, 0.0, 0.0, 0.0);
+            g_glint_rd_prefilter_radiance[i] = GLINT_RD_PackSpanTexel(
+                glossy ? float4(GLINT_RD_SanitizeRadiance(clamped.rgb), variance) : float4(0.0, 0.0, 0.0, 0.0));
             g_glint_rd_prefilter_geometry[i] = float4(normal, glossy ? GLINT_RD_ViewDepth(c, depth) : -1.0);
         }
     }
@@ -127,7 +127,7 @@ void GLINT_RD_Prefilter(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint
         return;
     float3 average = GLINT_RD_AverageAt(clampedPixel, tile);
     uint centre = (local.y + GLINT_RD_PREFILTER_APRON) * GLINT_RD_PREFILTER_SPAN + local.x + GLINT_RD_PREFILTER_APRON;
-    float4 own = g_glint_rd_prefilter_radiance[centre];
+    float4 own = GLINT_RD_UnpackSpanTexel(g_glint_rd_prefilter_radiance[centre]);
     float4 geometry = g_glint_rd_prefilter_geometry[centre];
     bool glossy = geometry.w > 0.0;
     bool filtered = glossy && own.a > 0.0 && alpha >= c.mirrorThreshold;

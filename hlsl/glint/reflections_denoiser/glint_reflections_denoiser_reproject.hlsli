@@ -48,8 +48,8 @@ void GLINT_RD_StoreAverage(uint2 tile, float4 average);
 void GLINT_RD_MarkTile(uint2 tile, uint bits);
 
 // The span's noisy rgb (0 for pixels that are not glossy) and hit distance (-1: not glossy)
-// (GLINT_RD_SpanTexel). They feed only the neighbourhood statistics and the nearest hit; the
-// pixel's own sample is loaded by its thread, so that it stays 32-bit in either span format.
+// (GLINT_RD_SpanTexel): the neighbourhood statistics, the nearest hit and, in 32-bit spans, the
+// pixel's own sample (in half spans the pixel's thread loads its own sample, which stays 32-bit).
 groupshared GLINT_RD_SpanTexel g_glint_rd_noisy[GLINT_RD_SPAN * GLINT_RD_SPAN];
 groupshared float4 g_glint_rd_average[GLINT_RD_TILE * GLINT_RD_TILE];
 
@@ -170,7 +170,10 @@ void GLINT_RD_Reproject(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint
     // that they are in flight together instead of a round trip of their own after the barrier.
     GLINT_RD_Surface surface = GLINT_RD_LoadSurface(c, ipixel);
     float2 motion = GLINT_RD_LoadMotion(ipixel) * c.motionScale;
+#if GLINT_RD_HALF_GROUPSHARED
+    // The span holds halves: the pixel's own sample is loaded 32-bit.
     float3 ownNoisy = GLINT_RD_LoadNoisy(ipixel).rgb;
+#endif
     // Unrolled (exactly 4 span slots a thread) so that the loads of all four are in flight
     // together instead of one slot's round trip after the other.
     [unroll] for (uint k = 0; k < GLINT_RD_SPAN * GLINT_RD_SPAN / (GLINT_RD_TILE * GLINT_RD_TILE); ++k)
@@ -202,7 +205,11 @@ void GLINT_RD_Reproject(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint
     GroupMemoryBarrierWithGroupSync();
 
     uint centre = (local.y + GLINT_RD_APRON) * GLINT_RD_SPAN + local.x + GLINT_RD_APRON;
+#if GLINT_RD_HALF_GROUPSHARED
     float3 current = surface.glossy ? GLINT_RD_SanitizeRadiance(ownNoisy) : float3(0.0, 0.0, 0.0);
+#else
+    float3 current = GLINT_RD_UnpackSpanTexel(g_glint_rd_noisy[centre]).rgb; // the same value, one load fewer
+#endif
 
     // The nearest hit of the 3x3 (one noisy hit distance is a poor parallax estimate: reference
     // defect 11). First, so that the parallax candidate's taps are fetched before the 9x9
