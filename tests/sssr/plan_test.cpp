@@ -37,8 +37,8 @@ TEST_CASE("the plan runs the pyramid, classification, blue noise, arguments and 
     CHECK(names[2] == "blue_noise_args");
     CHECK(names[3] == "intersect");
     const auto& classify = std::get<DirectDispatch>(findPass(plan, "classify")->dispatch);
-    CHECK(classify.groupsX == 120); // 2x2 tiles of 8x8 a group: ceil(1920 / 16), ceil(1080 / 16)
-    CHECK(classify.groupsY == 68);
+    CHECK(classify.groupsX == 240);
+    CHECK(classify.groupsY == 135);
     const auto& intersect = std::get<IndirectDispatch>(findPass(plan, "intersect")->dispatch);
     CHECK(intersect.resource == "sssr_indirect_args");
     CHECK(intersect.offset == 0);

@@ -62,7 +62,7 @@ uint GLINT_SSSR_AddTile()
 }
 void GLINT_SSSR_StoreTile(uint index, uint entry) { g_glint_tile_list[index] = entry; }
 
-[numthreads(GLINT_SSSR_TILE, GLINT_SSSR_TILE, GLINT_SSSR_CLASSIFY_BLOCK * GLINT_SSSR_CLASSIFY_BLOCK)] void main(uint3 groupId : SV_GroupID, uint3 groupThreadId : SV_GroupThreadID)
+[numthreads(8, 8, 1)] void main(uint3 groupId : SV_GroupID, uint3 groupThreadId : SV_GroupThreadID)
 {
-    GLINT_SSSR_Classify(g_glint_sssr, groupId.xy, groupThreadId);
+    GLINT_SSSR_Classify(g_glint_sssr, groupId.xy, groupThreadId.xy);
 }

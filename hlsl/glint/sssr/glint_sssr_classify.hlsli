@@ -25,12 +25,9 @@
 //   uint   GLINT_SSSR_AddTile();             atomic add of 1 to counter 2, returns the previous value
 //   void   GLINT_SSSR_StoreTile(uint index, uint entry);
 //
-// Dispatch: [numthreads(8, 8, 4)], ceil(W / 16) x ceil(H / 16) groups. A group classifies a
-// 2x2 block of 8x8 tiles, SV_GroupThreadID.z selecting the tile: on an H100 a 1080p frame in
-// one 64-thread group per tile (32400 groups) took 23 us even with an empty shader, the rate
-// at which groups start; 256-thread groups (8160) take 8.5 us (docs/performance.md). Quads
-// never straddle tiles, so every quad decision is made in groupshared memory and holds for any
-// subgroup size.
+// Dispatch: [numthreads(8, 8, 1)], ceil(W / 8) x ceil(H / 8) groups, one 8x8 tile per group.
+// Quads never straddle tiles, so every quad decision is made in groupshared memory and holds
+// for any subgroup size.
 #ifndef GLINT_SSSR_CLASSIFY_HLSLI
 #define GLINT_SSSR_CLASSIFY_HLSLI
 
@@ -54,40 +51,36 @@ void GLINT_SSSR_StoreTile(uint index, uint entry);
 #define GLINT_SSSR_STATE_TRACES 1u
 #define GLINT_SSSR_STATE_REQUIRES_COPY 2u
 
-#define GLINT_SSSR_CLASSIFY_TILES (GLINT_SSSR_CLASSIFY_BLOCK * GLINT_SSSR_CLASSIFY_BLOCK)
-#define GLINT_SSSR_TILE_PIXELS (GLINT_SSSR_TILE * GLINT_SSSR_TILE)
-
-groupshared uint g_glint_sssr_state[GLINT_SSSR_CLASSIFY_TILES * GLINT_SSSR_TILE_PIXELS];
+groupshared uint g_glint_sssr_state[GLINT_SSSR_TILE * GLINT_SSSR_TILE];
 groupshared uint g_glint_sssr_ray_count;
 groupshared uint g_glint_sssr_ray_base;
-groupshared uint g_glint_sssr_any_glossy[GLINT_SSSR_CLASSIFY_TILES];
+groupshared uint g_glint_sssr_any_glossy;
 
-// The state of the pixel at local within the tile whose states start at tileBase.
-uint GLINT_SSSR_StateAt(uint tileBase, uint2 local)
+uint GLINT_SSSR_StateAt(uint2 local)
 {
-    return g_glint_sssr_state[tileBase + local.y * GLINT_SSSR_TILE + local.x];
+    return g_glint_sssr_state[local.y * GLINT_SSSR_TILE + local.x];
 }
 
 // The quad neighbour a pixel that needs a copy takes its ray from: the first of x^1, y^1 and
 // both that traces (1, 2, 3), or 0 when none does and the pixel must trace itself (the
 // reference leaves such pixels black, defect 11). Out-of-image neighbours never trace.
-uint GLINT_SSSR_DonorOf(uint tileBase, uint2 local)
+uint GLINT_SSSR_DonorOf(uint2 local)
 {
-    if ((GLINT_SSSR_StateAt(tileBase, local ^ uint2(1, 0)) & GLINT_SSSR_STATE_TRACES) != 0)
+    if ((GLINT_SSSR_StateAt(local ^ uint2(1, 0)) & GLINT_SSSR_STATE_TRACES) != 0)
         return 1u;
-    if ((GLINT_SSSR_StateAt(tileBase, local ^ uint2(0, 1)) & GLINT_SSSR_STATE_TRACES) != 0)
+    if ((GLINT_SSSR_StateAt(local ^ uint2(0, 1)) & GLINT_SSSR_STATE_TRACES) != 0)
         return 2u;
-    if ((GLINT_SSSR_StateAt(tileBase, local ^ uint2(1, 1)) & GLINT_SSSR_STATE_TRACES) != 0)
+    if ((GLINT_SSSR_StateAt(local ^ uint2(1, 1)) & GLINT_SSSR_STATE_TRACES) != 0)
         return 3u;
     return 0u;
 }
 
 // True when the neighbour at local ^ offset needs a copy and chose this pixel (code = offset).
-bool GLINT_SSSR_ChoseMe(uint tileBase, uint2 local, uint2 offset, uint code)
+bool GLINT_SSSR_ChoseMe(uint2 local, uint2 offset, uint code)
 {
     uint2 neighbour = local ^ offset;
-    return (GLINT_SSSR_StateAt(tileBase, neighbour) & GLINT_SSSR_STATE_REQUIRES_COPY) != 0 &&
-           GLINT_SSSR_DonorOf(tileBase, neighbour) == code;
+    return (GLINT_SSSR_StateAt(neighbour) & GLINT_SSSR_STATE_REQUIRES_COPY) != 0 &&
+           GLINT_SSSR_DonorOf(neighbour) == code;
 }
 
 // Variance of last frame at the reprojected position; off-screen history counts as high so
@@ -101,21 +94,15 @@ bool GLINT_SSSR_HighVariance(GLINT_SssrConstants c, int2 pixel, float2 uv)
     return !(GLINT_SSSR_SampleVarianceHistory(previousUv) <= c.varianceThreshold);
 }
 
-// groupThreadId: SV_GroupThreadID of [numthreads(8, 8, 4)]; .xy is the pixel within its tile,
-// .z the tile within the group's 2x2 block.
-void GLINT_SSSR_Classify(GLINT_SssrConstants c, uint2 groupId, uint3 groupThreadId)
+void GLINT_SSSR_Classify(GLINT_SssrConstants c, uint2 groupId, uint2 local)
 {
-    uint2 local = groupThreadId.xy;
-    uint tileInGroup = groupThreadId.z;
-    uint tileBase = tileInGroup * GLINT_SSSR_TILE_PIXELS;
-    uint localIndex = tileBase + local.y * GLINT_SSSR_TILE + local.x;
-    bool tileLeader = all(local == 0);
+    uint localIndex = local.y * GLINT_SSSR_TILE + local.x;
     if (localIndex == 0)
+    {
         g_glint_sssr_ray_count = 0;
-    if (tileLeader)
-        g_glint_sssr_any_glossy[tileInGroup] = 0;
-    uint2 tile = groupId * GLINT_SSSR_CLASSIFY_BLOCK + uint2(tileInGroup % GLINT_SSSR_CLASSIFY_BLOCK, tileInGroup / GLINT_SSSR_CLASSIFY_BLOCK);
-    uint2 pixel = tile * GLINT_SSSR_TILE + local;
+        g_glint_sssr_any_glossy = 0;
+    }
+    uint2 pixel = groupId * GLINT_SSSR_TILE + local;
     bool inImage = all(pixel < c.inputSize);
     int2 ipixel = int2(pixel);
     float2 uv = (float2(pixel) + 0.5) * c.inverseInputSize;
@@ -157,17 +144,17 @@ void GLINT_SSSR_Classify(GLINT_SssrConstants c, uint2 groupId, uint3 groupThread
     g_glint_sssr_state[localIndex] = (traces ? GLINT_SSSR_STATE_TRACES : 0u) | (copies ? GLINT_SSSR_STATE_REQUIRES_COPY : 0u);
     GroupMemoryBarrierWithGroupSync();
 
-    if (copies && GLINT_SSSR_DonorOf(tileBase, local) == 0)
+    if (copies && GLINT_SSSR_DonorOf(local) == 0)
         traces = true; // promoted: no neighbour traces for it
     uint copyFlags = 0;
     if (traces && !copies)
     {
-        copyFlags |= GLINT_SSSR_ChoseMe(tileBase, local, uint2(1, 0), 1u) ? GLINT_SSSR_RAY_COPY_H : 0u;
-        copyFlags |= GLINT_SSSR_ChoseMe(tileBase, local, uint2(0, 1), 2u) ? GLINT_SSSR_RAY_COPY_V : 0u;
-        copyFlags |= GLINT_SSSR_ChoseMe(tileBase, local, uint2(1, 1), 3u) ? GLINT_SSSR_RAY_COPY_D : 0u;
+        copyFlags |= GLINT_SSSR_ChoseMe(local, uint2(1, 0), 1u) ? GLINT_SSSR_RAY_COPY_H : 0u;
+        copyFlags |= GLINT_SSSR_ChoseMe(local, uint2(0, 1), 2u) ? GLINT_SSSR_RAY_COPY_V : 0u;
+        copyFlags |= GLINT_SSSR_ChoseMe(local, uint2(1, 1), 3u) ? GLINT_SSSR_RAY_COPY_D : 0u;
     }
 
-    // Compaction: one global atomic per group (all four tiles), entries in arbitrary order.
+    // Compaction: one global atomic per group, entries in arbitrary order within the group.
     // Within a wave the slots come from a prefix count and one groupshared atomic per wave
     // (instead of one per pixel); this holds for any wave size, and the order of the entries
     // is unspecified either way.
@@ -176,16 +163,17 @@ void GLINT_SSSR_Classify(GLINT_SssrConstants c, uint2 groupId, uint3 groupThread
     if (WaveIsFirstLane() && waveRays > 0)
         InterlockedAdd(g_glint_sssr_ray_count, waveRays, waveBase);
     uint slot = WaveReadLaneFirst(waveBase) + WavePrefixCountBits(traces);
-    // Which tiles hold a glossy pixel: every glossy pixel stores 1 to its tile's flag (equal
-    // values, so the order of the stores does not matter). Not a wave vote: which tile a lane
-    // belongs to is not tied to its subgroup.
-    if (glossy)
-        g_glint_sssr_any_glossy[tileInGroup] = 1u;
+    bool waveGlossy = WaveActiveAnyTrue(glossy); // outside the condition: wave ops need every lane
+    if (WaveIsFirstLane() && waveGlossy)
+        InterlockedOr(g_glint_sssr_any_glossy, 1u);
     GroupMemoryBarrierWithGroupSync();
-    if (localIndex == 0 && g_glint_sssr_ray_count > 0)
-        g_glint_sssr_ray_base = GLINT_SSSR_AddRays(g_glint_sssr_ray_count);
-    if (tileLeader && g_glint_sssr_any_glossy[tileInGroup] != 0)
-        GLINT_SSSR_StoreTile(GLINT_SSSR_AddTile(), GLINT_SSSR_PackTile(tile * GLINT_SSSR_TILE));
+    if (localIndex == 0)
+    {
+        if (g_glint_sssr_ray_count > 0)
+            g_glint_sssr_ray_base = GLINT_SSSR_AddRays(g_glint_sssr_ray_count);
+        if (g_glint_sssr_any_glossy != 0)
+            GLINT_SSSR_StoreTile(GLINT_SSSR_AddTile(), GLINT_SSSR_PackTile(groupId * GLINT_SSSR_TILE));
+    }
     GroupMemoryBarrierWithGroupSync();
     if (traces)
         GLINT_SSSR_StoreRay(g_glint_sssr_ray_base + slot, GLINT_SSSR_PackRay(pixel, copyFlags));

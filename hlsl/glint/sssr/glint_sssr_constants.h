@@ -10,9 +10,6 @@
 // thread in groups of 64.
 #define GLINT_SSSR_TILE 8
 #define GLINT_SSSR_RAYS_PER_GROUP 64
-// Tiles a classification group covers along each axis: [numthreads(8, 8, BLOCK^2)] over
-// ceil(W / (8 BLOCK)) x ceil(H / (8 BLOCK)) groups (glint_sssr_classify.hlsli says why).
-#define GLINT_SSSR_CLASSIFY_BLOCK 2
 // The intersection's indirect grid is (min(groups, 1024), ceil(groups / 1024), 1): ray index =
 // (group.y * 1024 + group.x) * 64 + thread.
 #define GLINT_SSSR_GROUPS_PER_ROW 1024u

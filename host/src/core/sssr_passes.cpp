@@ -116,11 +116,7 @@ Pass sssrPass(const char* name, const char* pipeline, std::uint32_t groupX, std:
 Pass classifyPass(const SssrDesc& desc, const std::vector<std::byte>& constants) {
     Pass pass = sssrPass("classify", desc.halfPrecisionStorage ? "sssr_classify.half" : "sssr_classify",
                          GLINT_SSSR_TILE, GLINT_SSSR_TILE, constants);
-    // A group classifies a 2x2 block of tiles (its threads' z picks the tile), see the header.
-    pass.groupSize[2] = GLINT_SSSR_CLASSIFY_BLOCK * GLINT_SSSR_CLASSIFY_BLOCK;
-    const std::uint32_t block[3] = {GLINT_SSSR_CLASSIFY_BLOCK * GLINT_SSSR_TILE,
-                                    GLINT_SSSR_CLASSIFY_BLOCK * GLINT_SSSR_TILE, 1};
-    pass.dispatch = core::gridFor(desc.size.width, desc.size.height, 1, block);
+    pass.dispatch = core::gridFor(desc.size.width, desc.size.height, 1, pass.groupSize);
     pass.uses = {{"g_glint_depth", "depth", Access::Read},
                  {"g_glint_normals", "normals", Access::Read},
                  {"g_glint_material", "material", Access::Read},
