@@ -32,7 +32,7 @@ struct Camera {
 enum class NormalEncoding {
     WorldUnit,  // X,Y,Z: unit world-space normal
     WorldUnorm, // X,Y,Z: n * 0.5 + 0.5
-    Octahedral, // X,Y: octahedral encoding in [0,1] (conventions.md §5)
+    Octahedral, // X,Y: octahedral encoding in [0,1] (docs/conventions.md §5)
 };
 
 // How the stored motion layer is to be read. The stored vector multiplied component-wise

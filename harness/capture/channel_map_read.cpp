@@ -196,7 +196,7 @@ std::array<double, 3> applyAxes(const AxisMap& m, const std::array<double, 3>& v
             m.sign[2] * v[static_cast<std::size_t>(m.axis[2])]};
 }
 
-// conventions.md §5, with the stored [0,1] values mapped back to [-1,1] first.
+// docs/conventions.md §5, with the stored [0,1] values mapped back to [-1,1] first.
 std::array<double, 3> decodeOctahedral(double sx, double sy) {
     const double px = 2.0 * sx - 1.0, py = 2.0 * sy - 1.0;
     double x = px, y = py;

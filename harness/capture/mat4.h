@@ -3,7 +3,7 @@
 // Storage is row-major (m[row * 4 + col]) and the convention is column vectors: a matrix
 // transforms a point p as M·p, so the translation of a view matrix sits in m[3], m[7], m[11].
 // Everything is double: camera matrices are stored bit-exactly in the files and inverses are
-// computed on the host in double (conventions.md §6).
+// computed on the host in double (docs/conventions.md §6).
 #pragma once
 
 #include <array>

@@ -1,5 +1,5 @@
 // The one place where motion vectors are converted into the package's convention
-// (conventions.md §3, convention A): mv = uv_prev - uv_cur in UV units, +v down,
+// (docs/conventions.md §3, convention A): mv = uv_prev - uv_cur in UV units, +v down,
 // unjittered, so the previous-frame position of pixel uv is uv + mv.
 //
 // A capture declares how its motion layer is stored: units (UV, pixels or NDC of the

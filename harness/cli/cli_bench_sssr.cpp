@@ -3,13 +3,16 @@
 // Settings come from --set name=value, so the same runs can sweep options.
 #include "cli_bench_sssr.h"
 
-#include "core/camera.h"
+#include "replay/replay_frame.h"
 #include "replay/replay_settings.h"
-#include "replay/replay_sssr.h"
 #include "scene/scene_file.h"
 #include "scene/scene_simulate.h"
 
-#include <gpu/gpu_sssr_runner.h>
+#include <gpu/gpu_effect_runner.h>
+#include <gpu/gpu_input_images.h>
+#include <gpu/gpu_transfer.h>
+
+#include "glint/common/glint_wire_formats.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -19,14 +22,15 @@ namespace glint::cli {
 namespace {
 
 // With debugOutput: how the traced rays ended and how many iterations they took.
-void printRayClasses(const gpu::SssrFrameOutputs& out) {
+void printRayClasses(const std::vector<std::uint32_t>& rayList, const std::vector<float>& rayInfo,
+                     std::uint32_t width) {
     static const char* const kNames[] = {"hit",    "escaped",  "budget",    "occupancy",
                                          "behind", "rejected", "degenerate"};
     std::size_t classes[7] = {};
     std::vector<double> iterations;
-    for (std::uint32_t entry : out.rayList) {
-        const std::size_t x = entry & 0x7FFFu, y = (entry >> 15) & 0x3FFFu;
-        const float* info = &out.rayInfo[4 * (y * out.width + x)];
+    for (std::uint32_t entry : rayList) {
+        const std::size_t x = shared::GLINT_WIRE_RayEntryX(entry), y = shared::GLINT_WIRE_RayEntryY(entry);
+        const float* info = &rayInfo[4 * (y * width + x)];
         const auto rayClass = static_cast<std::size_t>(info[2]);
         if (rayClass < 7) ++classes[rayClass];
         iterations.push_back(static_cast<double>(info[3]));
@@ -56,46 +60,45 @@ int runBenchSssr(const BenchOptions& options, const gpu::Context& context) {
     scene.reference = {}; // no references: only the inputs are needed
     const scene::Simulation simulation = scene::simulate(context, scene);
 
-    SssrDesc desc;
-    gpu::SssrFrameInputs inputs;
-    replay::sssrFromFrame(simulation.frames.at(0), simulation.environment.value(), desc, inputs);
-    const replay::EffectSettings settings = replay::parseSettings(options.settings);
-    replay::copySssrTunables(settings.sssr, desc);
-    desc.storeRays = replay::needsSssrRays(settings);
-    if (desc.materialChannel != 0)
-        throw std::invalid_argument("bench: roughness must come from material channel 0");
-    gpu::SssrRunner runner(context, desc, /*compactInputs=*/true);
-    runner.upload(inputs);
-    const std::vector<std::string> passes =
-        runner.passNames(desc, desc.denoise, settings.denoiser.spatialPath);
-    // With denoise: a static camera, so last frame's view-projection is this frame's.
-    ReflectionsDenoiserDesc denoiser;
-    denoiser.size = desc.size;
-    denoiser.projection = desc.projection;
-    denoiser.viewFromWorld = desc.viewFromWorld;
-    denoiser.depth = desc.depth;
-    denoiser.nearPlane = desc.nearPlane;
-    denoiser.farPlane = desc.farPlane;
-    denoiser.vulkanNdc = desc.vulkanNdc;
-    denoiser.normalUnpackMul = desc.normalUnpackMul;
-    denoiser.normalUnpackAdd = desc.normalUnpackAdd;
-    denoiser.roughnessThreshold = desc.roughnessThreshold;
-    denoiser.mirrorThreshold = desc.mirrorThreshold;
-    denoiser.halfPrecisionStorage = desc.halfPrecisionStorage;
-    denoiser.previousClipFromWorld = core::multiply(desc.projection, desc.viewFromWorld);
-    replay::copyDenoiserTunables(settings.denoiser, denoiser);
+    const capture::Frame& frame = simulation.frames.at(0);
+    const capture::Environment& environment = simulation.environment.value();
+    const EffectDescriptor& effect = *findEffect("reflections");
+    const SettingValues settings = replay::parseSettings(options.settings);
+    // A static camera: every run is the first frame again, its histories carried.
+    FrameInfo info = replay::frameInfo(frame, environment, 0, true);
+    for (std::size_t i = 0; i < 16; ++i) {
+        double sum = 0.0;
+        for (std::size_t k = 0; k < 4; ++k) sum += info.projection[i / 4 * 4 + k] * info.viewFromWorld[k * 4 + i % 4];
+        info.previousClipFromWorld[i] = sum;
+    }
+    EffectPlan plan;
+    std::string error;
+    if (effect.plan(info, settings, plan, &error) != Result::Ok) throw std::invalid_argument(error);
+    gpu::InputImages inputs(context, info.size, /*compact=*/true);
+    vk::ResourceTable table;
+    for (const InputDesc& input : effect.inputs) {
+        if (!input.setting.empty() && !settings.flag(input.setting)) continue;
+        if (input.kind == InputKind::Environment) {
+            inputs.uploadEnvironment(environment.width, environment.height, replay::environmentTexels(environment));
+        } else {
+            std::uint32_t channels = 0;
+            inputs.upload(input.kind, replay::inputTexels(frame, input.kind, channels), channels);
+        }
+        table.images[input.resource] = inputs.find(input.kind);
+    }
+    gpu::EffectRunner runner(context, plan);
+    const std::vector<std::string> passes = gpu::passNames(plan);
     std::vector<std::vector<double>> times(passes.size());
     for (std::uint32_t run = 0; run < std::min(options.runs, 10u) + options.runs; ++run) {
-        desc.frameIndex = run;
-        denoiser.frameIndex = run;
-        denoiser.resetHistory = run == 0;
-        std::vector<double> timing;
-        runner.run(desc, &timing, desc.denoise ? &denoiser : nullptr);
+        info.frameIndex = run;
+        info.resetHistory = run == 0;
+        if (effect.plan(info, settings, plan, &error) != Result::Ok) throw std::invalid_argument(error);
+        const gpu::FrameRun timing = runner.run(plan, table);
         if (run < std::min(options.runs, 10u)) continue; // warm-up
-        for (std::size_t pass = 0; pass < std::min(timing.size(), passes.size()); ++pass)
-            times[pass].push_back(timing[pass]);
+        for (std::size_t pass = 0; pass < std::min(timing.milliseconds.size(), passes.size()); ++pass)
+            times[pass].push_back(timing.milliseconds[pass]);
     }
-    const gpu::SssrFrameOutputs out = runner.readback();
+    const std::vector<std::uint32_t> counters = runner.readWords("sssr_counters", 4);
     const double pixels = static_cast<double>(options.width) * options.height;
 
     std::printf("device: %s, driver %s %s, subgroup %u\n", context.info.name.c_str(),
@@ -106,8 +109,10 @@ int runBenchSssr(const BenchOptions& options, const gpu::Context& context) {
     for (const std::string& setting : options.settings) std::printf("  set %s\n", setting.c_str());
     std::printf("inputs: R32F depth, RGBA16F normals and colour, R16F roughness, RG16F motion\n");
     std::printf("traced pixels %.1f %% (%u rays), tiles with glossy pixels %u\n",
-                100.0 * out.counters[1] / pixels, out.counters[1], out.counters[3]);
-    if (!out.rayInfo.empty()) printRayClasses(out);
+                100.0 * counters[1] / pixels, counters[1], counters[3]);
+    if (runner.hasImage("sssr_ray_info"))
+        printRayClasses(runner.readWords("sssr_ray_list", counters[1]),
+                        gpu::readbackImage(context, runner.image("sssr_ray_info")), options.width);
     double total = 0.0;
     for (std::size_t pass = 0; pass < passes.size(); ++pass) {
         std::vector<double>& values = times[pass];

@@ -88,6 +88,11 @@ struct ReportOptions {
 };
 
 int runDevices(bool validate);
+// glint settings [effect]: the settings tables; settingsHelp() is the same listing for --help.
+int runSettings(const std::string& effect);
+std::string settingsHelp();
+// The registered effects' names, "a, b, c".
+std::string effectNames();
 int runReport(const ReportOptions& options);
 int runRun(const ReplayOptions& options);
 int runDump(const ReplayOptions& options);

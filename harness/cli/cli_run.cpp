@@ -84,7 +84,7 @@ int runRun(const ReplayOptions& options) {
             for (const replay::Counter& counter : result.counters)
                 record["counters"][counter.name] = counter.value;
             for (const replay::ReferenceError& error :
-                 replay::referenceErrors(frame, result, sessionOptions.settings.sssr.roughnessThreshold)) {
+                 replay::referenceErrors(frame, result, sessionOptions.settings.real("roughnessThreshold"))) {
                 writeImageFiles(dir, error.effect + "_error", error.effect + "/error", error.map, true);
                 errors[error.effect].push_back(error.mean);
                 noisyErrors[error.effect] = error.noisyMean;

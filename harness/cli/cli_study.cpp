@@ -64,10 +64,9 @@ std::vector<Point> pointsFor(const std::string& effect, bool quick) {
     return {{"defaults", {}},
             {"filter_off", {"shadows.filter=false"}},
             {"no_tile_skip", {"shadows.skipClearedTiles=false"}},
-            {"fused_filter", {"shadows.fusedFilter=true"}},
             {"no_anti_lag", {"shadows.antiLag=false"}},
-            {"filter_variance_0.0625", {"shadows.filterVarianceScale=0.0625"}},
-            {"filter_variance_4", {"shadows.filterVarianceScale=4"}},
+            {"filter_variance_0.0625", {"shadows.storedVarianceScale=0.0625"}},
+            {"filter_variance_4", {"shadows.storedVarianceScale=4"}},
             {"depth_sigma_0.01", {"shadows.depthSigma=0.01"}},
             {"depth_sigma_0.05", {"shadows.depthSigma=0.05"}},
             {"normal_power_8", {"shadows.normalPower=8"}},
@@ -95,7 +94,7 @@ std::uint32_t referenceSpp(const Plan& plan, const std::string& effect) {
 
 // The base settings with the point's applied over them; a name set twice keeps its last value
 // only, so that the list reads as what `glint bench --set` would need.
-replay::EffectSettings settingsOf(const std::string& effect, const Point& point) {
+SettingValues settingsOf(const std::string& effect, const Point& point) {
     std::vector<std::string> all;
     for (const std::string& base : baseSettings(effect)) {
         const std::string name = base.substr(0, base.find('='));
@@ -148,7 +147,7 @@ std::vector<Row> sweep(const gpu::Context& context, const Plan& plan, const std:
     // charged for the pixels it hands to the environment instead of dropping them.
     float maskThreshold = 0.0f;
     for (const Point& point : points)
-        maskThreshold = std::max(maskThreshold, settingsOf(effect, point).sssr.roughnessThreshold);
+        maskThreshold = std::max(maskThreshold, settingsOf(effect, point).real("roughnessThreshold"));
     const std::vector<std::uint8_t> mask = replay::errorMask(scene.frames.back(), effect, maskThreshold);
     const std::filesystem::path folder = std::filesystem::path("images") / scene.name / effect;
     std::vector<Row> rows;
@@ -160,7 +159,7 @@ std::vector<Row> sweep(const gpu::Context& context, const Plan& plan, const std:
         Row row{.scene = scene.name,
                 .effect = effect,
                 .label = point.label,
-                .settings = options.settings.assignments};
+                .settings = options.settings.assignments()};
         row.error = lastFrameError(context, scene, options, maskThreshold, result);
         row.measurement = measureFrames(context, scene.frames, scene.environment, options, plan.runs);
         row.output = (folder / (point.label + ".exr")).string();

@@ -19,6 +19,11 @@ int main(int argc, char** argv) {
     CLI::App* devices =
         app.add_subcommand("devices", "List Vulkan devices: driver, subgroup size, float16 support");
 
+    std::string settingsEffect;
+    CLI::App* settings = app.add_subcommand(
+        "settings", "List every effect's settings (--set name=value): type, default, range, help");
+    settings->add_option("effect", settingsEffect, glint::cli::effectNames());
+
     std::string infoPath;
     bool headerOnly = false;
     CLI::App* info = app.add_subcommand("info", "Describe a frame capture (.exr) or a sequence folder");
@@ -46,10 +51,11 @@ int main(int argc, char** argv) {
                            "depth pyramid: do not copy the input into level 0");
     benchCommand->add_option("--scene", bench.scene,
                              "sssr: scene file to simulate (default: the glossy room)");
-    benchCommand->add_option("--set", bench.settings, "sssr: a setting, name=value (repeatable)");
+    benchCommand->add_option("--set", bench.settings, "a setting, name=value (repeatable; glint settings)");
+    benchCommand->footer(glint::cli::settingsHelp());
     benchCommand
         ->add_option("--effects", bench.effects,
-                     "captures: depth_pyramid, reflections, shadows (default: declared)")
+                     "captures: " + glint::cli::effectNames() + " (default: declared)")
         ->delimiter(',');
     benchCommand->add_option("--json", bench.json,
                              "captures: also write the results as JSON to FILE ('-': stdout)");
@@ -97,9 +103,10 @@ int main(int argc, char** argv) {
         command->add_option("--map", options.mapPath, "channel map of a foreign capture (docs/replay.md)");
         command
             ->add_option("--effects", options.effects,
-                         "depth_pyramid, reflections, shadows (default: declared)")
+                         glint::cli::effectNames() + " (default: declared)")
             ->delimiter(',');
-        command->add_option("--set", options.settings, "a setting, name=value (repeatable)");
+        command->add_option("--set", options.settings, "a setting, name=value (repeatable; glint settings)");
+        command->footer(glint::cli::settingsHelp());
     };
     CLI::App* runCommand =
         app.add_subcommand("run", "Replay a capture through its effects; write outputs and a summary");
@@ -140,6 +147,7 @@ int main(int argc, char** argv) {
 
     try {
         if (*devices) return glint::cli::runDevices(validate);
+        if (*settings) return glint::cli::runSettings(settingsEffect);
         if (*info) return glint::cli::runInfo(infoPath, !headerOnly);
         if (*simulateCommand) {
             if (!simulateSize.empty() &&

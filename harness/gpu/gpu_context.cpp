@@ -1,7 +1,7 @@
 // Instance, validation layer, device and queue for the harness.
 #include <gpu/gpu_context.h>
 
-#include "vulkan/vk_check.h"
+#include "glint/vulkan/vk_check.h"
 
 #include <algorithm>
 #include <cstdlib>

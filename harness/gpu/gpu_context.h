@@ -5,7 +5,7 @@
 #include <gpu/gpu_devices.h>
 #include <gpu/gpu_validation.h>
 
-#include "vulkan/vk_device.h"
+#include "glint/vulkan/vk_device.h"
 
 #include <functional>
 #include <memory>

@@ -1,7 +1,7 @@
 // Device enumeration and the GLINT_DEVICE selection rule.
 #include <gpu/gpu_devices.h>
 
-#include "vulkan/vk_check.h"
+#include "glint/vulkan/vk_check.h"
 
 #include <algorithm>
 #include <cctype>

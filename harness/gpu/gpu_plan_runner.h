@@ -6,7 +6,7 @@
 #include <gpu/gpu_context.h>
 
 #include "glint/glint_pass.h"
-#include "vulkan/vk_executor.h"
+#include "glint/vulkan/vk_executor.h"
 
 #include <map>
 #include <string>

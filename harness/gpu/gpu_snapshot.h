@@ -5,7 +5,7 @@
 
 #include <gpu/gpu_context.h>
 
-#include "vulkan/vk_resources.h"
+#include "glint/vulkan/vk_resources.h"
 
 namespace glint::gpu {
 

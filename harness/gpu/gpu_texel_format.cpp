@@ -4,7 +4,7 @@
 
 #include <gpu/gpu_half.h>
 
-#include "vulkan/vk_resources.h"
+#include "glint/vulkan/vk_resources.h"
 
 #include <algorithm>
 #include <cmath>

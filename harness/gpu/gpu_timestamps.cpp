@@ -2,7 +2,7 @@
 // after submitAndWait, so waiting costs nothing and an unwritten query is a bug, not a race.
 #include <gpu/gpu_timestamps.h>
 
-#include "vulkan/vk_check.h"
+#include "glint/vulkan/vk_check.h"
 
 #include <stdexcept>
 #include <string>

@@ -2,7 +2,7 @@
 // submission finished. Only meaningful within one command buffer/queue; compare pairs.
 #pragma once
 
-#include "vulkan/vk_device.h"
+#include "glint/vulkan/vk_device.h"
 
 #include <cstdint>
 #include <vector>

@@ -20,7 +20,7 @@
 
 #include <gpu/gpu_context.h>
 
-#include "vulkan/vk_resources.h"
+#include "glint/vulkan/vk_resources.h"
 
 #include <cstddef>
 #include <span>

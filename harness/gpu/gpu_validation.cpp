@@ -2,7 +2,7 @@
 // from, concurrently, hence the atomics and the mutex.
 #include <gpu/gpu_validation.h>
 
-#include "vulkan/vk_check.h"
+#include "glint/vulkan/vk_check.h"
 
 #include <cstdio>
 

@@ -3,37 +3,38 @@
 // counters. The engine of `glint run`, `glint dump`, `glint check`, `glint bench` on captures
 // and `glint study`.
 //
-// Image names are "<effect>/<image>" and each names the pass that produced it, so that dump and
-// check can select by pass. Effects and what they return:
-//   depth_pyramid  mip<k> (closest depth per level, the pyramid SSSR would read)
-//   reflections    input (lit colour), noisy (SSSR radiance), denoised (with denoise),
-//                  composite (with composite), confidence, reference (when the capture has one)
-//                  + intermediates: pyramid_mip<k>, roughness, ray_list (1 traced, 0 not),
-//                  tile_list (1 listed 8x8 tile), ray_class, iterations (debugOutput), variance
-//   shadows        noisy (visibility), denoised, variance, reference (when the capture has one)
-//                  + intermediates: mask (the packed bits), tile_class (0 filtered, 1 cleared
-//                  shadow, 3 cleared lit), moments (mean, M2, n)
+// Every effect is reached through its descriptor (glint_effect.h): the session plans each
+// frame from the capture's camera and the settings, fills the effect's inputs by kind, runs the
+// plan through one gpu::EffectRunner and returns the outputs the plan names. Image names are
+// "<effect>/<output>" and each names the pass that produced it ("<effect>/input" for inputs
+// and references), so that dump and check can select by pass.
 #pragma once
 
 #include "capture/capture_frame.h"
 #include "capture/environment_io.h"
 #include "replay/replay_settings.h"
+
+#include "glint/glint_effect.h"
 #include "report/report_image.h"
 
 #include <gpu/gpu_context.h>
+#include <gpu/gpu_input_images.h>
 
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
 
 namespace glint::replay {
 
-// The effects replay knows, in the order they run.
-const std::vector<std::string>& knownEffects();
+// The effects replay knows (every registered effect), in the order they run.
+std::vector<std::string> knownEffects();
 
 // `requested` (or, when empty, the frame's declared effects), checked against what the frame
 // can feed. Throws std::invalid_argument with one line naming the effect and the missing layer.
-std::vector<std::string> effectsToRun(const capture::Frame& frame, const std::vector<std::string>& requested);
+// A setting gates an input (composite needs the base colour), so the check sees the settings.
+std::vector<std::string> effectsToRun(const capture::Frame& frame, const std::vector<std::string>& requested,
+                                      const SettingValues& settings = defaultSettings(effectRegistry()));
 
 struct NamedImage {
     std::string name; // "reflections/denoised"
@@ -61,7 +62,7 @@ struct FrameResult {
 
 struct SessionOptions {
     std::vector<std::string> effects; // empty: the first frame's declared effects
-    EffectSettings settings;
+    SettingValues settings = defaultSettings(effectRegistry());
     bool intermediates = false; // also every intermediate (glint dump)
     bool readback = true;       // false: timings and counters only (benchmarks)
 };
@@ -84,18 +85,22 @@ class Session {
     FrameResult repeat();
     const std::vector<std::string>& effects() const { return effects_; }
 
-    struct Reflections;
-    struct Shadows;
-    struct Pyramid;
+    struct Running;
 
   private:
+    void dispatch(Running& effect, const FrameInfo& info, FrameResult& result);
+    void uploadInputs(const capture::Frame& frame, bool reset);
+
     const gpu::Context& context_;
+    const capture::Environment& environment_;
     SessionOptions options_;
     std::vector<std::string> effects_;
+    std::vector<std::unique_ptr<Running>> running_;
+    std::unique_ptr<gpu::InputImages> inputs_;
+    std::map<InputKind, std::vector<float>> uploaded_; // this frame's inputs, for the shown ones
+    std::vector<float> previousDepth_;
+    FrameInfo last_;
     std::uint32_t width_ = 0, height_ = 0, frame_ = 0;
-    std::unique_ptr<Pyramid> pyramid_;
-    std::unique_ptr<Reflections> reflections_;
-    std::unique_ptr<Shadows> shadows_;
 };
 
 } // namespace glint::replay

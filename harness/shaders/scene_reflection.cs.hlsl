@@ -51,7 +51,7 @@ float3 SceneSampleVndf(float3 ve, float alpha, float u1, float u2)
         float3 tx = normalize(cross(up, n));
         float3 ty = cross(n, tx);
         float3 v = -dir;
-        // conventions.md §5: never a lower-hemisphere view; clamp its z.
+        // docs/conventions.md §5: never a lower-hemisphere view; clamp its z.
         float3 ve = normalize(float3(dot(v, tx), dot(v, ty), max(dot(v, n), 1e-4)));
         float alpha = max(s.perceptualRoughness * s.perceptualRoughness, 1e-4);
         float3 start = SceneOffsetOrigin(s.position, n);

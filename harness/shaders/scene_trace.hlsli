@@ -139,7 +139,7 @@ float2 SceneUvOfPixel(uint2 pixel)
     return (float2(pixel) + 0.5) / float2(g_scene.size);
 }
 
-// Screen UV of a homogeneous clip position (conventions.md §1); w is kept away from zero so
+// Screen UV of a homogeneous clip position (docs/conventions.md §1); w is kept away from zero so
 // that points behind the camera still give finite values.
 float2 SceneUvOfClip(float4 clip)
 {

@@ -71,5 +71,6 @@ void GLINT_SHADOW_DENOISER_StoreMoments(int2 pixel, float4 moments)
     c.viewDepth = g_glint_check_constants.viewDepth;
     c.ndcYSign = g_glint_check_constants.ndcYSign;
     c.flags = g_glint_check_constants.flags;
+    c.storedVarianceScale = g_glint_check_constants.storedVarianceScale;
     GLINT_SHADOW_DENOISER_Classify(groupId.xy, groupThreadId, c);
 }

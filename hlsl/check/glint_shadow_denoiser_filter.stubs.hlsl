@@ -1,5 +1,5 @@
 // Stub callbacks for the header check of glint_shadow_denoiser_filter.hlsli. The check compiles
-// the header without tile skipping; the entry's "skip" permutation compiles it with.
+// the header without tile skipping; the entry's "list" permutations compile it with.
 RWStructuredBuffer<float4> g_glint_check;
 
 float2 GLINT_SHADOW_DENOISER_LoadMeanVariance(int2 pixel)

@@ -116,7 +116,7 @@ Mat4 openGlProjection(const Camera& c) {
     return p;
 }
 
-// The glint projection with reversed depth (conventions.md §2): d = n (f - z) / (z (f - n)).
+// The glint projection with reversed depth (docs/conventions.md §2): d = n (f - z) / (z (f - n)).
 Mat4 reversedProjection(const Camera& c) {
     Mat4 p = c.projection;
     const double n = c.nearZ, f = c.farZ;
@@ -125,7 +125,7 @@ Mat4 reversedProjection(const Camera& c) {
     return p;
 }
 
-// View depth of a standard device depth, conventions.md §2.
+// View depth of a standard device depth, docs/conventions.md §2.
 double viewDepth(double d, double n, double f) {
     return n * f / (f - d * (f - n));
 }
@@ -367,7 +367,7 @@ depth_convention = "standard"
                 const double nx = v[0] * n[0] + v[1] * n[1] + v[2] * n[2];
                 const double ny = v[4] * n[0] + v[5] * n[1] + v[6] * n[2];
                 const double nz = v[8] * n[0] + v[9] * n[1] + v[10] * n[2];
-                // Octahedral encoding, conventions.md §5.
+                // Octahedral encoding, docs/conventions.md §5.
                 const double l1 = std::abs(nx) + std::abs(ny) + std::abs(nz);
                 double px = nx / l1, py = ny / l1;
                 if (nz < 0.0) {

@@ -2,7 +2,7 @@
 // the same header; reflection of the compiled module is the independent witness.
 #include "core/shader_library.h"
 #include "glint/gbuffer/glint_gbuffer_constants.h"
-#include "vulkan/vk_reflect.h"
+#include "glint/vulkan/vk_reflect.h"
 
 #include <catch2/catch.hpp>
 

@@ -1,5 +1,5 @@
 #include "core/shader_library.h"
-#include "vulkan/vk_reflect.h"
+#include "glint/vulkan/vk_reflect.h"
 
 #include <catch2/catch.hpp>
 

@@ -1,6 +1,6 @@
 // Requested level counts (fewer than the tile's 7, exactly 7, one coarse level, the full
 // chain) and the completion counter: back at 0 after a build, and a stale count left by an
-// aborted frame is cleared by the host before the dispatch (defect 9 of the references).
+// aborted frame is cleared by the host before the dispatch (docs/conventions.md, defect DP9).
 #include "depth_pyramid/depth_inputs.h"
 #include "depth_pyramid/pyramid_runner.h"
 #include "support/gpu_test_context.h"

@@ -1,6 +1,6 @@
 // Non-finite and out-of-range depths: NaN and +-Inf become the far plane, the rest is clamped
-// to [0, 1], -0 becomes +0, and nothing non-finite reaches any level (defect 8 of the
-// references: FMin/FMax with a NaN operand is undefined).
+// to [0, 1], -0 becomes +0, and nothing non-finite reaches any level (docs/conventions.md,
+// defect DP8: FMin/FMax with a NaN operand is undefined).
 #include "depth_pyramid/depth_inputs.h"
 #include "depth_pyramid/pyramid_runner.h"
 #include "support/gpu_test_context.h"

@@ -115,7 +115,7 @@ TEST_CASE("one pass of 256-thread groups covers level 0 in 64x64 tiles", "[plan]
 }
 
 TEST_CASE("image and constants share one level count and describe the same layout", "[plan]") {
-    // Defects 1 and 5 of the references: the shader built more levels than were allocated.
+    // docs/conventions.md, defects DP1 and DP5: the shader built more levels than were allocated.
     for (const std::uint32_t levels : {0u, 1u, 3u, 7u, 8u, 11u}) {
         INFO("levelCount " << levels);
         const EffectPlan plan =

@@ -6,7 +6,7 @@
 #include "reference/depth_pyramid_reference.h"
 
 #include "glint/glint_depth_pyramid.h"
-#include "vulkan/vk_executor.h"
+#include "glint/vulkan/vk_executor.h"
 
 #include <gpu/gpu_context.h>
 

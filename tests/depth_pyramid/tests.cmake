@@ -6,7 +6,7 @@ glint_add_test_suite(NAME depth_pyramid_unit LABELS unit
     depth_pyramid/reference_test.cpp
     depth_pyramid/depth_inputs.cpp
     reference/depth_pyramid_reference.cpp
-  LIBS glint_core)
+  LIBS glint_core glint_internal)
 
 # The reference and its brute-force checker scan every level-0 pixel once per level; keep
 # them fast in Debug (sanitizers stay on).

@@ -5,7 +5,7 @@
 #include "support/gpu_test_context.h"
 
 #include "glint/glint_gbuffer.h"
-#include "vulkan/vk_executor.h"
+#include "glint/vulkan/vk_executor.h"
 
 #include <gpu/gpu_transfer.h>
 

@@ -1,6 +1,6 @@
 #include "gbuffer/roughness_runner.h"
 
-#include "vulkan/vk_executor.h"
+#include "glint/vulkan/vk_executor.h"
 
 #include <gpu/gpu_timestamps.h>
 #include <gpu/gpu_transfer.h>

@@ -3,7 +3,7 @@
 
 #include <gpu/gpu_timestamps.h>
 
-#include "vulkan/vk_resources.h"
+#include "glint/vulkan/vk_resources.h"
 
 #include <catch2/catch.hpp>
 

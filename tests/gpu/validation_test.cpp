@@ -4,7 +4,7 @@
 
 #include <gpu/gpu_context.h>
 
-#include "vulkan/vk_resources.h"
+#include "glint/vulkan/vk_resources.h"
 
 #include <catch2/catch.hpp>
 

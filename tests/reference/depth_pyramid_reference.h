@@ -1,5 +1,5 @@
 // Independent CPU reference for the hierarchical depth pyramid, written from the contract in
-// host/include/glint/glint_depth_pyramid.h and shared/reference/depth_pyramid.md, not from
+// host/include/glint/glint_depth_pyramid.h and docs/depth_pyramid.md, not from
 // the HLSL. Two parts that share nothing but the sanitization rule's statement:
 //   - buildDepthPyramid: the exact expected texels (min/max are exact, so the GPU must match
 //     bit for bit);

@@ -1,4 +1,4 @@
-// Independent CPU reference for roughness extraction, written from conventions.md section 4
+// Independent CPU reference for roughness extraction, written from docs/conventions.md §4
 // (alpha = r^2, convert once) and the header's stated policy for bad input, not from the HLSL.
 #pragma once
 

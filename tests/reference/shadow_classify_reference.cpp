@@ -1,5 +1,7 @@
 #include "reference/shadow_classify_reference.h"
 
+#include "glint/common/glint_wire_formats.h"
+
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -52,7 +54,7 @@ ShadowClassifyOutputs shadowClassify(const ShadowClassifyInputs& in) {
     auto z = [&](int x, int y) { return viewDepthOf(in.depth[idx(x, y)], in.viewDepth); };
     auto rowSum = [&](int x, int y) {
         const int row = std::clamp(y, 0, h - 1);
-        const int shift = (row & 3) * 8;
+        const std::uint32_t shift = shared::GLINT_WIRE_ShadowMaskBit(0u, static_cast<std::uint32_t>(row));
         const std::uint32_t left = (word((x >> 3) - 1, row >> 2) >> shift) & 0xFFu;
         const std::uint32_t centre = (word(x >> 3, row >> 2) >> shift) & 0xFFu;
         const std::uint32_t right = (word((x >> 3) + 1, row >> 2) >> shift) & 0xFFu;
@@ -66,8 +68,11 @@ ShadowClassifyOutputs shadowClassify(const ShadowClassifyInputs& in) {
         return std::pair{lit, 1.0f - lit};
     };
 
+    auto maskBit = [](int x, int y) {
+        return shared::GLINT_WIRE_ShadowMaskBit(static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y));
+    };
     auto sampleBit = [&](int x, int y) {
-        return ((word(x >> 3, y >> 2) >> ((y & 3) * 8 + (x & 7))) & 1u) ? 1.0f : 0.0f;
+        return ((word(x >> 3, y >> 2) >> maskBit(x, y)) & 1u) ? 1.0f : 0.0f;
     };
     // Anti-lag: a static history predicts this frame's bits; a window whose bits contradict
     // last frame's accumulation (compared pixel for pixel, so the penumbra's own shape does not
@@ -133,7 +138,8 @@ ShadowClassifyOutputs shadowClassify(const ShadowClassifyInputs& in) {
             const bool allLit = andMask == 0xFFFFFFFFu;
             const bool clear = !anyReceiver || allLit || orMask == 0u;
             out.metadata[std::size_t(gy) * std::size_t(groupsX) + std::size_t(gx)] =
-                (clear ? 1u : 0u) | (clear && anyReceiver && allLit ? 2u : 0u);
+                (clear ? GLINT_WIRE_SHADOW_TILE_CLEAR : 0u) |
+                (clear && anyReceiver && allLit ? GLINT_WIRE_SHADOW_TILE_LIGHT : 0u);
             for (int y = gy * 8; y < std::min(gy * 8 + 8, h); ++y)
                 for (int x = gx * 8; x < std::min(gx * 8 + 8, w); ++x) {
                     const std::size_t p = idx(x, y);
@@ -158,8 +164,7 @@ ShadowClassifyOutputs shadowClassify(const ShadowClassifyInputs& in) {
                     // mean (1 - mean), with 1 - mean summed as such.
                     const float spatialVariance = std::max(mean * std::clamp(shadowed, 0.0f, 1.0f), 0.0f);
                     const float spatialSigma = std::sqrt(spatialVariance);
-                    const float sample =
-                        ((word(x >> 3, y >> 2) >> ((y & 3) * 8 + (x & 7))) & 1u) ? 1.0f : 0.0f;
+                    const float sample = ((word(x >> 3, y >> 2) >> maskBit(x, y)) & 1u) ? 1.0f : 0.0f;
 
                     int mx = x, my = y;
                     float closest = zc;
@@ -241,7 +246,7 @@ ShadowClassifyOutputs shadowClassify(const ShadowClassifyInputs& in) {
                     const float spread =
                         n < 16.0f ? std::max(temporalVariance, spatialVariance) * std::max(16.0f - n, 1.0f)
                                   : temporalVariance;
-                    const float variance = spread / samples * in.filterVarianceScale;
+                    const float variance = spread / samples * in.storedVarianceScale;
                     const float alpha = std::max(1.0f / samples, 1.0f / 64.0f);
                     float result = std::clamp(clamped + (sample - clamped) * alpha, 0.0f, 1.0f);
                     result = finite(result) ? result : 0.0f;

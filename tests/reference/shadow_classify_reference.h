@@ -23,7 +23,7 @@ struct ShadowClassifyInputs {
     float ndcYSign = 1.0f;
     bool reset = false;
     bool antiLag = true;                      // the 5x5 anti-lag test
-    float filterVarianceScale = 1.0f / 16.0f; // times the variance of the accumulated mean
+    float storedVarianceScale = 1.0f / 16.0f; // times the variance of the accumulated mean
 };
 
 struct ShadowClassifyOutputs {

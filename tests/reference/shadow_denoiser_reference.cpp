@@ -1,5 +1,7 @@
 #include "reference/shadow_denoiser_reference.h"
 
+#include "glint/common/glint_wire_formats.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -14,11 +16,13 @@ std::vector<std::uint32_t> packShadowMask(const std::vector<float>& visibility, 
     for (std::uint32_t ty = 0; ty < tilesY; ++ty)
         for (std::uint32_t tx = 0; tx < tilesX; ++tx) {
             std::uint32_t word = 0;
-            for (std::uint32_t bit = 0; bit < 32; ++bit) {
-                const std::uint32_t x = std::min(tx * 8 + (bit & 7u), width - 1);
-                const std::uint32_t y = std::min(ty * 4 + (bit >> 3), height - 1);
-                if (visibility[std::size_t{y} * width + x] >= 0.5f) word |= 1u << bit;
-            }
+            for (std::uint32_t row = 0; row < 4; ++row)
+                for (std::uint32_t column = 0; column < 8; ++column) {
+                    const std::uint32_t x = std::min(tx * 8 + column, width - 1);
+                    const std::uint32_t y = std::min(ty * 4 + row, height - 1);
+                    if (visibility[std::size_t{y} * width + x] >= 0.5f)
+                        word |= 1u << shared::GLINT_WIRE_ShadowMaskBit(column, row);
+                }
             mask[std::size_t{ty} * tilesX + tx] = word;
         }
     return mask;

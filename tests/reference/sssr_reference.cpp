@@ -1,5 +1,7 @@
 #include "reference/sssr_reference.h"
 
+#include "glint/common/glint_wire_formats.h"
+
 #include <algorithm>
 #include <cassert>
 #include <cmath>
@@ -21,13 +23,15 @@ bool sssrNormalValid(float x, float y, float z) {
     return std::sqrt(lengthSquared) > 1e-6;
 }
 
+// Both entries are the wire formats the shaders write (glint/common/glint_wire_formats.h).
 std::uint32_t packSssrRay(std::uint32_t x, std::uint32_t y, bool copyH, bool copyV, bool copyD) {
     assert(x < (1u << 15) && y < (1u << 14));
-    return x | (y << 15) | (copyH ? kSssrCopyH : 0u) | (copyV ? kSssrCopyV : 0u) | (copyD ? kSssrCopyD : 0u);
+    return shared::GLINT_WIRE_PackRayEntry(
+        x, y, (copyH ? kSssrCopyH : 0u) | (copyV ? kSssrCopyV : 0u) | (copyD ? kSssrCopyD : 0u));
 }
 
 std::uint32_t packSssrTile(std::uint32_t tileX, std::uint32_t tileY) {
-    return ((tileX * 8u) & 0xFFFFu) | ((tileY * 8u) << 16);
+    return shared::GLINT_WIRE_PackTileEntry(tileX * 8u, tileY * 8u);
 }
 
 SssrClassification sssrClassify(const SssrClassifyInputs& in) {

@@ -1,5 +1,5 @@
 // CPU references of SSSR tile classification (pass 2) and of the ray march of the
-// intersection pass (pass 5) at texel granularity (docs/sssr.md, conventions §2 and §8),
+// intersection pass (pass 5) at texel granularity (docs/sssr.md, docs/conventions.md §2 and §8),
 // written from the specification, independent of the shaders.
 #pragma once
 
@@ -12,7 +12,8 @@ namespace glint::reference {
 // ---------------------------------------------------------------------------------------------
 // Shared rules
 
-// Background (conventions §2): non-finite, outside [0, 1], or within 1e-6 of the far plane.
+// Background (docs/conventions.md §2.2): non-finite, outside [0, 1], or within 1e-6 of the far
+// plane.
 // Evaluated in float, as the shaders do (1 - 1e-6 is not representable; the float
 // constants 1.0f - 1e-6f and 1e-6f are the thresholds).
 bool sssrIsBackground(float depth, bool reversedDepth);
@@ -20,7 +21,8 @@ bool sssrIsBackground(float depth, bool reversedDepth);
 // A normal is usable when all components are finite and its length exceeds 1e-6.
 bool sssrNormalValid(float x, float y, float z);
 
-// Ray-list entry (conventions §8): x in bits 0-14, y in bits 15-28, copy H/V/D in 29/30/31.
+// Ray-list entry (docs/conventions.md §8): x in bits 0-14, y in bits 15-28, copy H/V/D in
+// 29/30/31.
 std::uint32_t packSssrRay(std::uint32_t x, std::uint32_t y, bool copyH, bool copyV, bool copyD);
 // Tile-list entry: the tile's top-left pixel, (x & 0xFFFF) | (y << 16).
 std::uint32_t packSssrTile(std::uint32_t tileX, std::uint32_t tileY);

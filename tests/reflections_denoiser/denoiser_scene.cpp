@@ -1,10 +1,11 @@
 #include "reflections_denoiser/denoiser_scene.h"
 
 #include "capture/mat4.h"
-#include "replay/replay_sssr.h"
+#include "glint/common/glint_wire_formats.h"
 #include "scene/scene_file.h"
 #include "scene/scene_simulate.h"
 #include "support/gpu_test_context.h"
+#include "support/test_replay.h"
 
 #include <gpu/gpu_transfer.h>
 
@@ -78,11 +79,14 @@ void requireFiniteOverTiles(const gpu::SssrRunner& runner, const gpu::SssrFrameO
     INFO(name);
     const std::vector<float> texels = gpu::readbackImage(testContext(), runner.ownedImage(name));
     const std::size_t channels = texels.size() / (std::size_t{out.width} * out.height);
-    for (std::uint32_t tile : out.tileList)
-        for (std::uint32_t y = tile >> 16; y < std::min(out.height, (tile >> 16) + 8); ++y)
-            for (std::uint32_t x = tile & 0xFFFFu; x < std::min(out.width, (tile & 0xFFFFu) + 8); ++x)
+    for (std::uint32_t tile : out.tileList) {
+        const std::uint32_t tileX = shared::GLINT_WIRE_TileEntryX(tile),
+                            tileY = shared::GLINT_WIRE_TileEntryY(tile);
+        for (std::uint32_t y = tileY; y < std::min(out.height, tileY + 8); ++y)
+            for (std::uint32_t x = tileX; x < std::min(out.width, tileX + 8); ++x)
                 for (std::size_t c = 0; c < channels; ++c)
                     REQUIRE(std::isfinite(texels[(std::size_t{y} * out.width + x) * channels + c]));
+    }
 }
 
 void uploadPoisonedFrame(gpu::SssrRunner& runner, const gpu::SssrFrameInputs& clean, std::uint32_t index) {

@@ -8,7 +8,7 @@
 #include "glint/glint_reflections_denoiser.h"
 #include "glint/glint_sssr.h"
 
-#include <gpu/gpu_sssr_runner.h>
+#include "support/test_sssr_runner.h"
 
 #include <string>
 #include <vector>

@@ -4,7 +4,7 @@
 #include "reflections_denoiser/denoiser_scene.h"
 #include "support/gpu_test_context.h"
 
-#include "replay/replay_sssr.h"
+#include "support/test_replay.h"
 
 #include <catch2/catch.hpp>
 

@@ -1,8 +1,8 @@
 // NaN and Inf injected into every history and into the inputs never survive to the next
 // frame's output: every output and every history the frame writes is finite.
 #include "reflections_denoiser/denoiser_scene.h"
-#include "replay/replay_sssr.h"
 #include "support/gpu_test_context.h"
+#include "support/test_replay.h"
 
 #include <gpu/gpu_transfer.h>
 

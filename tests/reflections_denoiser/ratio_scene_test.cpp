@@ -1,8 +1,9 @@
 // The ratio-estimator path on simulated scenes: SSSR's stored rays, static convergence on the
 // glossy room next to the default (prefilter) path, and non-finite histories and inputs.
+#include "glint/common/glint_wire_formats.h"
 #include "reflections_denoiser/denoiser_scene.h"
-#include "replay/replay_sssr.h"
 #include "support/gpu_test_context.h"
+#include "support/test_replay.h"
 
 #include <gpu/gpu_transfer.h>
 
@@ -73,7 +74,8 @@ TEST_CASE("SSSR's stored rays: the radiance is unchanged, every glossy pixel has
             REQUIRE(glossy > 500u);
             std::size_t copies = 0;
             for (std::uint32_t entry : b.rayList) {
-                const std::uint32_t x = entry & 0x7FFFu, y = (entry >> 15) & 0x3FFFu;
+                const std::uint32_t x = shared::GLINT_WIRE_RayEntryX(entry),
+                                    y = shared::GLINT_WIRE_RayEntryY(entry);
                 const std::uint32_t flips[3][2] = {{1, 0}, {0, 1}, {1, 1}};
                 for (std::uint32_t k = 0; k < 3; ++k) {
                     if ((entry & (0x20000000u << k)) == 0) continue;

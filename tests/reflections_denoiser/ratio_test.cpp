@@ -5,6 +5,7 @@
 #include "reference/reflections_denoiser_ratio_reference.h"
 #include "support/gpu_test_context.h"
 
+#include "glint/common/glint_wire_formats.h"
 #include "glint/glint_reflections_denoiser.h"
 
 #include <gpu/gpu_plan_runner.h>
@@ -31,7 +32,7 @@ struct SyntheticFrame {
     ReflectionsDenoiserDesc desc;
     std::array<double, 9> worldFromView{}; // rotation, row-major
     std::vector<float> depth, normals, roughness, clamped, rays, variance, resolved, output;
-    std::vector<std::uint32_t> tiles; // listed tile origins, x | y << 16
+    std::vector<std::uint32_t> tiles; // listed tile origins (GLINT_WIRE_PackTileEntry)
     std::vector<std::uint8_t> listed; // per pixel: in a listed tile
 };
 
@@ -152,7 +153,8 @@ SyntheticFrame makeFrame(std::uint32_t seed, bool smoothNormals) {
         }
     for (std::uint32_t ty = 0; ty < kHeight / 8; ++ty)
         for (std::uint32_t tx = 0; tx < kWidth / 8; ++tx)
-            if (!(tx == 1 && ty == 1)) frame.tiles.push_back(tx * 8 | (ty * 8) << 16);
+            if (!(tx == 1 && ty == 1))
+                frame.tiles.push_back(shared::GLINT_WIRE_PackTileEntry(tx * 8, ty * 8));
     return frame;
 }
 

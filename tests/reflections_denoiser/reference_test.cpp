@@ -3,10 +3,11 @@
 // inputs of that pass (read back): the reproject pass's tile averages, the whole prefilter,
 // and the resolve's clip and blend. SSSR and the denoiser run on a simulated static scene for
 // a few frames so that histories exist; every frame is checked, the first one with a reset.
+#include "glint/common/glint_wire_formats.h"
 #include "reference/reflections_denoiser_reference.h"
 #include "reflections_denoiser/denoiser_scene.h"
-#include "replay/replay_sssr.h"
 #include "support/gpu_test_context.h"
+#include "support/test_replay.h"
 
 #include <gpu/gpu_snapshot.h>
 #include <gpu/gpu_transfer.h>
@@ -51,7 +52,7 @@ Rgb rgbAt(const std::vector<float>& rgba, std::size_t i) {
     return {rgba[4 * i], rgba[4 * i + 1], rgba[4 * i + 2]};
 }
 
-// Octahedral decode of the guides' normal (signed form in [-1, 1]^2, conventions.md section 5).
+// Octahedral decode of the guides' normal (signed form in [-1, 1]^2, docs/conventions.md §5).
 Rgb decodeOctahedral(double px, double py) {
     double x = px, y = py;
     const double z = 1.0 - std::abs(x) - std::abs(y), fold = std::max(-z, 0.0);
@@ -135,7 +136,8 @@ TEST_CASE("the denoiser's tile averages, prefilter and resolve match their CPU r
 
         std::vector<std::uint8_t> listed(std::size_t{tilesX} * tilesY, 0);
         for (std::uint32_t tile : out.tileList)
-            listed[std::size_t{(tile >> 16) / 8} * tilesX + (tile & 0xFFFFu) / 8] = 1;
+            listed[std::size_t{shared::GLINT_WIRE_TileEntryY(tile) / 8} * tilesX +
+                   shared::GLINT_WIRE_TileEntryX(tile) / 8] = 1;
         REQUIRE(!out.tileList.empty());
         auto inListedTile = [&](std::uint32_t x, std::uint32_t y) {
             return listed[std::size_t{y / 8} * tilesX + x / 8] != 0;

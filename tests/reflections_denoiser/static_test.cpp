@@ -2,8 +2,8 @@
 // reference.reflection over glossy pixels. The error must fall over the frames and end below
 // the raw single-frame error and below a stated bound.
 #include "reflections_denoiser/denoiser_scene.h"
-#include "replay/replay_sssr.h"
 #include "support/gpu_test_context.h"
+#include "support/test_replay.h"
 
 #include <catch2/catch.hpp>
 

@@ -10,7 +10,7 @@ glint_add_test_suite(NAME reflections_denoiser LABELS gpu
     reflections_denoiser/ratio_scene_test.cpp
     reference/reflections_denoiser_reference.cpp
     reference/reflections_denoiser_ratio_reference.cpp
-  LIBS glint_replay glint_scene glint_gpu_test_support glint_gpu)
+  LIBS glint_test_replay glint_replay glint_scene glint_gpu_test_support glint_gpu)
 
 glint_add_test_suite(NAME reflections_denoiser_unit LABELS unit
   SOURCES reflections_denoiser/plan_test.cpp

@@ -149,7 +149,7 @@ TEST_CASE("G-buffer and motion of an analytic scene match CPU ray casting and re
     CHECK(moving > 50);
     CHECK(worstDepth < 2e-5);
     CHECK(worstNormal > 0.9999);
-    // conventions.md §3: uv + mv equals the reprojection to within 1e-3 px.
+    // docs/conventions.md §3: uv + mv equals the reprojection to within 1e-3 px.
     CHECK(worstMotionPx < 1e-3);
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }

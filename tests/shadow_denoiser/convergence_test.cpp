@@ -4,7 +4,7 @@
 #include "shadow_denoiser/scene_replay.h"
 #include "support/gpu_test_context.h"
 
-#include "replay/replay_sssr.h"
+#include "replay/replay_frame.h"
 #include "scene/scene_file.h"
 #include "scene/scene_simulate.h"
 
@@ -61,13 +61,11 @@ TEST_CASE("static courtyard: the penumbra error converges to the plain input ave
     }
     INFO("penumbra MAE: frame 0 " << first << ", frame " << kFrames - 1 << " " << last << ", plain "
                                   << kFrames << "-frame average of the input " << averaged);
-    // Measured on lavapipe at 160x90 over 32 frames (the FidelityFX-style version before the
-    // fix: 0.155 at frame 0, best 0.108 at frame 6, 0.155 at frame 15, 0.147 at frame 31):
-    // frame 0 0.201, frames 0-3 mean 0.17, frame 15 0.085, frame 31 0.068 against 0.0663 for the
-    // plain 32-frame average of the input. The error now falls monotonically (to within noise)
-    // towards the plain average; it does NOT get below it at this size: only ~130 pixels are
-    // penumbra and their penumbrae are 1-3 pixels wide, so even a 3x3 blur of the converged
-    // reference itself has an error of 0.104 there, and any spatial filtering adds bias.
+    // The error falls (to within noise) towards the plain average of the input and must end
+    // within 5 % of it; it cannot get below it at this size: only ~130 pixels are penumbra and
+    // their penumbrae are 1-3 pixels wide, so any spatial filtering adds more bias than it
+    // removes noise, and the best a denoiser can do is the running mean. The values these bounds
+    // leave margin for are in docs/shadow_denoiser.md ("Validation", "Convergence").
     CHECK(late < 0.6 * early);
     CHECK(last < 0.5 * first);
     CHECK(last < 1.05 * averaged);

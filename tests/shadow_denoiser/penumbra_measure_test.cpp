@@ -8,7 +8,7 @@
 #include "shadow_denoiser/scene_replay.h"
 #include "support/gpu_test_context.h"
 
-#include "replay/replay_sssr.h"
+#include "replay/replay_frame.h"
 #include "scene/scene_file.h"
 #include "scene/scene_simulate.h"
 

@@ -24,33 +24,28 @@ TEST_CASE("shadow plan: passes, resources and sizes", "[plan]") {
     EffectPlan plan;
     std::string error;
     REQUIRE(planShadowDenoiser(desc, plan, &error) == Result::Ok);
-    // Fused: prepare, classify, one filter dispatch of 16x16 groups.
-    desc.fusedFilter = true;
+    // One classification dispatch (every binding of the pass): sizes, buffers, the frame parity.
+    desc.splitClassify = false;
     REQUIRE(planShadowDenoiser(desc, plan, &error) == Result::Ok);
-    REQUIRE(plan.passes.size() == 3);
+    REQUIRE(plan.passes.size() == 4);
     CHECK(plan.passes[0].name == "prepare");
     CHECK(plan.passes[1].name == "classify");
-    CHECK(plan.passes[2].name == "filter");
+    CHECK(plan.passes[2].name == "filter01");
     CHECK(std::get<DirectDispatch>(plan.passes[0].dispatch).groupsX == 1);
     CHECK(std::get<DirectDispatch>(plan.passes[1].dispatch).groupsX == 2);
     CHECK(std::get<DirectDispatch>(plan.passes[1].dispatch).groupsY == 1);
-    REQUIRE(plan.buffers.size() == 4);
-    CHECK(plan.buffers[3].name == "shadow_filter_work");
-    CHECK(plan.passes[2].pipeline == "shadow_denoiser_filter.fused_skip_r8");
-    CHECK(plan.passes[2].zeroBuffers == std::vector<std::string>{"shadow_filter_work"});
-    CHECK(plan.passes[2].groupSize[0] == 16);
-    CHECK(std::get<DirectDispatch>(plan.passes[2].dispatch).groupsX == 1);
+    REQUIRE(plan.buffers.size() == 6);
     CHECK(plan.buffers[0].name == "shadow_mask");
     CHECK(plan.buffers[0].size == 2 * 2 * 4);
     CHECK(plan.buffers[1].name == "shadow_tile_metadata0");
     CHECK(plan.buffers[1].size == 2 * 1 * 4);
     CHECK(plan.buffers[2].name == "shadow_tile_metadata1");
-    // scratch 0, moments 0/1, output: the fused filter needs no second scratch image.
-    CHECK(plan.images.size() == 4);
+    CHECK(plan.buffers[3].name == "shadow_filter_work");
     // Moments and metadata ping-pong on the frame parity; the filter reads this frame's.
     CHECK(plan.passes[1].uses[9].resource == "shadow_moments0");
     CHECK(plan.passes[1].uses[6].resource == "shadow_tile_metadata1");
     CHECK(plan.passes[1].uses[7].resource == "shadow_tile_metadata0");
+    CHECK(plan.passes[2].uses[4].resource == "shadow_tile_metadata0");
     desc.frameIndex = 1;
     REQUIRE(planShadowDenoiser(desc, plan, &error) == Result::Ok);
     CHECK(plan.passes[1].uses[9].resource == "shadow_moments1");
@@ -58,10 +53,10 @@ TEST_CASE("shadow plan: passes, resources and sizes", "[plan]") {
     CHECK(plan.passes[1].uses[6].resource == "shadow_tile_metadata0");
     CHECK(plan.passes[1].uses[7].resource == "shadow_tile_metadata1");
     CHECK(plan.passes[2].uses[4].resource == "shadow_tile_metadata1");
+    desc.frameIndex = 0;
     CHECK(shadowMaskTiles({1917, 1077}).width == 240);
     CHECK(shadowMaskTiles({1917, 1077}).height == 270);
 
-    // Classification skips the clear tiles' (shadow, variance) stores only for the fused filter.
     const auto classifyFlags = [&] {
         using Constants = shaders::GLINT_ShadowDenoiserClassifyConstants;
         REQUIRE(plan.passes[1].constants.size() == sizeof(Constants));
@@ -71,12 +66,12 @@ TEST_CASE("shadow plan: passes, resources and sizes", "[plan]") {
     };
     constexpr std::uint32_t kDefaults =
         GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_ANTI_LAG | GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_REBUILD_CLEAR;
-    CHECK(classifyFlags() == (GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_SKIP_CLEAR | kDefaults));
+    CHECK(classifyFlags() == kDefaults);
 
     // The default: classification in two parts ("classify" over every tile, 2x2 tiles a
     // group; "temporal" indirect over the tiles it lists), then "filter01" (steps 1 and 2) and
     // "filter2", indirect over the same list (prepare resets it).
-    desc.fusedFilter = false;
+    desc.splitClassify = true;
     REQUIRE(planShadowDenoiser(desc, plan, &error) == Result::Ok);
     REQUIRE(plan.passes.size() == 5);
     CHECK(plan.passes[0].pipeline == "shadow_denoiser_prepare.list");
@@ -182,7 +177,7 @@ ExpectedPass scratchPass(const char* name, const char* pipeline) {
 struct PlanVariant {
     const char* what;
     struct {
-        bool classify, skipClearedTiles, splitClassify, pairedFilter, fusedFilter;
+        bool classify, skipClearedTiles, splitClassify, pairedFilter;
     } flags;
     std::vector<ExpectedPass> passes; // after "prepare"
 };
@@ -211,7 +206,7 @@ TEST_CASE("shadow plan: the output format picks the final output's format and pe
     const ExpectedPass plainClassify = scratchPass("classify", "shadow_denoiser_classify");
     const std::vector<PlanVariant> variants = {
         {"default",
-         {true, true, true, true, false},
+         {true, true, true, true},
          {{"classify",
            {"shadow_denoiser_classify.tiles", "shadow_denoiser_classify.tiles_r16f",
             "shadow_denoiser_classify.tiles_r8"}},
@@ -219,30 +214,18 @@ TEST_CASE("shadow plan: the output format picks the final output's format and pe
           scratchPass("filter01", "shadow_denoiser_filter.pair_list"),
           listFilter2}},
         {"one classification dispatch, three filter dispatches",
-         {true, true, false, false, false},
+         {true, true, false, false},
          {{"classify",
            {"shadow_denoiser_classify.list", "shadow_denoiser_classify.list_r16f",
             "shadow_denoiser_classify.list_r8"}},
           scratchPass("filter0", "shadow_denoiser_filter.list"),
           scratchPass("filter1", "shadow_denoiser_filter.list"),
           listFilter2}},
-        {"fused with tile skipping",
-         {true, true, true, true, true},
-         {plainClassify,
-          {"filter",
-           {"shadow_denoiser_filter.fused_skip", "shadow_denoiser_filter.fused_skip_r16f",
-            "shadow_denoiser_filter.fused_skip_r8"}}}},
-        {"fused without tile skipping",
-         {true, false, true, true, true},
-         {plainClassify,
-          {"filter",
-           {"shadow_denoiser_filter.fused", "shadow_denoiser_filter.fused_r16f",
-            "shadow_denoiser_filter.fused_r8"}}}},
         {"paired without tile skipping",
-         {true, false, true, true, false},
+         {true, false, true, true},
          {plainClassify, scratchPass("filter01", "shadow_denoiser_filter.pair"), plainFilter2}},
         {"three filter dispatches without classification",
-         {false, true, true, false, false},
+         {false, true, true, false},
          {scratchPass("filter0", "shadow_denoiser_filter"), scratchPass("filter1", "shadow_denoiser_filter"),
           plainFilter2}},
     };
@@ -255,7 +238,6 @@ TEST_CASE("shadow plan: the output format picks the final output's format and pe
             desc.skipClearedTiles = variant.flags.skipClearedTiles;
             desc.splitClassify = variant.flags.splitClassify;
             desc.pairedFilter = variant.flags.pairedFilter;
-            desc.fusedFilter = variant.flags.fusedFilter;
             REQUIRE(planShadowDenoiser(desc, plan, &error) == Result::Ok);
             REQUIRE(findImage(plan, "shadow_output") != nullptr);
             CHECK(findImage(plan, "shadow_output")->format == formats[f]);
@@ -318,26 +300,27 @@ TEST_CASE("shadow plan: invalid descriptions are refused", "[plan]") {
     CHECK(planShadowDenoiser(desc, plan, &error) == Result::InvalidArgument);
     CHECK(error.find("shadow denoiser") == 0);
     desc.normalPower = 32.0f;
-    desc.filterVarianceScale = -1.0f;
+    desc.storedVarianceScale = -1.0f;
     CHECK(planShadowDenoiser(desc, plan, &error) == Result::InvalidArgument);
-    desc.filterVarianceScale = std::numeric_limits<float>::infinity();
+    CHECK(error.find("storedVarianceScale") != std::string::npos);
+    desc.storedVarianceScale = std::numeric_limits<float>::infinity();
     CHECK(planShadowDenoiser(desc, plan, &error) == Result::InvalidArgument);
 }
 
-// The automatic filter variance scale: 1/16 up to 360 rows, (rows / 360)^2 / 16 above; an
-// explicit value wins; the classify constants carry it in eyePosition.w.
-TEST_CASE("shadow plan: the filter variance scale follows the image height", "[plan]") {
+// The automatic stored variance scale: 1/16 up to 360 rows, (rows / 360)^2 / 16 above; an
+// explicit value wins; the classify constants carry it in their own field.
+TEST_CASE("shadow plan: the stored variance scale follows the image height", "[plan]") {
     ShadowDenoiserDesc desc;
     desc.size = {160, 90};
-    CHECK(shadowFilterVarianceScale(desc) == 0.0625f);
+    CHECK(shadowStoredVarianceScale(desc) == 0.0625f);
     desc.size = {640, 360};
-    CHECK(shadowFilterVarianceScale(desc) == 0.0625f);
+    CHECK(shadowStoredVarianceScale(desc) == 0.0625f);
     desc.size = {1920, 1080};
-    CHECK(shadowFilterVarianceScale(desc) == Approx(0.5625f));
+    CHECK(shadowStoredVarianceScale(desc) == Approx(0.5625f));
     desc.size = {3840, 2160};
-    CHECK(shadowFilterVarianceScale(desc) == Approx(2.25f));
-    desc.filterVarianceScale = 0.25f;
-    CHECK(shadowFilterVarianceScale(desc) == 0.25f);
+    CHECK(shadowStoredVarianceScale(desc) == Approx(2.25f));
+    desc.storedVarianceScale = 0.25f;
+    CHECK(shadowStoredVarianceScale(desc) == 0.25f);
     EffectPlan plan;
     std::string error;
     REQUIRE(planShadowDenoiser(desc, plan, &error) == Result::Ok);
@@ -345,7 +328,8 @@ TEST_CASE("shadow plan: the filter variance scale follows the image height", "[p
     REQUIRE(plan.passes[1].name == "classify");
     REQUIRE(plan.passes[1].constants.size() == sizeof(constants));
     std::memcpy(&constants, plan.passes[1].constants.data(), sizeof(constants));
-    CHECK(constants.eyePosition.w == 0.25f);
+    CHECK(constants.storedVarianceScale == 0.25f);
+    CHECK(constants.eyePosition.w == 0.0f);
 }
 
 TEST_CASE("shadow mask layout: one byte per row, leftmost pixel in bit 0, edges clamp", "[reference]") {

@@ -1,6 +1,6 @@
 #include "shadow_denoiser/scene_replay.h"
 
-#include "replay/replay_shadow.h"
+#include "support/test_replay.h"
 
 namespace glint::test {
 

@@ -58,8 +58,8 @@ ShadowInputs makeShadowInputs(std::uint32_t width, std::uint32_t height, std::ui
 
 // The previous depth is 40% farther in the left quarter. The motion is deliberately not a
 // multiple of half a pixel: with (1.5, -0.5) every previous position lands exactly on a pixel edge, where the
-// history pixel index is discontinuous and a one-ulp difference in GPU arithmetic (seen on NVIDIA) picks the
-// neighbour's history.
+// history pixel index is discontinuous and a one-ulp difference in GPU arithmetic (which devices may have)
+// picks the neighbour's history.
 ShadowInputs movingShadowInputs(std::uint32_t width, std::uint32_t height, std::uint32_t seed) {
     ShadowInputs inputs = makeShadowInputs(width, height, seed);
     for (std::size_t i = 0; i < inputs.motion.size(); i += 2) {

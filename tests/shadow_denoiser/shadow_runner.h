@@ -4,7 +4,7 @@
 
 #include "glint/glint_shadow_denoiser.h"
 
-#include <gpu/gpu_shadow_runner.h>
+#include "support/test_shadow_runner.h"
 
 #include <cstdint>
 #include <vector>

@@ -4,7 +4,7 @@ glint_add_test_suite(NAME shadow_denoiser_unit LABELS unit
   SOURCES
     shadow_denoiser/plan_test.cpp
     reference/shadow_denoiser_reference.cpp
-  LIBS glint_core)
+  LIBS glint_core glint_internal)
 
 glint_add_test_suite(NAME shadow_denoiser LABELS gpu
   SOURCES
@@ -15,7 +15,7 @@ glint_add_test_suite(NAME shadow_denoiser LABELS gpu
     reference/shadow_classify_reference.cpp
     shadow_denoiser/shadow_runner.cpp
     reference/shadow_denoiser_reference.cpp
-  LIBS glint_gpu_test_support glint_gpu)
+  LIBS glint_test_runners glint_gpu_test_support glint_gpu)
 
 # The denoiser on simulated scenes (simulator: harness/scene): a static one converges, a moving
 # occluder and a moving light are followed.
@@ -26,4 +26,4 @@ glint_add_test_suite(NAME shadow_denoiser_scene LABELS gpu
     shadow_denoiser/penumbra_measure_test.cpp
     shadow_denoiser/scene_replay.cpp
     shadow_denoiser/shadow_runner.cpp
-  LIBS glint_replay glint_scene glint_gpu_test_support glint_gpu)
+  LIBS glint_test_replay glint_replay glint_scene glint_gpu_test_support glint_gpu)

@@ -12,11 +12,12 @@
 // (0.2590-0.2593 at 16-48 spp).
 #include "support/gpu_test_context.h"
 
-#include "replay/replay_sssr.h"
+#include "glint/common/glint_wire_formats.h"
 #include "scene/scene_file.h"
 #include "scene/scene_simulate.h"
+#include "support/test_replay.h"
 
-#include <gpu/gpu_sssr_runner.h>
+#include "support/test_sssr_runner.h"
 
 #include <catch2/catch.hpp>
 
@@ -225,8 +226,8 @@ ConvergenceNumbers measureConvergence(const std::string& name, std::uint32_t spp
 
 std::vector<std::uint32_t> tracedPixels(const gpu::SssrFrameOutputs& out) {
     std::vector<std::uint32_t> pixels;
-    for (const std::uint32_t entry : out.rayList) // x in bits 0-14, y in bits 15-28
-        pixels.push_back((entry >> 15 & 0x3FFFu) * kWidth + (entry & 0x7FFFu));
+    for (const std::uint32_t entry : out.rayList)
+        pixels.push_back(shared::GLINT_WIRE_RayEntryY(entry) * kWidth + shared::GLINT_WIRE_RayEntryX(entry));
     return pixels;
 }
 
@@ -289,10 +290,10 @@ TEST_CASE("static glossy room: the frame average matches the reference where the
 // reference at the median pixel; its error comes from sparse hit/miss flips, which averaging
 // removes, and the average keeps a bias: samples with confidence < 1 mix in the environment
 // (lum 0.65) instead of the wall (0.24), mostly where lobes reach wall that is off screen.
-// (A correct hit entering a texel of a wall seen at a grazing angle through its side used to
-// lose confidence: the gap was measured against the texel-centre depth only. It is now also
-// measured against the texel's plane where the depth is planar across it, which raised this
-// mask from 587 to 747 pixels and lowered the error over all glossy pixels too.)
+// (A correct hit can enter a texel of a wall seen at a grazing angle through its side; the gap
+// is therefore also taken against the texel's plane where the depth is planar across it, so
+// that such hits keep their confidence and their pixels stay in the mask: docs/sssr.md,
+// "Accuracy on simulated scenes".)
 TEST_CASE("static glossy room: averaging 32 frames removes most of the single-frame error",
           "[sssr][convergence]") {
     const ConvergenceNumbers& n = glossyRoom();
@@ -305,8 +306,8 @@ TEST_CASE("static mirror corridor: the frame average matches the reference where
           "[sssr][convergence]") {
     const ConvergenceNumbers n = measureConvergence("mirror_corridor.toml", 16);
     CHECK(n.mask >= 2800u);
-    // Measured 0.138 over 4442 px. With the texel-centre gap alone it was 0.116 over 4200 px:
-    // the wall stripes it rejected are now in the mask, and they are harder pixels.
+    // Measured 0.138 over 4442 px. The mask includes the grazing wall stripes that the plane gap
+    // accepts, which are harder pixels (docs/sssr.md, "Accuracy on simulated scenes").
     CHECK(n.averaged.mean < 0.175);
     CHECK(n.averaged.mean < 0.25 * n.environment.mean); // measured 0.138 against 0.945
     CHECK(n.mirrors > 1000u);

@@ -2,6 +2,7 @@
 // hit + mv(hit), and the confidence takes the smaller vignette of the two positions. With a
 // black environment, radiance = confidence x colour, so colour = radiance / confidence is
 // compared with the CPU's bilinear fetch of a smooth colour field at the reprojected hit.
+#include "glint/common/glint_wire_formats.h"
 #include "sssr/sssr_test_scene.h"
 #include "support/gpu_test_context.h"
 
@@ -44,7 +45,8 @@ TEST_CASE("previous-frame colour mode fetches the colour at the reprojected hit"
     const gpu::SssrFrameOutputs out = runner.readback();
     std::size_t checked = 0;
     for (std::uint32_t entry : out.rayList) {
-        const std::size_t x = entry & 0x7FFFu, y = (entry >> 15) & 0x3FFFu, i = y * w + x;
+        const std::size_t x = shared::GLINT_WIRE_RayEntryX(entry), y = shared::GLINT_WIRE_RayEntryY(entry),
+                          i = y * w + x;
         const float confidence = out.confidence[i];
         if (out.rayInfo[4 * i + 2] != 0.0f || confidence < 0.25f) continue; // confident hits only
         const double u = out.rayInfo[4 * i] / w + mvU, v = out.rayInfo[4 * i + 1] / h + mvV;

@@ -5,7 +5,7 @@
 
 #include "glint/glint_sssr.h"
 
-#include <gpu/gpu_sssr_runner.h>
+#include "support/test_sssr_runner.h"
 
 #include <array>
 #include <cstdint>

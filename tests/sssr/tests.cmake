@@ -14,10 +14,10 @@ glint_add_test_suite(NAME sssr LABELS gpu
     sssr/previous_frame_test.cpp
     sssr/sssr_test_scene.cpp
     reference/sssr_reference.cpp
-  LIBS glint_gpu_test_support glint_gpu)
+  LIBS glint_test_runners glint_internal glint_gpu_test_support glint_gpu)
 
 # SSSR on simulated scenes (simulator: harness/scene): the multi-frame average against
 # reference.reflection, and half-resolution coverage and stability.
 glint_add_test_suite(NAME sssr_scene LABELS gpu
   SOURCES sssr/convergence_test.cpp
-  LIBS glint_replay glint_scene glint_gpu_test_support glint_gpu)
+  LIBS glint_test_replay glint_replay glint_scene glint_gpu_test_support glint_gpu)

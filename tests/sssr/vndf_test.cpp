@@ -1,6 +1,6 @@
 // GGX visible-normal sampling (hlsl/glint/common/glint_ggx.hlsli) on the device, through the
 // harness shader test_ggx_sample, against densities written here in double from the textbook
-// formulas (sssr.md, "Direction sampling: GGX VNDF"):
+// formulas (Heitz 2018; Dupuy and Benyoub 2023; docs/sssr.md, "Intersection": Direction):
 //   - chi-square goodness of fit of the sampled reflections L over the whole sphere, with and
 //     without Frostbite's importance-sample bias, and the same statistic failing for a wrong
 //     alpha or a wrong bias (the test can tell);
@@ -9,7 +9,7 @@
 #include "glint/glint_pass.h"
 #include "scene/scene_shaders.h"
 #include "support/gpu_test_context.h"
-#include "vulkan/vk_executor.h"
+#include "glint/vulkan/vk_executor.h"
 
 #include <gpu/gpu_plan_runner.h>
 #include <gpu/gpu_transfer.h>
@@ -420,7 +420,8 @@ TEST_CASE(
                          << " cells); as unbiased: " << misfit.statistic << " > " << misfit.bound);
             CHECK(fit.statistic < fit.bound);
             CHECK(misfit.statistic > misfit.bound);
-            // The pdf output is the unbiased formula whatever the bias (sssr.md keeps it).
+            // The pdf output is the unbiased formula whatever the bias (docs/sssr.md,
+            // "Intersection": the stored pdf is bias-free).
             CHECK(maxRelativeError(lobe, outputs) < 1e-4);
         }
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
@@ -476,7 +477,8 @@ TEST_CASE("hard inputs give finite samples and densities, alpha 0 mirrors and bi
         const Dir view = xyz(in.viewAlpha);
         const double alpha = std::max(static_cast<double>(in.viewAlpha[3]), 1e-4); // the library's floor
         // u.y = 0 or bias = 1: the cap's pole, c = N, so Nh = N + Vh, the bisector of N and Vh in
-        // the stretched space (sssr.md), unstretched. 1e-5: float rounding of a few operations.
+        // the stretched space (Dupuy and Benyoub 2023), unstretched. 1e-5: float rounding of a few
+        // operations.
         if (in.uBias[1] == 0.0f || in.uBias[2] == 1.0f) {
             const Dir vh = normalized({alpha * view.x, alpha * view.y, view.z});
             const Dir centre = normalized({alpha * vh.x, alpha * vh.y, 1 + vh.z});

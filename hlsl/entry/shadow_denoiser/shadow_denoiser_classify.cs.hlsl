@@ -31,7 +31,7 @@ void GLINT_SHADOW_DENOISER_AppendFilterTile(uint2 tile)
 {
     uint index;
     InterlockedAdd(g_glint_filter_args[0], 1u, index);
-    g_glint_filter_tiles[index] = tile.x | (tile.y << 16);
+    g_glint_filter_tiles[index] = GLINT_WIRE_PackTileEntry(tile.x, tile.y);
 }
 
 void GLINT_SHADOW_DENOISER_StoreClearOutput(int2 pixel, float2 value)
@@ -42,7 +42,7 @@ void GLINT_SHADOW_DENOISER_StoreClearOutput(int2 pixel, float2 value)
 uint2 GLINT_SHADOW_DENOISER_LoadFilterTile(uint listIndex)
 {
     uint packed = g_glint_filter_tiles[listIndex];
-    return uint2(packed & 0xFFFFu, packed >> 16);
+    return uint2(GLINT_WIRE_TileEntryX(packed), GLINT_WIRE_TileEntryY(packed));
 }
 #endif
 
@@ -116,6 +116,6 @@ void GLINT_SHADOW_DENOISER_StoreMoments(int2 pixel, float4 moments)
     c.viewDepth = g_glint_constants.viewDepth;
     c.ndcYSign = g_glint_constants.ndcYSign;
     c.flags = g_glint_constants.flags;
-    c.filterVarianceScale = g_glint_constants.eyePosition.w;
+    c.storedVarianceScale = g_glint_constants.storedVarianceScale;
     GLINT_SHADOW_DENOISER_Classify(groupId.xy, groupThreadId, c);
 }

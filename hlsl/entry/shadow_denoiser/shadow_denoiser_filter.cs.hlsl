@@ -2,11 +2,9 @@
 // bindings, callbacks, main. Engines read this file as the integration example for
 // glint/shadow_denoiser/glint_shadow_denoiser_filter.hlsli.
 //
-// Permutations: GLINT_SHADOW_DENOISER_FILTER_FUSED=1 runs the three iterations in
-// one dispatch of 16x16 groups (finalPass then selects the contrast remap);
-// GLINT_SHADOW_DENOISER_TILE_LIST=1 dispatches indirectly over the tiles classification listed;
-// GLINT_SHADOW_DENOISER_TILE_SKIP=1 (fused only) skips groups of cleared tiles. Both count the
-// tiles they filter. GLINT_SHADOW_DENOISER_FILTER_PAIR=1 runs steps 1 and 2 in one dispatch.
+// Permutations: GLINT_SHADOW_DENOISER_TILE_LIST=1 dispatches indirectly over the tiles
+// classification listed and counts the tiles it filters; GLINT_SHADOW_DENOISER_FILTER_PAIR=1
+// runs steps 1 and 2 in one dispatch.
 // GLINT_SHADOW_DENOISER_OUTPUT_FORMAT (shadow_denoiser_output.hlsli) picks the output's format:
 // rg32f for the scratch images, any for the final output (the plan picks the last step's).
 #include "entry/common/glint_entry_common.hlsli"
@@ -25,10 +23,9 @@
 uint2 GLINT_SHADOW_DENOISER_LoadFilterTile(uint listIndex)
 {
     uint packed = g_glint_filter_tiles[listIndex];
-    return uint2(packed & 0xFFFFu, packed >> 16);
+    return uint2(GLINT_WIRE_TileEntryX(packed), GLINT_WIRE_TileEntryY(packed));
 }
-#endif
-#if GLINT_SHADOW_DENOISER_TILE_SKIP || GLINT_SHADOW_DENOISER_TILE_LIST
+
 [[vk::binding(5, 0)]] StructuredBuffer<uint> g_glint_tile_metadata;
 [[vk::binding(6, 0)]] RWStructuredBuffer<uint> g_glint_filter_work;
 
@@ -65,15 +62,7 @@ void GLINT_SHADOW_DENOISER_StoreFiltered(int2 pixel, float2 meanVariance)
     g_glint_filter_output[pixel] = GLINT_SHADOW_DENOISER_OUTPUT_TEXEL(meanVariance);
 }
 
-#if GLINT_SHADOW_DENOISER_FILTER_FUSED
-[numthreads(GLINT_SHADOW_DENOISER_FILTER_FUSED_TILE, GLINT_SHADOW_DENOISER_FILTER_FUSED_TILE, 1)] void main(
-    uint3 groupId : SV_GroupID, uint groupIndex : SV_GroupIndex)
-{
-    GLINT_SHADOW_DENOISER_FilterFused(groupId.xy, groupIndex, g_glint_constants.inputSize,
-                                      g_glint_constants.finalPass != 0, g_glint_constants.viewDepth,
-                                      g_glint_constants.depthSigma, g_glint_constants.normalPower);
-}
-#elif GLINT_SHADOW_DENOISER_FILTER_PAIR
+#if GLINT_SHADOW_DENOISER_FILTER_PAIR
 [numthreads(8, 8, 1)] void main(uint3 groupId : SV_GroupID, uint3 groupThreadId : SV_GroupThreadID,
                                 uint groupIndex : SV_GroupIndex)
 {

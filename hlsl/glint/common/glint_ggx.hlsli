@@ -3,7 +3,7 @@
 // and the tangent frame that takes world directions into the sampler's local frame.
 //
 // Integration: include from any glint header; defines no resources and needs no callbacks.
-// Conventions (docs: conventions.md sections 4 and 5):
+// Conventions (docs/conventions.md §4 and §5):
 //   - every function takes GGX alpha (= perceptualRoughness^2), never perceptual roughness;
 //   - "local" means a tangent frame with z = the shading normal N (GLINT_GGX_TangentFrame);
 //   - V points away from the surface (towards the viewer), unit length, V.z > 0. A shading
@@ -18,14 +18,14 @@
 #define GLINT_GGX_PI 3.14159265358979
 
 // alpha below this is treated as this. alpha = 0 is a mirror (a delta NDF) that no float
-// pdf can express; 1e-4 is the references' mirror threshold (conventions.md section 4), so
+// pdf can express; 1e-4 is the references' mirror threshold (docs/conventions.md §4), so
 // everything the passes call "mirror" samples and evaluates as the same narrow, finite lobe:
 // D peaks at 1 / (pi alpha^2) ~ 3.2e7, far inside float range, and the lobe is ~1e-4 rad wide,
 // far below a texel's footprint.
 #define GLINT_GGX_MIN_ALPHA 1e-4
 
 // GLINT_GGX_BendNormalTowardView makes N.V at least this. It is twice the 1e-4 that
-// conventions.md section 5 asks for, so that rounding in the bend (~1e-7) cannot take the
+// docs/conventions.md §5 asks for, so that rounding in the bend (~1e-7) cannot take the
 // result below 1e-4.
 #define GLINT_GGX_BENT_NDOTV 2e-4
 
@@ -83,7 +83,8 @@ float GLINT_GGX_SmithG1(float NdotV, float alpha)
 // N.V -> 0. NdotH = N.normalize(V + L). Directions below the horizon (N.L <= 0) have this
 // density too: the sampler produces them and the pdf must count them.
 // With bias b > 0 the sampler's true density differs (it is this one restricted to the
-// reachable cap and divided by 1 - b); callers deliberately keep this one (sssr.md).
+// reachable cap and divided by 1 - b); callers deliberately keep this one (docs/sssr.md,
+// "Intersection": the stored pdf and the environment LOD are bias-free).
 float GLINT_GGX_ReflectionPdf(float NdotV, float NdotH, float alpha)
 {
     return GLINT_GGX_D(NdotH, alpha) / (2.0 * GLINT_GGX_SmithDenominator(NdotV, alpha));
@@ -100,10 +101,10 @@ float GLINT_GGX_ReflectionPdf(float NdotV, float NdotH, float alpha)
 // (s -> 1). At s = 0, c = (0, 0, 1) and Nh = N + Vh bisects N and Vh: the lobe centre, whose
 // reflection is the stretched mirror direction; larger s moves away from it.
 //
-// Importance-sample bias (Frostbite, sssr.md): s = (1 - bias) u.y shrinks s towards 0, i.e.
-// towards the lobe centre: samples come only from the part of the cap nearest the pole,
-// z in (bias - (1 - bias) Vh.z, 1], which sharpens the reflection and lowers noise at the
-// cost of a biased estimate. bias = 0 is the unbiased sampler; bias = 1 always returns the
+// Importance-sample bias (Frostbite; docs/sssr.md, "Parameters"): s = (1 - bias) u.y shrinks s
+// towards 0, i.e. towards the lobe centre: samples come only from the part of the cap nearest
+// the pole, z in (bias - (1 - bias) Vh.z, 1], which sharpens the reflection and lowers noise at
+// the cost of a biased estimate. bias = 0 is the unbiased sampler; bias = 1 always returns the
 // lobe centre.
 float3 GLINT_GGX_SampleVndf(float3 Vlocal, float alpha, float2 u, float bias)
 {
@@ -173,7 +174,7 @@ float3 GLINT_GGX_ToWorld(float3 v, float3 t, float3 b, float3 n)
 
 // A unit shading normal facing the unit view direction v: n itself when n.v >= 2e-4,
 // otherwise n rotated towards v in the plane of n and v until n.v = 2e-4 (the smallest
-// change that makes V sampleable; conventions.md section 5, VNDF needs V.z > 0). Normal maps
+// change that makes V sampleable; docs/conventions.md §5, VNDF needs V.z > 0). Normal maps
 // produce such back-facing normals at grazing angles. When n = -v the plane is undefined and
 // any direction perpendicular to v serves; the frame around v supplies one.
 float3 GLINT_GGX_BendNormalTowardView(float3 n, float3 v)

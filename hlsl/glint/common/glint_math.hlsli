@@ -22,7 +22,7 @@ float GLINT_Saturate(float x)
     return clamp(x, 0.0, 1.0);
 }
 
-// GGX alpha from perceptual (artist) roughness: alpha = r^2 (conventions.md section 4).
+// GGX alpha from perceptual (artist) roughness: alpha = r^2 (docs/conventions.md §4).
 float GLINT_AlphaFromPerceptualRoughness(float perceptualRoughness)
 {
     return perceptualRoughness * perceptualRoughness;

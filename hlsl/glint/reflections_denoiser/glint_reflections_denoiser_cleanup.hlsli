@@ -56,7 +56,7 @@ void GLINT_RD_Cleanup(GLINT_ReflectionsDenoiserRatioConstants r, uint groupId, u
 {
     GLINT_ReflectionsDenoiserConstants c = r.common;
     uint entry = GLINT_RD_LoadTile(groupId);
-    uint2 tileOrigin = uint2(entry & 0xFFFFu, entry >> 16);
+    uint2 tileOrigin = uint2(GLINT_WIRE_TileEntryX(entry), GLINT_WIRE_TileEntryY(entry));
     uint localIndex = local.y * GLINT_RD_TILE + local.x;
     for (uint i = localIndex; i < GLINT_RD_CLEANUP_SPAN * GLINT_RD_CLEANUP_SPAN;
          i += GLINT_RD_TILE * GLINT_RD_TILE)

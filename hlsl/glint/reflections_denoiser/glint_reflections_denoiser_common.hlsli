@@ -10,6 +10,7 @@
 #define GLINT_REFLECTIONS_DENOISER_COMMON_HLSLI
 
 #include "glint/common/glint_math.hlsli"
+#include "glint/common/glint_wire_formats.h"
 #include "glint/reflections_denoiser/glint_reflections_denoiser_constants.h"
 
 uint GLINT_RD_LoadTile(uint index);
@@ -20,7 +21,7 @@ float GLINT_RD_LoadRoughness(int2 pixel);
 // The pixel's surface as the denoiser sees it: a glossy pixel has a finite depth inside the
 // depth range, a usable normal and alpha below the threshold. Only glossy pixels are ever
 // used as neighbours, so pixels of tiles nobody listed (which hold stale data) are never read
-// as if they were valid (reference defects 6 and 9).
+// as if they were valid (docs/conventions.md, defects RD6 and RD9).
 struct GLINT_RD_Surface
 {
     float3 normal;    // unit, world space
@@ -207,13 +208,13 @@ void GLINT_RD_ColumnStatistics(uint2 local, out float3 sum, out float3 sumSquare
 // samples: four values each.
 //
 // GLINT_RD_HALF_GROUPSHARED 1 (the 16-bit permutation's choice) carries them as four halves in
-// two words (x | y << 16, z | w << 16): half the bytes a groupshared read, which is what bounds
-// the statistics (measured: reproject -4.5 us, resolve -4.8 us at 1080p on an H100; the
-// prefilter's taps gained 0.2 us). With fp16 images (SSSR's radiance, the clamped and
-// prefiltered samples of the 16-bit permutation) that is lossless: the values were read from
-// halves. Every value is finite and within the fp16 range before it is narrowed, and the sums
-// stay 32-bit (reference defect 4). The default is 32-bit, as the reference asks: narrowing
-// 32-bit images' values would round them.
+// two words (x | y << 16, z | w << 16): half the bytes a groupshared read. Groupshared reads
+// bound the 9x9 statistics, so this is where the 16-bit permutation gains its speed
+// (docs/performance.md, "Reflections denoiser: groupshared spans"). With fp16 images (SSSR's
+// radiance, the clamped and prefiltered samples of the 16-bit permutation) that is lossless:
+// the values were read from halves. Every value is finite and within the fp16 range before it
+// is narrowed, and the sums stay 32-bit (docs/conventions.md, defect RD4). The default is
+// 32-bit, as that defect's rule requires: narrowing 32-bit images' values would round them.
 #ifndef GLINT_RD_HALF_GROUPSHARED
 #define GLINT_RD_HALF_GROUPSHARED 0
 #endif
@@ -257,7 +258,7 @@ float GLINT_RD_MaxHistoryLength(GLINT_ReflectionsDenoiserConstants c, float alph
     return max(8.0, float(c.maxHistoryLength) * (1.0 - exp(-100.0 * alpha)));
 }
 
-// Octahedral normal encoding for the guide history (conventions.md section 5).
+// Octahedral normal encoding for the guide history, signed form (docs/conventions.md §5).
 float2 GLINT_RD_EncodeNormal(float3 n)
 {
     float2 p = n.xy / (abs(n.x) + abs(n.y) + abs(n.z));
@@ -299,9 +300,9 @@ bool GLINT_RD_PixelListed(int2 pixel)
 // Slot (dy + 1) * 3 + dx + 1 holds tile + (dx, dy): rgb, a = 1 when the tile is usable.
 groupshared float4 g_glint_rd_tile_averages[9];
 
-// Tiles outside the tile grid, tiles not listed this frame (they hold stale averages: reference
-// defect 6) and tiles without a glossy pixel are not usable; a usable one's average is
-// sanitised, so that any weight times it is finite.
+// Tiles outside the tile grid, tiles not listed this frame (they hold stale averages:
+// docs/conventions.md, defect RD6) and tiles without a glossy pixel are not usable; a usable
+// one's average is sanitised, so that any weight times it is finite.
 void GLINT_RD_LoadTileAverages(GLINT_ReflectionsDenoiserConstants c, uint2 tile, uint localIndex)
 {
     if (localIndex < 9u)
@@ -320,7 +321,7 @@ void GLINT_RD_LoadTileAverages(GLINT_ReflectionsDenoiserConstants c, uint2 tile,
 // Bilinear average at a pixel of the group's tile (after the barrier that follows
 // GLINT_RD_LoadTileAverages) over the centres of the surrounding tiles, using only usable
 // tiles, renormalised (a used tile weighs at least 1e-4). Tile centres are at 8 i + 4, so the
-// lookup is aligned at every image size (reference defect 3).
+// lookup is aligned at every image size (docs/conventions.md, defect RD3).
 float3 GLINT_RD_AverageAt(uint2 pixel, uint2 tile)
 {
     float2 p = (float2(pixel) + 0.5) / float(GLINT_RD_TILE) - 0.5;

@@ -66,7 +66,7 @@ void GLINT_RD_PrefilterTap(inout GLINT_RD_PrefilterSums sums, uint centre, int2 
     uint index = uint(int(centre) + offset.y * GLINT_RD_PREFILTER_SPAN + offset.x);
     float4 q = GLINT_RD_UnpackSpanTexel(g_glint_rd_prefilter_radiance[index]);
     float4 qGeometry = g_glint_rd_prefilter_geometry[index];
-    // Relative depth difference (reference defect 5: the reference multiplies by z).
+    // Relative depth difference (docs/conventions.md, defect RD5: the reference multiplies by z).
     float exponent = 512.0 * log2(max(dot(geometry.xyz, qGeometry.xyz), 0.0)) -
                      abs(geometry.w - qGeometry.w) * rates.depth +
                      max(-length(average - q.rgb) * rates.radiance, GLINT_RD_LOG2_RADIANCE_FLOOR);
@@ -83,7 +83,7 @@ void GLINT_RD_PrefilterTap(inout GLINT_RD_PrefilterSums sums, uint centre, int2 
 void GLINT_RD_Prefilter(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint2 local)
 {
     uint entry = GLINT_RD_LoadTile(groupId);
-    uint2 tileOrigin = uint2(entry & 0xFFFFu, entry >> 16);
+    uint2 tileOrigin = uint2(GLINT_WIRE_TileEntryX(entry), GLINT_WIRE_TileEntryY(entry));
     uint localIndex = local.y * GLINT_RD_TILE + local.x;
     uint2 pixel = tileOrigin + local;
     bool inImage = all(pixel < c.inputSize);
@@ -145,12 +145,12 @@ void GLINT_RD_Prefilter(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint
     sums.radiance = centreWeight * own.rgb;
     sums.variance = centreWeight * centreWeight * own.a;
     sums.weight = centreWeight;
-    // The 15 fixed taps within 3 pixels (GLINT_RD_PREFILTER_APRON) of
-    // reference/reflections_denoiser.md, in its order. They are described there as Halton(2, 3)
+    // The reference's 15 fixed taps within 3 pixels (GLINT_RD_PREFILTER_APRON), in its order
+    // (docs/reflections_denoiser.md, "Prefilter"). The reference calls them Halton(2, 3)
     // points, but the first one, (0, 1), is not: trunc(8h - 4) of Halton index 1 gives (0, -1).
     // The table is kept as specified; the CPU reference uses the same one. Written out call by
     // call, so that every offset is a constant: a static const table indexed by the loop counter
-    // was a function-local array in SPIR-V, re-stored on every iteration.
+    // becomes a function-local array in SPIR-V, re-stored on every iteration.
     GLINT_RD_PrefilterTap(sums, centre, int2(0, 1), geometry, average, rates, varianceWeight);
     GLINT_RD_PrefilterTap(sums, centre, int2(-2, 1), geometry, average, rates, varianceWeight);
     GLINT_RD_PrefilterTap(sums, centre, int2(2, -3), geometry, average, rates, varianceWeight);

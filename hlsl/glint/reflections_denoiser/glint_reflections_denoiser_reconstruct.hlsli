@@ -88,7 +88,7 @@ void GLINT_RD_Reconstruct(GLINT_ReflectionsDenoiserRatioConstants r, uint groupI
 {
     GLINT_ReflectionsDenoiserConstants c = r.common;
     uint entry = GLINT_RD_LoadTile(groupId);
-    uint2 tileOrigin = uint2(entry & 0xFFFFu, entry >> 16);
+    uint2 tileOrigin = uint2(GLINT_WIRE_TileEntryX(entry), GLINT_WIRE_TileEntryY(entry));
     uint2 pixel = tileOrigin + local;
     if (any(pixel >= c.inputSize)) return;
     int2 ipixel = int2(pixel);

@@ -110,9 +110,10 @@ GLINT_RD_HistoryTaps GLINT_RD_FetchHistory(GLINT_ReflectionsDenoiserConstants c,
 // when the accepted taps carry at least half of the bilinear weight and every value they carry
 // is finite.
 //
-// Lean per tap (it runs 8 times a pixel): no tap value is sanitised. Alone this measured no
-// faster than sanitising every tap, but with the separable statistics it was (docs/performance.md,
-// "Eighth session"). A tap enters the sums through a select, so a
+// Lean per tap (it runs 8 times a pixel): no tap value is sanitised, because the one
+// finiteness test of the sums below covers every accepted tap; the smaller code is what the
+// separable statistics need to pay off (docs/performance.md, "Reflections denoiser reproject:
+// history taps without per-tap sanitising"). A tap enters the sums through a select, so a
 // rejected tap adds exactly nothing whatever it holds (stale, uninitialised or non-finite: a
 // product with a zero weight would not do, NaN * 0 is NaN). A non-finite guide rejects its tap
 // by itself: every comparison with NaN is false and an infinite misfit is not <= 0.105. A
@@ -162,7 +163,7 @@ GLINT_RD_History GLINT_RD_EvaluateHistory(GLINT_RD_HistoryTaps taps, GLINT_RD_Su
 void GLINT_RD_Reproject(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint2 local)
 {
     uint entry = GLINT_RD_LoadTile(groupId);
-    uint2 tileOrigin = uint2(entry & 0xFFFFu, entry >> 16);
+    uint2 tileOrigin = uint2(GLINT_WIRE_TileEntryX(entry), GLINT_WIRE_TileEntryY(entry));
     uint localIndex = local.y * GLINT_RD_TILE + local.x;
     uint2 pixel = tileOrigin + local;
     bool inImage = all(pixel < c.inputSize);
@@ -212,9 +213,9 @@ void GLINT_RD_Reproject(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint
     float3 current = GLINT_RD_UnpackSpanTexel(g_glint_rd_noisy[centre]).rgb; // the same value, one load fewer
 #endif
 
-    // The nearest hit of the 3x3 (one noisy hit distance is a poor parallax estimate: reference
-    // defect 11). First, so that the parallax candidate's taps are fetched before the 9x9
-    // statistics, which then hide their latency.
+    // The nearest hit of the 3x3 (one noisy hit distance is a poor parallax estimate:
+    // docs/conventions.md, defect RD11). First, so that the parallax candidate's taps are
+    // fetched before the 9x9 statistics, which then hide their latency.
     float hitDistance = GLINT_RD_MISS_DISTANCE;
     [unroll] for (int hy = -1; hy <= 1; ++hy)
         [unroll] for (int hx = -1; hx <= 1; ++hx)
@@ -262,7 +263,7 @@ void GLINT_RD_Reproject(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint
     float3 mean = weightSum > 0.0 ? sum / weightSum : current;
     float3 variance3 = weightSum > 0.0 ? abs(sumSquares / weightSum - mean * mean) : float3(0.0, 0.0, 0.0);
     float3 sigma = sqrt(variance3);
-    // Firefly clamp before any spatial reuse (reference defect 14).
+    // Firefly clamp before any spatial reuse (docs/conventions.md, defect RD14).
     current = min(current, mean + 3.0 * sigma);
 
     GLINT_RD_History history = (GLINT_RD_History)0;
@@ -293,7 +294,7 @@ void GLINT_RD_Reproject(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint
         float lumaHistory = max(GLINT_RD_Luma(history.radiance), 0.001);
         float difference = abs(lumaCurrent - lumaHistory) / max(max(lumaCurrent, lumaHistory), 0.5);
         // The variance is the running mean of the squared relative difference over the history
-        // (reference defect 10: the reference weights the history by 1/n instead).
+        // (docs/conventions.md, defect RD10: the reference weights the history by 1/n instead).
         temporalVariance = lerp(history.variance, difference * difference, 1.0 / historyLength);
         reprojected = history.radiance;
         contribution = lerp(current, history.radiance, 0.3);
@@ -321,8 +322,9 @@ void GLINT_RD_Reproject(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint
     // The tile's luminance-weighted average (bright outliers weigh less).
     float weight = surface.glossy && inImage ? max(exp(-0.3 * GLINT_RD_Luma(contribution)), 0.01) : 0.0;
     // In two rounds, eight threads summing eight values each and then one thread the eight sums:
-    // one barrier instead of the six of a pairwise tree (52.9 against 53.9 us for the pass at
-    // 1080p on an H100).
+    // one barrier instead of the six of a pairwise tree. The serial adds cost less than the
+    // barriers they replace (docs/performance.md, "Reflections denoiser reproject: tile average
+    // in two rounds").
     g_glint_rd_average[localIndex] = float4(contribution * weight, weight);
     GroupMemoryBarrierWithGroupSync();
     if (localIndex < GLINT_RD_TILE)

@@ -40,7 +40,7 @@ groupshared GLINT_RD_SpanTexel g_glint_rd_resolve_radiance[GLINT_RD_SPAN * GLINT
 void GLINT_RD_Resolve(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint2 local)
 {
     uint entry = GLINT_RD_LoadTile(groupId);
-    uint2 tileOrigin = uint2(entry & 0xFFFFu, entry >> 16);
+    uint2 tileOrigin = uint2(GLINT_WIRE_TileEntryX(entry), GLINT_WIRE_TileEntryY(entry));
     uint localIndex = local.y * GLINT_RD_TILE + local.x;
     uint2 pixel = tileOrigin + local;
     bool inImage = all(pixel < c.inputSize);

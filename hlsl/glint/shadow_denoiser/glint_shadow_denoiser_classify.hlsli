@@ -23,26 +23,27 @@
 //   void   GLINT_SHADOW_DENOISER_AppendFilterTile(uint2 tile);   once per tile that is not clear
 //   void   GLINT_SHADOW_DENOISER_StoreClearOutput(int2 pixel, float2 value);
 //          the filter's final (shadow, variance) of a clear tile's pixel (a one-channel output
-//          may keep .x only); its
-//          StoreShadowVariance is then skipped, as with GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_SKIP_CLEAR.
+//          may keep .x only); its StoreShadowVariance is then skipped (the filter rebuilds clear
+//          tiles from the metadata).
 // Every loaded value may be non-finite: such histories count as missing, such depths as sky.
 //
 // Dispatch: [numthreads(8, 8, GLINT_SHADOW_DENOISER_CLASSIFY_BLOCKS)]: 1 block (8x8 tile) a
 // group, ceil(W / 8) x ceil(H / 8) x 1 groups, unless GLINT_SHADOW_DENOISER_CLASSIFY_PART says:
 // - GLINT_SHADOW_DENOISER_CLASSIFY_PART_TILES (with the tile list): only the tile
 //   classification (metadata, list, clear tiles' output) of 2 x 2 blocks a group,
-//   ceil(W / 16) x ceil(H / 16) x 1 groups. With one block per group the ~95 % of clear tiles
-//   left the pass bound by the rate at which the GPU starts groups, not by their work (24.4
-//   against 13.3 us at 1080p on an H100 for an all-clear frame, docs/performance.md);
+//   ceil(W / 16) x ceil(H / 16) x 1 groups. With one block per group a pass over mostly clear
+//   tiles is bound by the rate at which the GPU starts groups, not by their work
+//   (docs/performance.md, "Sixth session");
 // - GLINT_SHADOW_DENOISER_CLASSIFY_PART_LISTED (with the tile list): the temporal part of the
 //   blocks the tiles part listed, one a group, dispatched indirectly from the list's arguments; it
 //   takes  uint2 GLINT_SHADOW_DENOISER_LoadFilterTile(uint listIndex)  as the filter does.
-// Both parts together write what the whole pass writes. (Four blocks a group for the whole
-// pass measured slower: its few busy groups then fill the SMs the clear ones would share.)
+// Both parts together write what the whole pass writes. The whole pass keeps one block a group:
+// with four, its few busy groups would fill the SMs the clear ones share (docs/performance.md).
 #ifndef GLINT_SHADOW_DENOISER_CLASSIFY_HLSLI
 #define GLINT_SHADOW_DENOISER_CLASSIFY_HLSLI
 
 #include "glint/common/glint_math.hlsli"
+#include "glint/common/glint_wire_formats.h"
 #include "glint/shadow_denoiser/glint_shadow_denoiser_constants.h"
 
 uint GLINT_SHADOW_DENOISER_LoadMask(int2 tile);
@@ -142,16 +143,16 @@ uint GLINT_SHADOW_DENOISER_BlockWord(uint q, uint2 tile, int dx, int tileY)
 // of block q (8x8 tile `tile`): the Gaussian weight of the lit samples, exact, and so is the
 // shadowed samples' weight, 1 minus it (the weights are multiples of 2^-20 summing to 1). The
 // spatial variance is mean (1 - mean), and in a window that is lit but for a few samples at its
-// edge 1 - mean is ~1e-5: taken as the difference of the 17x17 sum from 1, its rounding (which
-// depends on how a compiler contracts the sums into FMAs) changed that variance, the clamp radius
-// and the history length by up to 1 % on NVIDIA against the CPU reference; summed from the exact
-// row complements it is accurate in itself. Mask tiles outside the image clamp to the border
+// edge 1 - mean is ~1e-5: taken as the difference of the 17x17 sum from 1, its rounding would
+// depend on how a compiler contracts the sums into FMAs, and with it the variance, the clamp
+// radius and the history length; summed from the exact row complements it is accurate in itself
+// on every device. Mask tiles outside the image clamp to the border
 // tile (as the 18 words do).
 float GLINT_SHADOW_DENOISER_RowSum(uint q, uint2 tile, int x, int y, uint2 inputSize)
 {
     int row = clamp(y, 0, int(inputSize.y) - 1);
     int tileY = row >> 2;
-    uint shift = uint(row & 3) * 8u;
+    uint shift = GLINT_WIRE_ShadowMaskBit(0u, uint(row)); // the row's byte: its leftmost pixel's bit
     uint left = (GLINT_SHADOW_DENOISER_BlockWord(q, tile, -1, tileY) >> shift) & 0xFFu;
     uint centre = (GLINT_SHADOW_DENOISER_BlockWord(q, tile, 0, tileY) >> shift) & 0xFFu;
     uint right = (GLINT_SHADOW_DENOISER_BlockWord(q, tile, 1, tileY) >> shift) & 0xFFu;
@@ -212,7 +213,7 @@ float4 GLINT_SHADOW_DENOISER_AntiLagTexel(int2 current, int2 previous, uint2 inp
     float pastZ = GLINT_SHADOW_DENOISER_ClassifyViewDepth(GLINT_SHADOW_DENOISER_LoadPreviousDepth(previous), viewDepth);
     float4 loaded = GLINT_SHADOW_DENOISER_LoadHistory(previous, inputSize, viewDepth, flags);
     uint word = GLINT_SHADOW_DENOISER_LoadMask(int2(current.x >> 3, current.y >> 2));
-    bool bit = ((word >> (uint(current.y & 3) * 8u + uint(current.x & 7))) & 1u) != 0u;
+    bool bit = ((word >> GLINT_WIRE_ShadowMaskBit(uint(current.x), uint(current.y))) & 1u) != 0u;
     bool valid = inImage && GLINT_IsFinite(loaded.z) && GLINT_IsFinite(loaded.w) && loaded.z > 0.0;
     float samples = min(loaded.z, 1023.0);
     return float4(valid ? currentZ : -1.0, pastZ, clamp(loaded.w, 0.0, 1.0), bit ? samples : -samples);
@@ -315,8 +316,8 @@ bool GLINT_SHADOW_DENOISER_AntiLagWindow(bool candidate, int2 offset, uint q, ui
         uint windowBase = q * GLINT_SHADOW_DENOISER_ANTILAG_SLOTS;
         int2 uniformOffset = int2(int(low & 0xFFFFu) - 32768, int(low >> 16) - 32768);
         int2 origin = int2(tile * 8u) - radius;
-        // (Unrolling this loop, so that a thread's up to 3 positions load together, measured the
-        // same.)
+        // A loop: unrolling it, so that a thread's up to 3 positions load together, does not pay
+        // (docs/performance.md).
         for (uint i = localIndex; i < uint(span * span); i += 64u)
         {
             int2 current = origin + int2(int(i % uint(span)), int(i / uint(span)));
@@ -369,9 +370,9 @@ struct GLINT_ShadowDenoiserClassifyParams
     float4 viewDepth;
     float ndcYSign;
     uint flags; // GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_*
-    // The filter's edge stop sees this times the variance of the accumulated mean (the
-    // constants' eyePosition.w): larger filters settled penumbrae more (docs/shadow_denoiser.md).
-    float filterVarianceScale;
+    // Times the variance of the accumulated mean, stored for the filter's edge stop: larger
+    // values filter settled penumbrae more (docs/shadow_denoiser.md).
+    float storedVarianceScale;
 };
 
 // Motion of the closest receiver of the pixel's 2x2 quad (z: the pixel's own view depth).
@@ -499,8 +500,7 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint3 groupThreadId, GLINT_Sh
 #if GLINT_SHADOW_DENOISER_TILE_LIST
         GLINT_SHADOW_DENOISER_StoreClearOutput(pixel, float2(value, 0.0));
 #else
-        if ((c.flags & GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_SKIP_CLEAR) == 0u)
-            GLINT_SHADOW_DENOISER_StoreShadowVariance(pixel, float2(value, 0.0));
+        GLINT_SHADOW_DENOISER_StoreShadowVariance(pixel, float2(value, 0.0));
 #endif
         if ((c.flags & GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_REBUILD_CLEAR) == 0u)
             GLINT_SHADOW_DENOISER_StoreMoments(pixel, float4(value, 0.0, receiver ? 1.0 : 0.0, value));
@@ -516,9 +516,9 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint3 groupThreadId, GLINT_Sh
 
     // Local mean and variance: 17x17 Gaussian, rows first; the variance from the lit and the
     // shadowed weight, each summed (GLINT_SHADOW_DENOISER_RowSum).
-    // `precise` (no contraction or reassociation): without it NVIDIA's compiler evaluated these
-    // sums so that 3 history lengths of the CPU-reference tests differed by up to 0.3 % (the
-    // variance is sensitive here by construction); with it every operation rounds as on the CPU.
+    // `precise` (no contraction or reassociation): every operation rounds as on the CPU
+    // reference, whatever the compiler; the variance is sensitive here by construction, and a
+    // contracted sum changes history lengths (docs/shadow_denoiser.md, "Validation").
     precise float2 litShadowed = float2(0.0, 0.0);
     [unroll] for (int r = -8; r <= 8; ++r)
     {
@@ -529,9 +529,10 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint3 groupThreadId, GLINT_Sh
     float spatialVariance = max(mean * clamp(litShadowed.y, 0.0, 1.0), 0.0);
     float spatialSigma = sqrt(spatialVariance);
     uint ownWord = GLINT_SHADOW_DENOISER_BlockWord(q, tile, 0, loadPixel.y >> 2);
-    float x = ((ownWord >> (uint(loadPixel.y & 3) * 8u + uint(loadPixel.x & 7))) & 1u) != 0u ? 1.0 : 0.0;
+    float x = ((ownWord >> GLINT_WIRE_ShadowMaskBit(uint(loadPixel.x), uint(loadPixel.y))) & 1u) != 0u ? 1.0 : 0.0;
 
-    // (Loading it before the barriers in the listed part measured no faster.)
+    // Loaded after the barriers: loading it before them in the listed part does not pay
+    // (docs/performance.md).
     float2 motion = GLINT_SHADOW_DENOISER_QuadMotion(pixel, loadPixel, z, c.inputSize, c.viewDepth);
     float2 uv = (float2(pixel) + 0.5) / float2(c.inputSize);
     float2 uvPrevious = uv + motion;
@@ -562,7 +563,7 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint3 groupThreadId, GLINT_Sh
         float threshold = lerp(0.01, 0.1, pow(1.0 - cosine, 8.0));
         // Finiteness is tested on the bits, never through a comparison with a NaN: drivers may
         // assume no NaNs (Vulkan does not require preserving them) and rewrite !(a < b) as
-        // a >= b, which turned sky pixels (infinite view depth) into accepted histories on NVIDIA.
+        // a >= b, which would turn sky pixels (infinite view depth) into accepted histories.
         bool depthsValid = GLINT_IsFinite(reprojectedZ) && GLINT_IsFinite(previousZ) && reprojectedZ > 0.0 &&
                            previousZ > 0.0;
         float relative = depthsValid ? abs(previousZ - reprojectedZ) / reprojectedZ : 1.0;
@@ -619,7 +620,7 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint3 groupThreadId, GLINT_Sh
     // Variance of the accumulated mean (boosted while young): the filter's edge stop tightens as
     // samples accumulate, so the spatial filter fades out instead of biasing the penumbra.
     float variance = (n < 16.0 ? max(temporalVariance, spatialVariance) * max(16.0 - n, 1.0) : temporalVariance) /
-                     count * c.filterVarianceScale;
+                     count * c.storedVarianceScale;
     float alpha = max(1.0 / count, 1.0 / GLINT_SHADOW_DENOISER_HISTORY_CAP);
     float result = clamp(lerp(clamped, x, alpha), 0.0, 1.0);
     result = GLINT_FiniteOr(result, 0.0);

@@ -4,6 +4,7 @@
 #define GLINT_SHADOW_DENOISER_CONSTANTS_H
 
 #include "glint/common/glint_shared_types.h"
+#include "glint/common/glint_wire_formats.h"
 
 // The visibility mask: one 32-bit word per 8x4 pixel tile (docs/shadow_denoiser.md).
 #define GLINT_SHADOW_DENOISER_MASK_TILE_WIDTH 8
@@ -14,17 +15,14 @@
 #define GLINT_SHADOW_DENOISER_PREPARE_GROUP_HEIGHT 8
 #define GLINT_SHADOW_DENOISER_PREPARE_GROUP_TILES_X 8
 // A group of classification's tiles part works on 2x2 tiles of 8x8 pixels, one per
-// groupThreadId.z (the other parts on one). 4x2 and 4x4 measured no faster on an H100.
+// groupThreadId.z (the other parts on one): a quarter of the groups, so that starting them no
+// longer bounds the pass over mostly clear tiles (larger blocks do not pay: docs/performance.md).
 #define GLINT_SHADOW_DENOISER_CLASSIFY_TILE_BLOCKS_X 2
 #define GLINT_SHADOW_DENOISER_CLASSIFY_TILE_BLOCKS_Y 2
 #define GLINT_SHADOW_DENOISER_CLASSIFY_TILE_BLOCKS (GLINT_SHADOW_DENOISER_CLASSIFY_TILE_BLOCKS_X * GLINT_SHADOW_DENOISER_CLASSIFY_TILE_BLOCKS_Y)
 // The filter works on 8x8 pixel tiles with a 4-pixel apron (step 4 x radius 1).
 #define GLINT_SHADOW_DENOISER_FILTER_TILE 8
 #define GLINT_SHADOW_DENOISER_FILTER_APRON 4
-// The fused filter (all three iterations in one dispatch) works on 16x16 pixel tiles with a
-// 7-pixel apron (1 + 2 + 4), one thread per pixel.
-#define GLINT_SHADOW_DENOISER_FILTER_FUSED_TILE 16
-#define GLINT_SHADOW_DENOISER_FILTER_APRON_FUSED 7
 
 #ifdef __cplusplus
 namespace glint::shaders {
@@ -49,8 +47,8 @@ GLINT_CONSTANTS_END(GLINT_ShadowDenoiserFilterConstants);
 
 // Temporal accumulation (docs/shadow_denoiser.md, "Convergence"): the history is clamped to
 // mu +- CLAMP_SIGMAS sigma_s of the 17x17 statistics, blended with alpha = max(1/n, 1/HISTORY_CAP),
-// and the filter's edge stop uses a scale (eyePosition.w; ShadowDenoiserDesc::filterVarianceScale)
-// times the variance of the accumulated mean.
+// and the variance stored for the filter's edge stop is storedVarianceScale
+// (ShadowDenoiserDesc::storedVarianceScale) times the variance of the accumulated mean.
 #define GLINT_SHADOW_DENOISER_CLAMP_SIGMAS 2.0
 #define GLINT_SHADOW_DENOISER_HISTORY_CAP 64.0
 // Anti-lag (docs/shadow_denoiser.md, "Convergence"): this frame's mask bits in a
@@ -64,22 +62,19 @@ GLINT_CONSTANTS_END(GLINT_ShadowDenoiserFilterConstants);
 #define GLINT_SHADOW_DENOISER_ANTILAG_DEPTH 0.1
 #define GLINT_SHADOW_DENOISER_ANTILAG_LENGTH 4.0
 
-// Tile metadata bits (one word per 8x8 tile).
-#define GLINT_SHADOW_DENOISER_TILE_CLEAR 1u
-#define GLINT_SHADOW_DENOISER_TILE_LIGHT 2u
+// Tile metadata bits (one word per 8x8 tile): the wire format of glint/common/glint_wire_formats.h.
+#define GLINT_SHADOW_DENOISER_TILE_CLEAR GLINT_WIRE_SHADOW_TILE_CLEAR
+#define GLINT_SHADOW_DENOISER_TILE_LIGHT GLINT_WIRE_SHADOW_TILE_LIGHT
 
 // Classification flags. RESET: camera cut or first frame, every history is ignored.
-// SKIP_CLEAR: clear tiles store no (shadow, variance) (the fused filter with tile skipping
-// never reads them); their moments are stored as always.
 #define GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_RESET 1u
-#define GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_SKIP_CLEAR 2u
 // ANTI_LAG: the 5x5 anti-lag test shortens contradicted histories (docs/shadow_denoiser.md).
 #define GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_ANTI_LAG 4u
 // REBUILD_CLEAR: clear tiles store no moments. Their history is rebuilt from last frame's tile
 // metadata and previous depth instead: (v, 0, receiver, v) with v = LIGHT && receiver, exactly
-// what they would have stored. Saves 16 bytes a pixel of writes on the ~90 % of a frame that is
-// clear. Set it on every frame of a sequence or on none (a frame that stores nothing for a
-// clear tile cannot be followed by one that reads the stored value).
+// what they would have stored. Saves 16 bytes a pixel of writes in every clear tile. Set it on
+// every frame of a sequence or on none (a frame that stores nothing for a clear tile cannot be
+// followed by one that reads the stored value).
 #define GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_REBUILD_CLEAR 8u
 
 // Matrices are column-vector (q = M p) and passed as four rows: q.i = dot(row_i, p).
@@ -88,18 +83,24 @@ GLINT_CONSTANTS_BEGIN(GLINT_ShadowDenoiserClassifyConstants)
     uint2 maskTiles;            // ceil(W / 8) x ceil(H / 4)
     float4 reproject[4];        // R_reproj = VP_prev VP^-1: current NDC (x_n, y_n, d, 1) -> previous clip
     float4 inverseViewProj[4];  // VP^-1: current NDC -> world (homogeneous)
-    float4 eyePosition;         // xyz: world-space eye; w: the filter variance scale (see below)
+    float4 eyePosition;         // xyz: world-space eye; w: unused (0)
     float4 viewDepth;           // (A, B, C, 0): view depth z = A / (B + C d), both frames
     float2 normalUnpack;        // (mul, add)
     float ndcYSign;             // y_n = ndcYSign (2 v - 1): +1 Vulkan-style, -1 D3D-style
     uint flags;                 // GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_*
+    float storedVarianceScale;  // times the variance of the accumulated mean, stored for the filter
+    uint padding0;              // the struct is whole 16-byte registers
+    uint padding1;
+    uint padding2;
 GLINT_CONSTANTS_END(GLINT_ShadowDenoiserClassifyConstants);
 
 #ifdef __cplusplus
-static_assert(sizeof(GLINT_ShadowDenoiserClassifyConstants) == 192);
+static_assert(sizeof(GLINT_ShadowDenoiserClassifyConstants) == 208);
 static_assert(offsetof(GLINT_ShadowDenoiserClassifyConstants, reproject) == 16);
 static_assert(offsetof(GLINT_ShadowDenoiserClassifyConstants, eyePosition) == 144);
 static_assert(offsetof(GLINT_ShadowDenoiserClassifyConstants, normalUnpack) == 176);
+static_assert(offsetof(GLINT_ShadowDenoiserClassifyConstants, flags) == 188);
+static_assert(offsetof(GLINT_ShadowDenoiserClassifyConstants, storedVarianceScale) == 192);
 static_assert(sizeof(GLINT_ShadowDenoiserPrepareConstants) == 16);
 static_assert(sizeof(GLINT_ShadowDenoiserFilterConstants) == 48);
 static_assert(offsetof(GLINT_ShadowDenoiserFilterConstants, viewDepth) == 16);

@@ -17,16 +17,15 @@
 //       Writes the result; the final pass writes (remapped mean, variance). The image's format
 //       is the integration's choice: a one-channel output may keep .x only.
 //
-// Tile skipping (tile metadata from the classification pass) takes these callbacks too:
+// Tile skipping, GLINT_SHADOW_DENOISER_TILE_LIST=1 (tile metadata and the tile list from the
+// classification pass): the dispatch is indirect, one group per tile classification listed
+// (never a CLEAR one), with these callbacks too:
+//   uint2  GLINT_SHADOW_DENOISER_LoadFilterTile(uint listIndex);     8x8 tile coordinates
 //   uint   GLINT_SHADOW_DENOISER_LoadTileMetadata(uint tileIndex);   one word per 8x8 tile
 //   void   GLINT_SHADOW_DENOISER_CountFilteredTile();                called once per filtered tile
-// - three dispatches, GLINT_SHADOW_DENOISER_TILE_LIST=1: the dispatch is indirect, one group
-//   per tile classification listed (never a CLEAR one), with
-//   uint2  GLINT_SHADOW_DENOISER_LoadFilterTile(uint listIndex);       8x8 tile coordinates
-//   The passes write listed tiles only; CLEAR neighbours are rebuilt from the metadata, and
-//   classification wrote the CLEAR tiles' output.
-// - fused, GLINT_SHADOW_DENOISER_TILE_SKIP=1: a group whose four tiles are CLEAR writes their
-//   constant (1 for receivers of a LIGHT tile, else 0; variance 0) and stops.
+// The passes write listed tiles only; CLEAR neighbours are rebuilt from the metadata (1 for
+// receivers of a LIGHT tile, else 0; variance 0), and classification wrote the CLEAR tiles'
+// output.
 //
 // Weights, for a receiver c and a receiver neighbour q at step * (i, j), i, j in {-1, 0, 1}:
 //   w = k(i) k(j) exp(-|s_c - s_q| / sigma) exp(-|z_c - z_q| / (depthSigma z_c)) max(0, N_c . N_q)^normalPower
@@ -52,27 +51,19 @@ float GLINT_SHADOW_DENOISER_LoadDepth(int2 pixel);
 float3 GLINT_SHADOW_DENOISER_LoadNormal(int2 pixel);
 void GLINT_SHADOW_DENOISER_StoreFiltered(int2 pixel, float2 meanVariance);
 #if GLINT_SHADOW_DENOISER_TILE_LIST
-// A tile list implies tile skipping (the metadata marks the neighbours that were not stored).
-#undef GLINT_SHADOW_DENOISER_TILE_SKIP
-#define GLINT_SHADOW_DENOISER_TILE_SKIP 1
 uint2 GLINT_SHADOW_DENOISER_LoadFilterTile(uint listIndex);
-#endif
-#if GLINT_SHADOW_DENOISER_TILE_SKIP
+// The metadata marks the neighbours that were not stored (CLEAR tiles).
 uint GLINT_SHADOW_DENOISER_LoadTileMetadata(uint tileIndex);
 void GLINT_SHADOW_DENOISER_CountFilteredTile();
 #endif
 
-// The three-dispatch filter works on a 16 x 16 span (8 x 8 tile, 4-pixel apron); the fused one
-// (GLINT_SHADOW_DENOISER_FILTER_FUSED=1) on a 30 x 30 span (16 x 16 tile, 7-pixel apron = 1 + 2 +
-// 4) with two value buffers it ping-pongs between its three iterations.
-#if GLINT_SHADOW_DENOISER_FILTER_FUSED
-#define GLINT_SHADOW_DENOISER_FILTER_SPAN 30
-#define GLINT_SHADOW_DENOISER_FILTER_BUFFERS 2
-#elif GLINT_SHADOW_DENOISER_FILTER_PAIR
+// The filter works on a 16 x 16 span (8 x 8 tile, 4-pixel apron); the paired one
+// (GLINT_SHADOW_DENOISER_FILTER_PAIR=1) keeps its first iteration's results in a second value
+// buffer.
 #define GLINT_SHADOW_DENOISER_FILTER_SPAN 16
+#if GLINT_SHADOW_DENOISER_FILTER_PAIR
 #define GLINT_SHADOW_DENOISER_FILTER_BUFFERS 2
 #else
-#define GLINT_SHADOW_DENOISER_FILTER_SPAN 16
 #define GLINT_SHADOW_DENOISER_FILTER_BUFFERS 1
 #endif
 #define GLINT_SHADOW_DENOISER_FILTER_SLOTS (GLINT_SHADOW_DENOISER_FILTER_SPAN * GLINT_SHADOW_DENOISER_FILTER_SPAN)
@@ -112,9 +103,8 @@ float GLINT_SHADOW_DENOISER_KernelWeight(int offset)
     return offset == 0 ? 1.0 : 2.0 / 3.0;
 }
 
-// Span slot of an image pixel clamped to the image: the three-dispatch filter clamps every
-// load, so a tap beyond the border reads the border pixel; clamping the coordinate before the
-// lookup gives the fused filter the same taps (the clamped pixel always lies in the span).
+// Span slot of an image pixel clamped to the image: every load is clamped, so a tap beyond the
+// border reads the border pixel (the clamped pixel always lies in the span).
 uint GLINT_SHADOW_DENOISER_FilterSlot(int2 pixel, int2 spanOrigin, uint2 inputSize)
 {
     int2 local = clamp(pixel, int2(0, 0), int2(inputSize) - 1) - spanOrigin;
@@ -122,19 +112,18 @@ uint GLINT_SHADOW_DENOISER_FilterSlot(int2 pixel, int2 spanOrigin, uint2 inputSi
 }
 
 // Loads the (clamped) pixel of every span slot: sanitized (mean, variance) into value buffer 0,
-// (view depth or -1, unit normal) into the geometry. With tile skipping (the tile list or the
-// fused filter's), a slot whose value is fixed (GLINT_SHADOW_DENOISER_FixedValue: a
+// (view depth or -1, unit normal) into the geometry. With tile skipping (the tile list), a slot
+// whose value is fixed (GLINT_SHADOW_DENOISER_FixedValue: a
 // non-receiver, or a receiver in a clear tile, which neither classification nor the earlier
 // passes stored) takes that value here, from its tile's metadata word loaded alongside the
 // value: no second pass over the span and its barrier.
 void GLINT_SHADOW_DENOISER_LoadSpan(uint groupIndex, uint groupThreads, int2 spanOrigin, uint2 inputSize,
                                     float4 viewDepth)
 {
-#if GLINT_SHADOW_DENOISER_TILE_SKIP
+#if GLINT_SHADOW_DENOISER_TILE_LIST
     uint tilesX = (inputSize.x + GLINT_SHADOW_DENOISER_FILTER_TILE - 1) / GLINT_SHADOW_DENOISER_FILTER_TILE;
 #endif
-    // At most 4 slots a thread (256 / 64, or 900 / 256 fused), unrolled so that their loads
-    // are in flight together.
+    // At most 4 slots a thread (256 / 64), unrolled so that their loads are in flight together.
     [unroll] for (uint k = 0; k < 4u; ++k)
     {
         uint slot = groupIndex + k * groupThreads;
@@ -148,7 +137,7 @@ void GLINT_SHADOW_DENOISER_LoadSpan(uint groupIndex, uint groupThreads, int2 spa
         float3 loadedNormal = GLINT_SHADOW_DENOISER_LoadNormal(pixel);
         float z = GLINT_SHADOW_DENOISER_ReceiverViewDepth(GLINT_SHADOW_DENOISER_LoadDepth(pixel), viewDepth);
         float3 n = z > 0.0 ? GLINT_SHADOW_DENOISER_SanitizeNormal(loadedNormal) : float3(0.0, 0.0, 0.0);
-#if GLINT_SHADOW_DENOISER_TILE_SKIP
+#if GLINT_SHADOW_DENOISER_TILE_LIST
         uint2 tile = uint2(pixel) / GLINT_SHADOW_DENOISER_FILTER_TILE;
         uint metadata = GLINT_SHADOW_DENOISER_LoadTileMetadata(tile.y * tilesX + tile.x);
         if (!(z > 0.0))
@@ -218,15 +207,12 @@ float GLINT_SHADOW_DENOISER_ContrastRemap(float2 meanVariance)
     return GLINT_FiniteOr(pow(meanVariance.x, max(1.2 - meanVariance.y, 1.0)), 0.0);
 }
 
-#if GLINT_SHADOW_DENOISER_TILE_SKIP
-// Tile metadata of the filter tiles under the span: 4 x 4 (fused, 16x16 tile + 7) or 3 x 3
-// (8x8 tile + 4), starting at tile floor(spanOrigin / 8).
-#if GLINT_SHADOW_DENOISER_FILTER_FUSED
-#define GLINT_SHADOW_DENOISER_FILTER_META_ACROSS 4
-#else
+#if GLINT_SHADOW_DENOISER_TILE_LIST
+// Tile metadata of the 3 x 3 filter tiles under the span (8x8 tile + 4), starting at tile
+// floor(spanOrigin / 8).
 #define GLINT_SHADOW_DENOISER_FILTER_META_ACROSS 3
-#endif
-groupshared uint g_glint_shadow_denoiser_filter_metadata[16];
+groupshared uint g_glint_shadow_denoiser_filter_metadata[GLINT_SHADOW_DENOISER_FILTER_META_ACROSS *
+                                                         GLINT_SHADOW_DENOISER_FILTER_META_ACROSS];
 
 int2 GLINT_SHADOW_DENOISER_FirstSpanTile(int2 spanOrigin)
 {
@@ -251,7 +237,7 @@ void GLINT_SHADOW_DENOISER_LoadSpanMetadata(uint groupIndex, int2 spanOrigin, ui
 #endif
 
 // The value of an in-image pixel that is not filtered: a non-receiver's (0, 0) or, with tile
-// skipping, a clear tile's constant; what the three-dispatch filter writes there in every pass.
+// skipping, a clear tile's constant; what every filter pass writes there.
 // Returns false for pixels to filter. Needs the span (and its metadata) loaded.
 bool GLINT_SHADOW_DENOISER_FixedValue(int2 pixel, int2 spanOrigin, uint2 inputSize, out float2 fixedValue)
 {
@@ -260,7 +246,7 @@ bool GLINT_SHADOW_DENOISER_FixedValue(int2 pixel, int2 spanOrigin, uint2 inputSi
     bool receiver = g_glint_shadow_denoiser_filter_geometry[slot].x > 0.0;
     if (!receiver)
         return true;
-#if GLINT_SHADOW_DENOISER_TILE_SKIP
+#if GLINT_SHADOW_DENOISER_TILE_LIST
     int2 tile = pixel / GLINT_SHADOW_DENOISER_FILTER_TILE - GLINT_SHADOW_DENOISER_FirstSpanTile(spanOrigin);
     uint metadata = g_glint_shadow_denoiser_filter_metadata[tile.y * GLINT_SHADOW_DENOISER_FILTER_META_ACROSS + tile.x];
     if ((metadata & GLINT_SHADOW_DENOISER_TILE_CLEAR) != 0u)
@@ -272,7 +258,6 @@ bool GLINT_SHADOW_DENOISER_FixedValue(int2 pixel, int2 spanOrigin, uint2 inputSi
     return false;
 }
 
-#if !GLINT_SHADOW_DENOISER_FILTER_FUSED
 // The 8 x 8 filters' start: the group's tile (from the list with GLINT_SHADOW_DENOISER_TILE_LIST,
 // counted `iterations` times), its span loaded into value buffer 0 and the geometry, clear
 // neighbours fixed. Returns the tile's first pixel; spanOrigin is the span's.
@@ -352,99 +337,5 @@ void GLINT_SHADOW_DENOISER_Filter(uint2 groupId, uint2 groupThreadId, uint group
         result.x = GLINT_SHADOW_DENOISER_ContrastRemap(result);
     GLINT_SHADOW_DENOISER_StoreFiltered(pixel, result);
 }
-#endif // !GLINT_SHADOW_DENOISER_FILTER_FUSED
-
-#if GLINT_SHADOW_DENOISER_FILTER_FUSED
-// The three iterations (steps 1, 2, 4) of one 16 x 16 tile in one dispatch: iteration k runs
-// over the tile grown by the apron the later iterations read (6, 4, 0 pixels), in groupshared
-// memory, so the intermediate results never leave the chip. Same taps, weights and clamping as
-// three dispatches of GLINT_SHADOW_DENOISER_Filter.
-void GLINT_SHADOW_DENOISER_FilterFused(uint2 groupId, uint groupIndex, uint2 inputSize, bool contrastRemap,
-                                       float4 viewDepth, float depthSigma, float normalPower)
-{
-    int2 tileOrigin = int2(groupId * GLINT_SHADOW_DENOISER_FILTER_FUSED_TILE);
-    int2 spanOrigin = tileOrigin - GLINT_SHADOW_DENOISER_FILTER_APRON_FUSED;
-#if GLINT_SHADOW_DENOISER_TILE_SKIP
-    uint tilesX = (inputSize.x + GLINT_SHADOW_DENOISER_FILTER_TILE - 1) / GLINT_SHADOW_DENOISER_FILTER_TILE;
-    uint tilesY = (inputSize.y + GLINT_SHADOW_DENOISER_FILTER_TILE - 1) / GLINT_SHADOW_DENOISER_FILTER_TILE;
-    // Filter tiles 2g - 1 .. 2g + 2 on each axis.
-    GLINT_SHADOW_DENOISER_LoadSpanMetadata(groupIndex, spanOrigin, inputSize);
-    GroupMemoryBarrierWithGroupSync();
-    // The group's own four filter tiles: uniform, so an early return keeps the barriers legal.
-    bool allClear = true;
-    [unroll] for (uint own = 0; own < 4u; ++own)
-    {
-        uint2 tile = groupId * 2u + uint2(own & 1u, own >> 1);
-        bool exists = all(tile < uint2(tilesX, tilesY));
-        uint metadata = g_glint_shadow_denoiser_filter_metadata[(1u + (own >> 1)) * 4u + 1u + (own & 1u)];
-        bool clear = !exists || (metadata & GLINT_SHADOW_DENOISER_TILE_CLEAR) != 0u;
-        allClear = allClear && clear;
-        // Counted as the three-dispatch filter counts: once per iteration.
-        if (groupIndex == own && !clear)
-        {
-            GLINT_SHADOW_DENOISER_CountFilteredTile();
-            GLINT_SHADOW_DENOISER_CountFilteredTile();
-            GLINT_SHADOW_DENOISER_CountFilteredTile();
-        }
-    }
-    if (allClear)
-    {
-        for (uint i = groupIndex; i < GLINT_SHADOW_DENOISER_FILTER_FUSED_TILE * GLINT_SHADOW_DENOISER_FILTER_FUSED_TILE; i += 256u)
-        {
-            int2 local = int2(i % GLINT_SHADOW_DENOISER_FILTER_FUSED_TILE, i / GLINT_SHADOW_DENOISER_FILTER_FUSED_TILE);
-            int2 pixel = tileOrigin + local;
-            if (any(uint2(pixel) >= inputSize))
-                continue;
-            uint metadata = g_glint_shadow_denoiser_filter_metadata[(1 + local.y / 8) * 4 + 1 + local.x / 8];
-            bool lit = (metadata & GLINT_SHADOW_DENOISER_TILE_LIGHT) != 0u &&
-                       GLINT_SHADOW_DENOISER_ReceiverViewDepth(GLINT_SHADOW_DENOISER_LoadDepth(pixel), viewDepth) > 0.0;
-            GLINT_SHADOW_DENOISER_StoreFiltered(pixel, float2(lit ? 1.0 : 0.0, 0.0));
-        }
-        return;
-    }
-#endif
-    // With tile skipping, classification need not store clear tiles when the fused filter
-    // follows (GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_SKIP_CLEAR): LoadSpan fixes their slots.
-    GLINT_SHADOW_DENOISER_LoadSpan(groupIndex, 256u, spanOrigin, inputSize, viewDepth);
-    GroupMemoryBarrierWithGroupSync();
-
-    // Iterations 1 and 2: buffer 0 -> 1 over the tile +- 6, buffer 1 -> 0 over the tile +- 4.
-    [loop] for (uint iteration = 0; iteration < 2u; ++iteration)
-    {
-        uint step = 1u << iteration;
-        int margin = iteration == 0u ? 6 : 4;
-        uint width = uint(GLINT_SHADOW_DENOISER_FILTER_FUSED_TILE + 2 * margin);
-        uint source = iteration;
-        uint target = 1u - iteration;
-        for (uint i = groupIndex; i < width * width; i += 256u)
-        {
-            int2 pixel = tileOrigin - margin + int2(i % width, i / width);
-            if (any(uint2(pixel) >= inputSize))
-                continue;
-            float2 value;
-            if (!GLINT_SHADOW_DENOISER_FixedValue(pixel, spanOrigin, inputSize, value))
-                value = GLINT_SHADOW_DENOISER_FilterPixel(pixel, spanOrigin, inputSize, source, step, depthSigma,
-                                                          normalPower);
-            uint slot = GLINT_SHADOW_DENOISER_FilterSlot(pixel, spanOrigin, inputSize);
-            g_glint_shadow_denoiser_filter_values[target * GLINT_SHADOW_DENOISER_FILTER_SLOTS + slot] = value;
-        }
-        GroupMemoryBarrierWithGroupSync();
-    }
-
-    // Iteration 3 (step 4) over the tile, from buffer 0, to the output.
-    int2 pixel = tileOrigin + int2(groupIndex % GLINT_SHADOW_DENOISER_FILTER_FUSED_TILE,
-                                   groupIndex / GLINT_SHADOW_DENOISER_FILTER_FUSED_TILE);
-    if (any(uint2(pixel) >= inputSize))
-        return;
-    float2 result;
-    if (!GLINT_SHADOW_DENOISER_FixedValue(pixel, spanOrigin, inputSize, result))
-    {
-        result = GLINT_SHADOW_DENOISER_FilterPixel(pixel, spanOrigin, inputSize, 0u, 4u, depthSigma, normalPower);
-        if (contrastRemap)
-            result.x = GLINT_SHADOW_DENOISER_ContrastRemap(result);
-    }
-    GLINT_SHADOW_DENOISER_StoreFiltered(pixel, result);
-}
-#endif // GLINT_SHADOW_DENOISER_FILTER_FUSED
 
 #endif // GLINT_SHADOW_DENOISER_FILTER_HLSLI

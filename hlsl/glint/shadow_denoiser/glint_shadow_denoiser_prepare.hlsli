@@ -12,8 +12,9 @@
 // With GLINT_SHADOW_DENOISER_TILE_LIST=1 also
 //   void  GLINT_SHADOW_DENOISER_ResetFilterTiles();   writes the filter's arguments (0, 1, 1)
 //
-// Mask layout: tile = (x >> 3, y >> 2); bit (y & 3) * 8 + (x & 7), so each byte is one pixel
-// row of the tile with the leftmost pixel in the least significant bit; bit set = lit.
+// Mask layout (glint/common/glint_wire_formats.h): tile = (x >> 3, y >> 2); bit
+// GLINT_WIRE_ShadowMaskBit(x, y) = (y & 3) * 8 + (x & 7), so each byte is one pixel row of the
+// tile with the leftmost pixel in the least significant bit; bit set = lit.
 // Out-of-image bits (tiles on the right and bottom borders of sizes that are not multiples of
 // 8 x 4) repeat the nearest in-image pixel (clamp to edge), so a border tile of a uniform
 // region is uniform too.
@@ -21,11 +22,12 @@
 // Dispatch: [numthreads(32, 8, 1)], ceil(maskTilesX / 8) x ceil(maskTilesY / 8) x 1 groups. Four
 // consecutive threads pack one word, each from one 8-pixel row, and combine the four bytes
 // through groupshared memory after one barrier: 8 dependent-free loads a thread instead of 32
-// (one thread a word), and no atomics (an earlier version OR-ed bits into groupshared words,
-// 32 atomics on each, and ran 3x slower). Nothing depends on the subgroup size.
+// (one thread a word), and no atomics (OR-ing bits into groupshared words would put 32 atomics
+// on each; docs/performance.md). Nothing depends on the subgroup size.
 #ifndef GLINT_SHADOW_DENOISER_PREPARE_HLSLI
 #define GLINT_SHADOW_DENOISER_PREPARE_HLSLI
 
+#include "glint/common/glint_wire_formats.h"
 #include "glint/shadow_denoiser/glint_shadow_denoiser_constants.h"
 
 float GLINT_SHADOW_DENOISER_LoadVisibility(int2 pixel);
@@ -65,9 +67,11 @@ void GLINT_SHADOW_DENOISER_Prepare(uint2 groupId, uint2 groupThreadId, uint grou
     {
         int2 origin = int2(tile * uint2(GLINT_SHADOW_DENOISER_MASK_TILE_WIDTH, GLINT_SHADOW_DENOISER_MASK_TILE_HEIGHT));
         [unroll] for (uint column = 0; column < GLINT_SHADOW_DENOISER_MASK_TILE_WIDTH; ++column)
-            bits |= GLINT_SHADOW_DENOISER_VisibilityBit(origin + int2(column, row), inputSize) << column;
+            bits |= GLINT_SHADOW_DENOISER_VisibilityBit(origin + int2(column, row), inputSize)
+                    << GLINT_WIRE_ShadowMaskBit(column, 0u);
     }
-    g_glint_shadow_denoiser_prepare_rows[groupIndex] = bits << (row * GLINT_SHADOW_DENOISER_MASK_TILE_WIDTH);
+    // Pixel (column, row)'s bit is ShadowMaskBit(column, 0) + ShadowMaskBit(0, row).
+    g_glint_shadow_denoiser_prepare_rows[groupIndex] = bits << GLINT_WIRE_ShadowMaskBit(0u, row);
     GroupMemoryBarrierWithGroupSync();
     if (inMask && row == 0u)
         GLINT_SHADOW_DENOISER_StoreMask(tile.y * maskTiles.x + tile.x,

@@ -11,8 +11,9 @@
 // Dispatch: [numthreads(8, 8, 1)], 16 x 16 groups.
 //
 // Animation: each dimension d is shifted by frac(k a_d) with the R2 constants a = (0.7548776662,
-// 0.5698402910) (Roberts 2018), so the two dimensions never move together (reference defect 13:
-// one golden-ratio shift for both), plus a per-frame toroidal texel offset from a hash of k.
+// 0.5698402910) (Roberts 2018), so the two dimensions never move together
+// (docs/conventions.md, defect SS13: one golden-ratio shift for both), plus a per-frame
+// toroidal texel offset from a hash of k.
 // frac(k a_d) is computed in 0.32 fixed point, exact for every 32-bit frame index, so the
 // sequence has no period shorter than 2^32 frames.
 #ifndef GLINT_SSSR_BLUE_NOISE_HLSLI

@@ -63,7 +63,8 @@ uint GLINT_SSSR_StateAt(uint2 local)
 
 // The quad neighbour a pixel that needs a copy takes its ray from: the first of x^1, y^1 and
 // both that traces (1, 2, 3), or 0 when none does and the pixel must trace itself (the
-// reference leaves such pixels black, defect 11). Out-of-image neighbours never trace.
+// reference leaves such pixels black: docs/conventions.md, defect SS11). Out-of-image
+// neighbours never trace.
 uint GLINT_SSSR_DonorOf(uint2 local)
 {
     if ((GLINT_SSSR_StateAt(local ^ uint2(1, 0)) & GLINT_SSSR_STATE_TRACES) != 0)
@@ -84,7 +85,7 @@ bool GLINT_SSSR_ChoseMe(uint2 local, uint2 offset, uint code)
 }
 
 // Variance of last frame at the reprojected position; off-screen history counts as high so
-// that the pixel traces (reference defect 12: the reference reads it unreprojected).
+// that the pixel traces (docs/conventions.md, defect SS12: the reference reads it unreprojected).
 bool GLINT_SSSR_HighVariance(GLINT_SssrConstants c, int2 pixel, float2 uv)
 {
     float2 motion = GLINT_SSSR_LoadMotion(pixel) * c.motionScale;

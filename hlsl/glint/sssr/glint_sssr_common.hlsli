@@ -1,11 +1,12 @@
 // glint SSSR: helpers shared by the classification, intersection and composite passes:
 // depth conventions, (un)projection, the quad rules and the ray-list packing
-// (reference/conventions.md sections 1, 2 and 8; docs/sssr.md).
+// (docs/conventions.md §1, §2 and §8; docs/sssr.md).
 // Integration: included by the pass headers; needs no callbacks and declares no resources.
 #ifndef GLINT_SSSR_COMMON_HLSLI
 #define GLINT_SSSR_COMMON_HLSLI
 
 #include "glint/common/glint_math.hlsli"
+#include "glint/common/glint_wire_formats.h"
 #include "glint/sssr/glint_sssr_constants.h"
 
 #define GLINT_SSSR_BACKGROUND_EPSILON 1e-6
@@ -79,8 +80,8 @@ float3 GLINT_SSSR_UnpackNormal(GLINT_SssrConstants c, float3 raw)
     return n * rsqrt(lengthSquared);
 }
 
-// GGX alpha from the material channel's raw value, converted exactly once (conventions §4).
-// Non-finite roughness counts as fully rough.
+// GGX alpha from the material channel's raw value, converted exactly once
+// (docs/conventions.md §4). Non-finite roughness counts as fully rough.
 float GLINT_SSSR_AlphaFromMaterial(GLINT_SssrConstants c, float raw)
 {
     float value = GLINT_IsFinite(raw) ? GLINT_Saturate(raw) : 1.0;
@@ -100,7 +101,7 @@ uint2 GLINT_SSSR_HalfResolutionOffset(uint2 pixel, uint frameIndex)
     return uint2(index & 1u, index >> 1);
 }
 
-// The quad's base-ray rule (reference/sssr.md pass 2): which pixels trace before copies.
+// The quad's base-ray rule (docs/sssr.md, "Classification"): which pixels trace before copies.
 bool GLINT_SSSR_IsBasePixel(GLINT_SssrConstants c, uint2 pixel)
 {
     if ((c.flags & GLINT_SSSR_FLAG_HALF_RESOLUTION) != 0)
@@ -112,20 +113,21 @@ bool GLINT_SSSR_IsBasePixel(GLINT_SssrConstants c, uint2 pixel)
     return ((pixel.x | pixel.y) & 1u) == 0;
 }
 
+// Ray-list and tile-list entries: the wire formats of glint/common/glint_wire_formats.h.
 uint GLINT_SSSR_PackRay(uint2 pixel, uint copyFlags)
 {
-    return (pixel.x & 0x7FFFu) | ((pixel.y & 0x3FFFu) << 15) | copyFlags;
+    return GLINT_WIRE_PackRayEntry(pixel.x, pixel.y, copyFlags);
 }
 
 // Tile-list entry: the tile's top-left pixel.
 uint GLINT_SSSR_PackTile(uint2 topLeft)
 {
-    return (topLeft.x & 0xFFFFu) | (topLeft.y << 16);
+    return GLINT_WIRE_PackTileEntry(topLeft.x, topLeft.y);
 }
 
 uint2 GLINT_SSSR_UnpackRayPixel(uint entry)
 {
-    return uint2(entry & 0x7FFFu, (entry >> 15) & 0x3FFFu);
+    return uint2(GLINT_WIRE_RayEntryX(entry), GLINT_WIRE_RayEntryY(entry));
 }
 
 // Filtered-importance-sampling LOD (Colbert & Krivanek 2007): the environment level whose

@@ -1,9 +1,9 @@
 // glint SSSR, pass 7 (optional, for demos and pictures): applies a reflection to the lit
 // scene with the split-sum approximation, L = L_lit + R (F0 A + B), where (A, B) is the
 // DFG table at (N.V, r) (glint::sssrBrdfLut) and F0 = lerp(0.04, baseColor, metallic).
-// V is the pixel's own view vector (reference defect 16: the reference used the camera's
-// forward vector for every pixel). The lit input must not already hold specular IBL for the
-// same pixels.
+// V is the pixel's own view vector (docs/conventions.md, defect SS16: the reference used the
+// camera's forward vector for every pixel). The lit input must not already hold specular IBL
+// for the same pixels.
 //
 // Integration: define these callbacks before or after including this header.
 //

@@ -33,7 +33,7 @@
 // groups for g = ceil(rays / 64); ray index = (group.y * 1024 + group.x) * 64 + thread.
 // The low-occupancy exit counts the group's live rays in groupshared memory every
 // GLINT_SSSR_OCCUPANCY_INTERVAL iterations, so it means the same on 8-, 32- and 64-wide
-// hardware (reference defect 2); every barrier is in group-uniform control flow.
+// hardware (docs/conventions.md, defect SS2); every barrier is in group-uniform control flow.
 #ifndef GLINT_SSSR_INTERSECT_HLSLI
 #define GLINT_SSSR_INTERSECT_HLSLI
 
@@ -135,7 +135,7 @@ float GLINT_SSSR_CellExit(GLINT_SSSR_Ray ray, float2 cell, float cellSize, float
     return min(tx, ty);
 }
 
-// One traversal step (reference/sssr.md "Hierarchical traversal").
+// One traversal step (docs/sssr.md, "Intersection": Traversal).
 void GLINT_SSSR_Step(GLINT_SssrConstants c, GLINT_SSSR_Ray ray, int finestLevel, float2 overshoot,
                      inout GLINT_SSSR_TraversalState state)
 {
@@ -195,10 +195,10 @@ void GLINT_SSSR_Step(GLINT_SssrConstants c, GLINT_SSSR_Ray ray, int finestLevel,
     }
 }
 
-// The screen-space segment of a view-space ray (reference/sssr.md "Ray setup"): the end
-// stays in front of the near plane for rays toward the camera, lies on the far plane (or
-// the vanishing point for an infinite one) otherwise, and the parameter range is clipped to
-// the screen.
+// The screen-space segment of a view-space ray (docs/sssr.md, "Intersection": Ray setup;
+// docs/conventions.md §1.2 and defect SS3): the end stays in front of the near plane for rays
+// toward the camera, lies on the far plane (or the vanishing point for an infinite one)
+// otherwise, and the parameter range is clipped to the screen.
 GLINT_SSSR_Ray GLINT_SSSR_SetupRay(GLINT_SssrConstants c, uint2 pixel, float depth, float3 viewPosition,
                                    float3 viewDirection)
 {
@@ -244,8 +244,9 @@ GLINT_SSSR_Ray GLINT_SSSR_SetupRay(GLINT_SssrConstants c, uint2 pixel, float dep
 
 // The depth slope per pixel along `axis` when the texel lies on a plane along it: device depth
 // is affine in screen space on a plane, so both one-sided differences agree (within 5 %). 0 at
-// depth edges, curvature, the image border and next to the background. An earlier version took
-// the smaller one-sided difference everywhere and accepted wrong hits at silhouettes.
+// depth edges, curvature, the image border and next to the background. The smaller one-sided
+// difference taken everywhere would accept wrong hits at silhouettes (docs/sssr.md, "Accuracy
+// on simulated scenes").
 float GLINT_SSSR_ConsistentSlope(GLINT_SssrConstants c, int2 texel, int2 axis, float centre)
 {
     int2 last = int2(c.inputSize) - 1;
@@ -269,7 +270,8 @@ float GLINT_SSSR_Vignette(GLINT_SssrConstants c, float2 uv)
 }
 
 // A GGX sample around n for view v; below-horizon directions are resampled once with a
-// toroidally shifted blue-noise pair, then replaced by the mirror direction (defect 10).
+// toroidally shifted blue-noise pair, then replaced by the mirror direction (docs/conventions.md,
+// defect SS10).
 float3 GLINT_SSSR_SampleDirection(GLINT_SssrConstants c, int2 pixel, float3 n, float3 v, float alpha,
                                   out float NdotH)
 {
@@ -391,7 +393,8 @@ void GLINT_SSSR_Intersect(GLINT_SssrConstants c, uint groupIndex, uint rayIndex)
     }
     if (!valid)
         return;
-    // A ray still marching here ran out of budget; only a completed descent is a hit (defect 1).
+    // A ray still marching here ran out of budget; only a completed descent is a hit
+    // (docs/conventions.md, defect SS1).
 
     float3 hit = ray.origin + state.t * ray.direction;
     float2 hitUv = hit.xy * c.inverseInputSize;
@@ -445,7 +448,7 @@ void GLINT_SSSR_Intersect(GLINT_SssrConstants c, uint groupIndex, uint rayIndex)
         }
     }
     // Fade to the environment over the band below the roughness threshold, so that shading
-    // does not jump where classification stops tracing (defect 8).
+    // does not jump where classification stops tracing (docs/conventions.md, defect SS8).
     if (!mirror && c.roughnessFadeBand > 0.0)
         confidence *= GLINT_Saturate((c.roughnessThreshold - alpha) / c.roughnessFadeBand);
 

@@ -2,7 +2,7 @@
 //
 // Roughness extraction reads one channel of the application's material texture and writes
 // GGX alpha (alpha = perceptualRoughness^2), converting exactly once so that no later pass
-// has to know how the engine stores roughness (reference/conventions.md section 4).
+// has to know how the engine stores roughness (docs/conventions.md §4).
 #pragma once
 
 #include "glint/glint_pass.h"

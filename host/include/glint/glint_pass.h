@@ -8,8 +8,11 @@
 // renderer (the NRD model). Nothing here touches a graphics API.
 #pragma once
 
+#include "glint/glint_types.h"
+
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <variant>
 #include <vector>
@@ -60,6 +63,9 @@ struct ImageDesc {
     std::uint32_t width = 0, height = 0;
     std::uint32_t mipLevels = 1;
     Format format = Format::R32Float;
+    // Level 0's texels (4-byte floats, channel count of the format) uploaded once when the
+    // image is created; without them the image starts zeroed.
+    std::shared_ptr<const std::vector<float>> initialTexels;
 };
 
 struct BufferDesc {
@@ -81,11 +87,45 @@ struct Pass {
     std::vector<std::string> zeroBuffers;
 };
 
+// How a tool turns a resource into a picture. Wire formats are the ones of
+// glint/common/glint_wire_formats.h.
+enum class OutputDecoder : std::uint8_t {
+    Channels,      // an image's channels [firstChannel, firstChannel + channels) at `level`
+    MipChain,      // every level from `level` on, channel firstChannel: outputs "<name><level>"
+    RayList,       // a ray-list buffer: 1 at each listed pixel; the entry count is counter `count`
+    TileList,      // a tile-list buffer: 1 over each listed 8x8 tile; the count is counter `count`
+    ShadowMask,    // the shadow denoiser's packed visibility (one word per 8x4 pixels)
+    ShadowTileClass, // the shadow tile metadata: its CLEAR and LIGHT bits over each 8x8 tile
+};
+
+// A named output of the effect: "denoised" is resource "sssr_radiance" as pass "resolve" left
+// it. When a later pass overwrites the resource, a tool copies it right after `pass`.
+struct OutputDesc {
+    std::string name;
+    std::string resource;
+    std::string pass;
+    OutputDecoder decoder = OutputDecoder::Channels;
+    std::uint32_t firstChannel = 0, channels = 1, level = 0;
+    std::string count;         // RayList, TileList: the counter holding the entry count
+    bool intermediate = false; // only when a tool asks for intermediates (glint dump)
+};
+
+// A word of a buffer worth reporting every frame, e.g. the number of traced pixels.
+struct CounterDesc {
+    std::string name;
+    std::string buffer;
+    std::uint32_t word = 0;
+    std::string fractionName; // non-empty: also reported under this name divided by the pixel count
+};
+
 struct EffectPlan {
     std::string effect;
+    Extent2D size;      // the frame size the plan was made for (outputs are decoded at it)
     std::vector<Pass> passes;
     std::vector<ImageDesc> images;   // images the effect defines (not the application's inputs)
     std::vector<BufferDesc> buffers; // buffers the effect defines
+    std::vector<OutputDesc> outputs;   // filled by the effect descriptors (glint_effect.h)
+    std::vector<CounterDesc> counters; // likewise
 };
 
 } // namespace glint

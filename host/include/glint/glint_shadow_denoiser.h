@@ -31,43 +31,42 @@ struct ShadowDenoiserDesc {
     bool filter = true;           // false: no filter passes
     bool classify = true;         // false: no classification; the filter reads "shadow_filter_input"
     bool skipClearedTiles = true; // with classify: the filter skips tiles classification cleared
-    // The three a-trous iterations in one dispatch ("filter", 16x16 tiles, intermediates in
-    // groupshared memory) instead of three ("filter0..2"); same taps and weights. Off by default:
-    // on an H100 it measured 96.5 us against 91.5 us for the three dispatches at 1080p with tile
-    // skipping, and 486 us against 300 us without (docs/performance.md).
-    bool fusedFilter = false;
-    // Without fusedFilter: the iterations with steps 1 and 2 in one dispatch ("filter01", the
-    // first over the 8x8 tile +- 2 pixels in groupshared memory), then "filter2"; same taps and
-    // results as "filter0..2". Saves 3.7 us at 1080p on an H100 (docs/performance.md).
+    // The iterations with steps 1 and 2 in one dispatch ("filter01", the first over the 8x8
+    // tile +- 2 pixels in groupshared memory), then "filter2"; same taps and results as
+    // "filter0..2". Step 1 then runs over 144 pixels a group instead of 64, in exchange for one
+    // dispatch and one scratch round trip fewer, which cost more (docs/performance.md).
     bool pairedFilter = true;
-    // With the filter's tile list (skipClearedTiles, three dispatches): classification in two
-    // dispatches, "classify" (every tile, 2x2 tiles a group: metadata, list, clear tiles'
-    // output) and "temporal" (the listed tiles, indirectly). One dispatch of one tile a group
-    // spends most of its time starting groups for clear tiles. Same results; saves
-    // 2.9 us at 1080p on an H100 (docs/performance.md).
+    // With the filter's tile list (skipClearedTiles): classification in two dispatches,
+    // "classify" (every tile, 2x2 tiles a group: metadata, list, clear tiles' output) and
+    // "temporal" (the listed tiles, indirectly). A dispatch of one tile a group over mostly
+    // clear tiles is bound by the rate at which groups start, not by their work; one dispatch
+    // more costs less than that (docs/performance.md). Same results.
     bool splitClassify = true;
     // FidelityFX's "contrast recovery" mean^max(1.2 - variance, 1) in the last pass. Off by
     // default: it darkens penumbrae (docs/shadow_denoiser.md, "Convergence").
     bool contrastRemap = false;
     // Classification's anti-lag test: a history its 5x5 neighbourhood contradicts is shortened,
     // so moving shadows are followed within a few frames (docs/shadow_denoiser.md, "Motion").
-    // Costs about 4.4 us at 1080p on an H100 (62.2 against 57.8 us; docs/performance.md).
+    // It loads up to 25 window positions a pixel in the tiles that are not clear (its cost:
+    // docs/performance.md); content known to be static can turn it off.
     bool antiLag = true;
     // Clear tiles store no moments; next frame rebuilds their history from this frame's tile
     // metadata and depth (both frames' "shadow_previous_depth" must be the frame before's
     // "shadow_depth"). Same results, 16 bytes a pixel fewer writes on clear tiles.
     bool rebuildClearHistory = true;
-    // The filter's edge stop sees this times the variance of the accumulated mean: larger values
-    // keep filtering settled penumbrae (less noise, more bias where they are narrow in pixels).
+    // Classification stores this times the variance of the accumulated mean as the variance of
+    // its (shadow, variance) output, which the filter's edge stop reads: larger values keep
+    // filtering settled penumbrae (less noise, more bias where they are narrow in pixels).
     // 0 (default): 1/16 up to 360 rows, growing with (rows / 360)^2 above (0.5625 at 1080p),
     // since a fixed-size kernel biases a penumbra less the more pixels it spans
     // (docs/shadow_denoiser.md, "The filter strength and the resolution").
-    float filterVarianceScale = 0.0f;
+    float storedVarianceScale = 0.0f;
     // The format of "shadow_output": R8Unorm (default), R16Float (the shadow only) or RG32Float
     // (shadow and the filter's variance, for debugging). A shadow mask needs one channel (NRD
-    // recommends R8), and classification stores every clear tile's output: in RG32F that store
-    // cost 1.8 us of the pass's 13.7 us at 1080p on an H100. Each format is its own permutation
-    // of the passes that write the output (docs/shadow_denoiser.md, "Output format").
+    // recommends R8), and classification stores every clear tile's output, most of a frame: the
+    // narrower the format, the fewer bytes it writes (docs/performance.md). Each format is its
+    // own permutation of the passes that write the output (docs/shadow_denoiser.md, "Output
+    // format").
     Format outputFormat = Format::R8Unorm;
 
     // Classification (temporal) inputs. Matrices are row-major 4x4 with column vectors (q = M p).
@@ -79,9 +78,9 @@ struct ShadowDenoiserDesc {
     std::uint32_t frameIndex = 0; // moments and metadata ping-pong on its parity
 };
 
-// The filter variance scale a description resolves to (filterVarianceScale, or its automatic
-// value for the size).
-float shadowFilterVarianceScale(const ShadowDenoiserDesc& desc);
+// The stored variance scale a description resolves to (storedVarianceScale, or its automatic
+// value for the size): the factor classification applies to the variance it stores.
+float shadowStoredVarianceScale(const ShadowDenoiserDesc& desc);
 
 // Words of the visibility mask: ceil(W / 8) x ceil(H / 4).
 Extent2D shadowMaskTiles(Extent2D size);
@@ -102,13 +101,12 @@ std::string shadowTileMetadataName(std::uint32_t frameIndex);
 //   "shadow_moments0/1"     RGBA32F (mean, M2, n, accumulated shadow): written on frame parity, read
 //                           on the other; .w is the next frame's shadow history. With
 //                           rebuildClearHistory, texels of clear tiles are not written.
-//   "shadow_scratch0/1"     RG32F (shadow, variance): classification writes 0 (with the fused
-//                           filter and tile skipping, not in clear tiles); "filter0" writes 1,
-//                           "filter1" writes 0 ("filter01" writes 1); scratch 1 only without
-//                           fusedFilter
+//   "shadow_scratch0/1"     RG32F (shadow, variance): classification writes 0 (with the tile
+//                           list, not in clear tiles); "filter0" writes 1, "filter1" writes 0
+//                           ("filter01" writes 1); scratch 1 only with the filter
 //   "shadow_filter_work"    buffer, one uint: 8x8 tiles filtered, counted once per iteration (skipping)
 //   "shadow_filter_tiles"   buffer, 4 bytes per 8x8 tile: the tiles classification listed for the
-//                           three filter dispatches (x | y << 16), with skipping and without fusedFilter
+//                           filter dispatches (x | y << 16), with skipping
 //   "shadow_filter_args"    buffer, 12 bytes: their indirect arguments (prepare resets, classify counts);
 //                           classification then writes the CLEAR tiles' output itself
 //   "shadow_output"         outputFormat (R8 UNORM by default): .x the denoised shadow (1 = lit, 0 for

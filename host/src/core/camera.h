@@ -1,5 +1,5 @@
 // Camera helpers shared by the effects' plans: view depth from device depth, 4x4 inverses
-// and matrix rows for the constants (reference/conventions.md sections 2 and 6).
+// and matrix rows for the constants (docs/conventions.md §2.1 and §6).
 #pragma once
 
 #include "glint/common/glint_shared_types.h"

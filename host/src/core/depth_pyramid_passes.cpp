@@ -75,6 +75,7 @@ Result planDepthPyramid(const DepthPyramidDesc& desc, EffectPlan& plan, std::str
 
     plan = EffectPlan{};
     plan.effect = "depth_pyramid";
+    plan.size = desc.size;
     plan.images.push_back(
         {"depth_pyramid", layout.level0.width, layout.level0.height, layout.levelCount,
          desc.channels == DepthPyramidChannels::ClosestAndFarthest ? Format::RG32Float : Format::R32Float});

@@ -33,6 +33,7 @@ Result planRoughnessExtraction(const RoughnessExtractionDesc& desc, EffectPlan& 
 
     plan = EffectPlan{};
     plan.effect = "gbuffer";
+    plan.size = desc.size;
     plan.images.push_back({"roughness", desc.size.width, desc.size.height, 1,
                            desc.halfPrecisionOutput ? Format::R16Float : Format::R32Float});
     plan.passes.push_back(std::move(pass));

@@ -103,6 +103,7 @@ Result planReflectionsDenoiser(const ReflectionsDenoiserDesc& desc, EffectPlan& 
     const std::uint32_t w = desc.size.width, h = desc.size.height;
     plan = EffectPlan{};
     plan.effect = "reflections_denoiser";
+    plan.size = desc.size;
     const bool half = desc.halfPrecisionStorage;
     for (const char* name :
          {"rd_clamped", "rd_reprojected", "rd_prefiltered", "rd_radiance0", "rd_radiance1"})

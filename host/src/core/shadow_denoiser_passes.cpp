@@ -14,10 +14,10 @@
 namespace glint {
 namespace {
 
-// Classification lists the tiles the three-dispatch filter works on (indirect dispatch) and
-// writes the clear tiles' output itself.
+// Classification lists the tiles the filter works on (indirect dispatch) and writes the clear
+// tiles' output itself.
 bool usesTileList(const ShadowDenoiserDesc& desc) {
-    return desc.classify && desc.filter && desc.skipClearedTiles && !desc.fusedFilter;
+    return desc.classify && desc.filter && desc.skipClearedTiles;
 }
 
 Result invalid(std::string* error, const std::string& message) {
@@ -98,8 +98,7 @@ Pass filterPass(const ShadowDenoiserDesc& desc, std::uint32_t index, const char*
         pass.uses.push_back({"g_glint_filter_work", "shadow_filter_work", Access::ReadWrite});
         if (index == 0) pass.zeroBuffers = {"shadow_filter_work"};
     }
-    // Three dispatches with tile skipping always go through the tile list (fusedFilterPass
-    // picks its own pipeline).
+    // Tile skipping always goes through the tile list.
     if (usesTileList(desc)) {
         pass.pipeline = "shadow_denoiser_filter.list";
         pass.dispatch = IndirectDispatch{"shadow_filter_args", 0};
@@ -108,20 +107,6 @@ Pass filterPass(const ShadowDenoiserDesc& desc, std::uint32_t index, const char*
         if (index == 2) pass.uses[3].access = Access::ReadWrite;
     }
     if (std::string_view(output) == "shadow_output") pass.pipeline = outputPipeline(desc, pass.pipeline);
-    return pass;
-}
-
-// The three iterations in one dispatch of 16x16 groups (docs/shadow_denoiser.md, "Fused filter").
-Pass fusedFilterPass(const ShadowDenoiserDesc& desc, const char* input) {
-    Pass pass = filterPass(desc, 2, input, "shadow_output");
-    pass.name = "filter";
-    pass.pipeline =
-        outputPipeline(desc, desc.classify && desc.skipClearedTiles ? "shadow_denoiser_filter.fused_skip"
-                                                                    : "shadow_denoiser_filter.fused");
-    pass.groupSize[0] = GLINT_SHADOW_DENOISER_FILTER_FUSED_TILE;
-    pass.groupSize[1] = GLINT_SHADOW_DENOISER_FILTER_FUSED_TILE;
-    pass.dispatch = core::gridFor(desc.size.width, desc.size.height, 1, pass.groupSize);
-    if (desc.classify && desc.skipClearedTiles) pass.zeroBuffers = {"shadow_filter_work"};
     return pass;
 }
 
@@ -135,17 +120,14 @@ Pass classifyPass(const ShadowDenoiserDesc& desc, Extent2D tiles) {
     constants.maskTiles = {tiles.width, tiles.height};
     core::storeRows(desc.reprojection, constants.reproject);
     core::storeRows(desc.inverseViewProjection, constants.inverseViewProj);
-    constants.eyePosition = {desc.eyePosition[0], desc.eyePosition[1], desc.eyePosition[2],
-                             shadowFilterVarianceScale(desc)};
+    constants.eyePosition = {desc.eyePosition[0], desc.eyePosition[1], desc.eyePosition[2], 0.0f};
+    constants.storedVarianceScale = shadowStoredVarianceScale(desc);
     constants.viewDepth = viewDepthCoefficients(desc);
     constants.normalUnpack = {desc.normalUnpackMul, desc.normalUnpackAdd};
     constants.ndcYSign = desc.vulkanNdc ? 1.0f : -1.0f;
     constants.flags = desc.resetHistory ? GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_RESET : 0u;
     if (desc.antiLag) constants.flags |= GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_ANTI_LAG;
     if (desc.rebuildClearHistory) constants.flags |= GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_REBUILD_CLEAR;
-    // The fused filter with tile skipping rebuilds clear tiles from the metadata.
-    if (desc.filter && desc.fusedFilter && desc.skipClearedTiles)
-        constants.flags |= GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_SKIP_CLEAR;
     pass.constantsBinding = "g_glint_constants";
     pass.constants = core::packConstants(constants);
     const bool odd = (desc.frameIndex & 1u) != 0;
@@ -216,10 +198,11 @@ Extent2D shadowMaskTiles(Extent2D size) {
             core::divideRoundUp(size.height, GLINT_SHADOW_DENOISER_MASK_TILE_HEIGHT)};
 }
 
-float shadowFilterVarianceScale(const ShadowDenoiserDesc& desc) {
-    if (desc.filterVarianceScale > 0.0f) return desc.filterVarianceScale;
-    // Measured on the courtyard (docs/shadow_denoiser.md): 1/16 is neutral at 640x360 and the
-    // filter's bias at a given penumbra falls with the square of its width in pixels.
+float shadowStoredVarianceScale(const ShadowDenoiserDesc& desc) {
+    if (desc.storedVarianceScale > 0.0f) return desc.storedVarianceScale;
+    // 1/16 up to 360 rows, where any more spatial filtering costs more in bias than it gains;
+    // above, the filter's bias at a penumbra of a given angular size falls with the square of
+    // its width in pixels (docs/shadow_denoiser.md, "The filter strength and the resolution").
     const float rows = static_cast<float>(desc.size.height) / 360.0f;
     return 0.0625f * std::max(rows * rows, 1.0f);
 }
@@ -234,8 +217,8 @@ Result planShadowDenoiser(const ShadowDenoiserDesc& desc, EffectPlan& plan, std:
         return invalid(error, "depthSigma must be finite and >= 1e-6");
     if (!(desc.normalPower >= 1.0f && desc.normalPower <= 256.0f))
         return invalid(error, "normalPower must be 1..256");
-    if (!(desc.filterVarianceScale >= 0.0f && std::isfinite(desc.filterVarianceScale)))
-        return invalid(error, "filterVarianceScale must be finite and >= 0 (0: automatic)");
+    if (!(desc.storedVarianceScale >= 0.0f && std::isfinite(desc.storedVarianceScale)))
+        return invalid(error, "storedVarianceScale must be finite and >= 0 (0: automatic)");
     if (!std::isfinite(desc.normalUnpackMul) || !std::isfinite(desc.normalUnpackAdd))
         return invalid(error, "normal unpack factors must be finite");
 
@@ -248,14 +231,13 @@ Result planShadowDenoiser(const ShadowDenoiserDesc& desc, EffectPlan& plan, std:
     const Extent2D tiles = shadowMaskTiles(desc.size);
     plan = EffectPlan{};
     plan.effect = "shadow_denoiser";
+    plan.size = desc.size;
     plan.buffers.push_back({"shadow_mask", std::uint64_t{tiles.width} * tiles.height * 4u, false});
     plan.passes.push_back(preparePass(desc, tiles));
     const std::uint32_t w = desc.size.width;
     const std::uint32_t h = desc.size.height;
-    const bool threeDispatches = desc.filter && !desc.fusedFilter;
-    if (desc.classify || threeDispatches)
-        plan.images.push_back({"shadow_scratch0", w, h, 1, Format::RG32Float});
-    if (threeDispatches) plan.images.push_back({"shadow_scratch1", w, h, 1, Format::RG32Float});
+    if (desc.classify || desc.filter) plan.images.push_back({"shadow_scratch0", w, h, 1, Format::RG32Float});
+    if (desc.filter) plan.images.push_back({"shadow_scratch1", w, h, 1, Format::RG32Float});
     if (desc.classify) {
         const std::uint64_t tileCount =
             std::uint64_t{core::divideRoundUp(w, GLINT_SHADOW_DENOISER_FILTER_TILE)} *
@@ -280,10 +262,6 @@ Result planShadowDenoiser(const ShadowDenoiserDesc& desc, EffectPlan& plan, std:
         plan.buffers.push_back({"shadow_filter_args", 12, true});
     }
     const char* input = desc.classify ? "shadow_scratch0" : "shadow_filter_input";
-    if (desc.fusedFilter) {
-        plan.passes.push_back(fusedFilterPass(desc, input));
-        return Result::Ok;
-    }
     if (desc.pairedFilter) {
         // Steps 1 and 2 in one dispatch ("filter01"), into scratch 1; step 4 reads it.
         Pass pair = filterPass(desc, 0, input, "shadow_scratch1");

@@ -202,6 +202,7 @@ Result planSssr(const SssrDesc& desc, EffectPlan& plan, std::string* error) {
     if (layout.fullLevelCount < GLINT_SSSR_PYRAMID_LEVELS) pyramid.levelCount = 0;
     if (const Result result = planDepthPyramid(pyramid, plan, error); result != Result::Ok) return result;
     plan.effect = "sssr";
+    plan.size = desc.size;
 
     const std::vector<std::byte> constants =
         core::packConstants(makeConstants(desc, viewFromClip, worldFromView));

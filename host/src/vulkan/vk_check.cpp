@@ -1,7 +1,7 @@
 // VkResult names and the throwing check behind GLINT_VK_CHECK. The names are spelled out here
 // because the core Vulkan headers carry no string table (vk_enum_string_helper.h ships only
 // with the SDK, not with every distribution's headers).
-#include "vulkan/vk_check.h"
+#include "glint/vulkan/vk_check.h"
 
 namespace glint::vk {
 

@@ -1,8 +1,8 @@
-#include "vulkan/vk_executor.h"
+#include "glint/vulkan/vk_executor.h"
 
 #include "core/pass_model.h"
 #include "core/shader_library.h"
-#include "vulkan/vk_check.h"
+#include "glint/vulkan/vk_check.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -258,8 +258,9 @@ VkDescriptorSet writeDescriptors(Executor& executor, const ComputePipeline& pipe
             const auto image = resources.images.find(use->resource);
             if (image == resources.images.end())
                 fail(pass, "image '" + use->resource + "' is not in the resource table");
-            // A storage image must be written in its real format (reference defect: GLSL ports
-            // declared rgba32f on RGBA16F images, a source of GPU-specific corruption).
+            // A storage image must be written in its real format (docs/conventions.md §8 and
+            // defect SS14: GLSL ports declared rgba32f on RGBA16F images, a source of
+            // GPU-specific corruption).
             if (binding.type == VK_DESCRIPTOR_TYPE_STORAGE_IMAGE &&
                 binding.imageFormat != VK_FORMAT_UNDEFINED && binding.imageFormat != image->second->format)
                 fail(pass, "'" + binding.name + "' declares VkFormat " + std::to_string(binding.imageFormat) +

@@ -1,6 +1,6 @@
-#include "vulkan/vk_pipeline.h"
+#include "glint/vulkan/vk_pipeline.h"
 
-#include "vulkan/vk_check.h"
+#include "glint/vulkan/vk_check.h"
 
 #include <cinttypes>
 #include <cstdio>

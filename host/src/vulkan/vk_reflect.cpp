@@ -1,4 +1,4 @@
-#include "vulkan/vk_reflect.h"
+#include "glint/vulkan/vk_reflect.h"
 
 #include <spirv_cross/spirv_cross.hpp>
 

@@ -1,8 +1,8 @@
 // Buffers and 2D images with dedicated allocations. glint allocates a handful of resources per
 // effect, so one allocation per resource keeps ownership obvious and costs nothing measurable.
-#include "vulkan/vk_resources.h"
+#include "glint/vulkan/vk_resources.h"
 
-#include "vulkan/vk_check.h"
+#include "glint/vulkan/vk_check.h"
 
 #include <algorithm>
 #include <bit>

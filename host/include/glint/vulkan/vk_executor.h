@@ -8,8 +8,8 @@
 #pragma once
 
 #include "glint/glint_pass.h"
-#include "vulkan/vk_pipeline.h"
-#include "vulkan/vk_resources.h"
+#include "glint/vulkan/vk_pipeline.h"
+#include "glint/vulkan/vk_resources.h"
 
 #include <functional>
 #include <map>
@@ -44,8 +44,8 @@ struct Executor {
     Buffer constantRing; // per-pass constants, host-visible
     VkDeviceSize constantRingUsed = 0;
     // 1x1 images bound to storage-image array slots past an image's last level, one per
-    // format, so that no spare slot ever aliases a live level (reference defect: spare mip
-    // slots bound to mip 0 let late writes land there).
+    // format, so that no spare slot ever aliases a live level (docs/conventions.md, defect DP1:
+    // spare mip slots bound to mip 0 let late writes land there).
     std::map<VkFormat, Image> spareImages;
     std::vector<VkImage> spareImagesToInitialize; // created, not yet moved to GENERAL
 };

@@ -3,7 +3,7 @@
 #pragma once
 
 #include "glint/glint_pass.h"
-#include "vulkan/vk_device.h"
+#include "glint/vulkan/vk_device.h"
 
 #include <cstdint>
 

@@ -1,14 +1,13 @@
-// Runs the shadow denoiser plan (glint_shadow_denoiser.h) on the harness context from CPU
-// arrays: uploads the application's inputs, records one frame, reads the outputs back. The
-// plan's own resources (histories, masks) persist across frames. Shared by the tests,
-// `glint run`, `glint dump` and `glint bench`.
+// The tests' adapter over the shadow denoiser plan (glint_shadow_denoiser.h) on
+// gpu::EffectRunner: uploads the application's inputs from CPU arrays, records one frame, reads
+// the outputs back. The plan's own resources (histories, masks) persist across frames.
 #pragma once
 
 #include <gpu/gpu_context.h>
-#include <gpu/gpu_plan_runner.h>
+#include <gpu/gpu_effect_runner.h>
 
 #include "glint/glint_shadow_denoiser.h"
-#include "vulkan/vk_executor.h"
+#include "glint/vulkan/vk_resources.h"
 
 #include <cstdint>
 #include <vector>
@@ -48,17 +47,16 @@ class ShadowRunner {
     // Plans `desc` (same size and flags as the constructor's), uploads the non-empty inputs,
     // runs, reads back (only filteredTiles without `readback`). With `timings`, the pass names
     // and GPU milliseconds of this frame.
-    ShadowOutputs run(const ShadowDenoiserDesc& desc, const ShadowInputs& inputs,
-                      PlanTimings* timings = nullptr, bool readback = true);
+    ShadowOutputs run(const ShadowDenoiserDesc& desc, const ShadowInputs& inputs, FrameRun* timings = nullptr,
+                      bool readback = true);
     // Overwrites the moments history (read this frame with frameIndex) and scratch 1.
     void setHistory(std::uint32_t frameIndex, const std::vector<float>& moments,
                     const std::vector<float>& shadow);
 
   private:
     const Context& context_;
+    EffectRunner runner_;
     std::vector<vk::Image> inputs_;
-    PlanResources owned_;
-    vk::Executor executor_;
 };
 
 } // namespace glint::gpu

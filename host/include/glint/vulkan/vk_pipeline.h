@@ -2,8 +2,8 @@
 // reflection of the same module gives.
 #pragma once
 
-#include "vulkan/vk_device.h"
-#include "vulkan/vk_reflect.h"
+#include "glint/vulkan/vk_device.h"
+#include "glint/vulkan/vk_reflect.h"
 
 #include <span>
 #include <string>

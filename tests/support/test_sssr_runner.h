@@ -1,16 +1,21 @@
-// Runs the reflections effect (vk_sssr.h) on the harness context from CPU arrays: uploads the
-// application's inputs (the environment with a box-filtered mip chain), records one frame,
-// reads the outputs back. Shared by the tests and `glint bench sssr`.
+// The tests' adapter over the reflections effect (glint_reflections.h) on gpu::EffectRunner:
+// uploads the application's inputs from CPU arrays (the environment with a box-filtered mip
+// chain), records one frame of SSSR (and the reflections denoiser when asked), reads the
+// owned resources back as the SSSR tests expect them.
 #pragma once
 
 #include <gpu/gpu_context.h>
-#include <gpu/gpu_plan_runner.h>
+#include <gpu/gpu_effect_runner.h>
+#include <gpu/gpu_input_images.h>
 
+#include "glint/glint_reflections.h"
+#include "glint/glint_reflections_denoiser.h"
 #include "glint/glint_sssr.h"
-#include "vulkan/vk_sssr.h"
+#include "glint/vulkan/vk_executor.h"
 
 #include <array>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace glint::gpu {
@@ -46,7 +51,7 @@ class SssrRunner {
     // compactInputs: the application's images in the formats an engine would use (RGBA16F
     // normals and colour, R16F roughness from material channel 0, RG16F motion) instead of
     // 32-bit floats; for benchmarks. The tests keep 32 bits so that their references see
-    // exactly the values the GPU reads.
+    // exactly the values the GPU reads. Throws std::runtime_error with the planner's message.
     SssrRunner(const Context& context, const SssrDesc& desc, bool compactInputs = false);
     ~SssrRunner();
     SssrRunner(const SssrRunner&) = delete;
@@ -70,16 +75,13 @@ class SssrRunner {
     const vk::Image& ownedImage(const std::string& name) const;
 
   private:
+    // `frame` with the runner's composite reflection (fixed at create).
+    SssrDesc frameDesc(const SssrDesc& frame) const;
+
     const Context& context_;
     SssrDesc desc_;
-    bool compact_ = false;
-    vk::SssrEffect effect_;
-    vk::Executor executor_;
-    std::vector<vk::Image> images_; // depth, normals, material, color, motion, base colour, environment
+    EffectRunner runner_;
+    InputImages inputs_;
 };
-
-// Box-filtered mip chain of an RGBA lat-long map: levels[0] is the input.
-std::vector<std::vector<float>> environmentMips(std::uint32_t width, std::uint32_t height,
-                                                const std::vector<float>& rgba);
 
 } // namespace glint::gpu

@@ -1,0 +1,35 @@
+// glint settings [effect]: every setting of the effects' settings tables (glint_effect.h) with
+// its type, default, range and help; the same rows --set parses and checks.
+#include "cli_commands.h"
+
+#include "glint/glint_effect.h"
+
+#include <cstdio>
+#include <stdexcept>
+
+namespace glint::cli {
+
+std::string effectNames() {
+    std::string names;
+    for (const EffectDescriptor* effect : effectRegistry()) names += (names.empty() ? "" : ", ") + effect->name;
+    return names;
+}
+
+std::string settingsHelp() {
+    return "Settings (--set name=value):\n" + describeSettings(allSettings());
+}
+
+int runSettings(const std::string& effectName) {
+    for (const EffectDescriptor* effect : effectRegistry()) {
+        if (!effectName.empty() && effect->name != effectName) continue;
+        std::vector<const SettingDesc*> table;
+        for (const SettingDesc& setting : effect->settings) table.push_back(&setting);
+        std::printf("%s: %s\n%s", effect->name.c_str(), effect->help.c_str(), describeSettings(table).c_str());
+        if (!effectName.empty()) return kExitOk;
+    }
+    if (!effectName.empty())
+        throw std::invalid_argument("settings: unknown effect '" + effectName + "' (" + effectNames() + ")");
+    return kExitOk;
+}
+
+} // namespace glint::cli

@@ -1,0 +1,52 @@
+// The packed words that passes hand to each other through buffers, compiled by both C++ and
+// HLSL so that the shaders that write them and every tool or test that decodes them share
+// one definition.
+//
+//   ray-list entry   (SSSR ray list)        x in bits 0-14, y in bits 15-28 (pixels),
+//                                           bits 29-31 the quad-copy flags (GLINT_SSSR_RAY_COPY_*)
+//   tile-list entry  (SSSR tile list, read by the reflections denoiser)
+//                                           the 8x8 tile's top-left pixel: x in bits 0-15, y in 16-31
+//   shadow tile      (shadow filter's list) the 8x8 tile's index: x in bits 0-15, y in 16-31
+//   shadow mask word (shadow denoiser)      one word per 8x4 pixels, pixel (x, y) at bit
+//                                           (y mod 4) * 8 + (x mod 8); 1 = lit
+//   shadow tile metadata                    one word per 8x8 tile: bit 0 CLEAR, bit 1 LIGHT
+#ifndef GLINT_WIRE_FORMATS_H
+#define GLINT_WIRE_FORMATS_H
+
+#include "glint/common/glint_shared_types.h"
+
+#ifdef __cplusplus
+#define GLINT_WIRE_FUNCTION inline
+namespace glint::shared {
+#else
+#define GLINT_WIRE_FUNCTION
+#endif
+
+// The largest pixel coordinates a ray-list entry holds.
+#define GLINT_WIRE_RAY_MAX_X 0x7FFFu
+#define GLINT_WIRE_RAY_MAX_Y 0x3FFFu
+
+GLINT_WIRE_FUNCTION uint GLINT_WIRE_PackRayEntry(uint x, uint y, uint copyFlags)
+{
+    return (x & GLINT_WIRE_RAY_MAX_X) | ((y & GLINT_WIRE_RAY_MAX_Y) << 15) | copyFlags;
+}
+GLINT_WIRE_FUNCTION uint GLINT_WIRE_RayEntryX(uint entry) { return entry & GLINT_WIRE_RAY_MAX_X; }
+GLINT_WIRE_FUNCTION uint GLINT_WIRE_RayEntryY(uint entry) { return (entry >> 15) & GLINT_WIRE_RAY_MAX_Y; }
+
+// Tile-list entries of both kinds: two 16-bit coordinates.
+GLINT_WIRE_FUNCTION uint GLINT_WIRE_PackTileEntry(uint x, uint y) { return (x & 0xFFFFu) | (y << 16); }
+GLINT_WIRE_FUNCTION uint GLINT_WIRE_TileEntryX(uint entry) { return entry & 0xFFFFu; }
+GLINT_WIRE_FUNCTION uint GLINT_WIRE_TileEntryY(uint entry) { return entry >> 16; }
+
+// Shadow mask: the bit of pixel (x, y) within its word.
+GLINT_WIRE_FUNCTION uint GLINT_WIRE_ShadowMaskBit(uint x, uint y) { return (y & 3u) * 8u + (x & 7u); }
+
+#define GLINT_WIRE_SHADOW_TILE_CLEAR 1u
+#define GLINT_WIRE_SHADOW_TILE_LIGHT 2u
+
+#ifdef __cplusplus
+} // namespace glint::shared
+#endif
+#undef GLINT_WIRE_FUNCTION
+
+#endif // GLINT_WIRE_FORMATS_H

@@ -1,0 +1,98 @@
+// glint public API: every effect as one descriptor.
+//
+// A descriptor is all a tool needs to run an effect without knowing it: its settings table,
+// the application images it reads (by what they hold, so a capture reader or an engine knows
+// what to bind), and a plan builder that turns a frame and the settings into passes and
+// resources (glint_pass.h). The plan also names the effect's outputs and counters and how to
+// decode them, so replay, dumps and tests read every effect the same way. Effects compose by
+// resource name: the reflections effect runs the reflections denoiser on SSSR's outputs, and a
+// value both share (the roughness threshold) is one setting. Nothing here touches a graphics API.
+#pragma once
+
+#include "glint/glint_depth_pyramid.h"
+#include "glint/glint_pass.h"
+#include "glint/glint_settings.h"
+#include "glint/glint_types.h"
+
+#include <array>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace glint {
+
+// What a frame gives every effect: size, camera and how the G-buffer is encoded. Matrices are
+// row-major 4x4 with column vectors (q = M p), unjittered (docs/conventions.md).
+struct FrameInfo {
+    Extent2D size;
+    std::array<double, 16> projection{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};    // view -> clip
+    std::array<double, 16> viewFromWorld{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}; // this frame
+    std::array<double, 16> previousClipFromWorld{1, 0, 0, 0, 0, 1, 0, 0,
+                                                 0, 0, 1, 0, 0, 0, 0, 1}; // last frame's projection * view
+    DepthConvention depth = DepthConvention::Standard;
+    float nearPlane = 0.1f;
+    float farPlane = 1000.0f; // 0 = infinite (reversed depth only)
+    bool vulkanNdc = true;    // y_n = 2v - 1 (true) or 1 - 2v (D3D-style)
+    float normalUnpackMul = 1.0f; // n = normalize(raw.xyz * mul + add)
+    float normalUnpackAdd = 0.0f;
+    std::uint32_t materialChannel = 0; // channel of the material image holding roughness
+    bool roughnessIsPerceptual = true; // true: r (squared once); false: GGX alpha
+    float motionScaleX = 1.0f, motionScaleY = 1.0f; // uv_prev = uv + scale * mv
+    // The environment behind the reflections' misses: solid angle of a level-0 texel and the
+    // last mip level.
+    float environmentTexelSolidAngle = 4.0f * 3.14159265f / (6.0f * 128.0f * 128.0f);
+    float environmentMaxLod = 7.0f;
+    std::uint32_t frameIndex = 0; // histories ping-pong on its parity
+    bool resetHistory = false;    // first frame, camera cut or resize
+};
+
+// What an application image holds. A tool fills each input from its own data by this kind.
+enum class InputKind : std::uint8_t {
+    Depth,             // R: device depth
+    PreviousDepth,     // R: last frame's device depth (this frame's on the first)
+    Normals,           // RGBA: world-space normals, encoded as FrameInfo::normalUnpack says
+    Material,          // RGBA: roughness in FrameInfo::materialChannel
+    Color,             // RGBA: lit colour
+    Motion,            // RG: motion vectors, FrameInfo::motionScale
+    Environment,       // RGBA: lat-long environment with its whole mip chain
+    BaseColorMetallic, // RGBA: base colour and metallic
+    ShadowVisibility,  // R: one binary visibility sample (1 = lit)
+};
+
+struct InputDesc {
+    std::string resource; // the plan's name for it, e.g. "shadow_depth"
+    InputKind kind = InputKind::Depth;
+    std::string setting; // empty: always read; else only while this Bool setting is true
+    std::string shownAs; // non-empty: a tool shows this input as the effect's output of that name
+};
+
+struct EffectDescriptor {
+    std::string name; // as --effects spells it
+    std::string help; // one line
+    std::vector<SettingDesc> settings;
+    std::vector<InputDesc> inputs;
+    // The plan of one frame; InvalidArgument with one line in `error` for a frame or settings
+    // the effect cannot run.
+    Result (*plan)(const FrameInfo& frame, const SettingValues& settings, EffectPlan& plan,
+                   std::string* error) = nullptr;
+    // The settings that fix resources (formats, which images exist): a change needs a new
+    // instance. Everything else may change from frame to frame.
+    std::vector<std::string> resourceSettings;
+    // The Bool setting a tool turns on when it wants every intermediate (empty: none needed).
+    std::string debugSetting;
+    // The reference a capture may carry for the effect's final output ("reflection": the
+    // capture layer "reference.reflection"), shown and scored as the output "reference".
+    std::string reference;
+};
+
+// Every effect glint ships, in the order a tool runs them.
+const std::vector<const EffectDescriptor*>& effectRegistry();
+const EffectDescriptor* findEffect(std::string_view name);
+
+// Every effect's settings in one table (a setting two effects share appears once).
+std::vector<const SettingDesc*> allSettings();
+
+// The settings of `effects` at their defaults.
+SettingValues defaultSettings(const std::vector<const EffectDescriptor*>& effects);
+
+} // namespace glint

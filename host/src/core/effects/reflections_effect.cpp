@@ -1,0 +1,267 @@
+// The reflections effect: SSSR (glint_sssr.h), then optionally the reflections denoiser
+// (glint_reflections_denoiser.h) on SSSR's outputs, then optionally the composite. The
+// denoiser runs between the intersection and the composite, so the composite applies the
+// denoised reflection the denoiser writes over "sssr_radiance"; its variance is next frame's
+// variance history for variance-guided tracing.
+#include "core/effects/effect_tables.h"
+
+#include "glint/glint_effect.h"
+#include "glint/glint_reflections.h"
+#include "glint/glint_reflections_denoiser.h"
+#include "glint/glint_sssr.h"
+#include "glint/glint_sssr_tables.h"
+#include "glint/sssr/glint_sssr_constants.h"
+
+#include <algorithm>
+#include <memory>
+
+namespace glint {
+namespace {
+
+using core::boolSetting;
+using core::floatSetting;
+using core::uintSetting;
+
+std::vector<SettingDesc> reflectionsSettings() {
+    const SssrDesc s;
+    const ReflectionsDenoiserDesc d;
+    return {
+        floatSetting("roughnessThreshold", s.roughnessThreshold, 0, 1,
+                     "GGX alpha at and above which no ray is traced (the environment instead); "
+                     "the denoiser filters below it",
+                     "SssrDesc, ReflectionsDenoiserDesc::roughnessThreshold"),
+        floatSetting("mirrorThreshold", s.mirrorThreshold, 0, 1,
+                     "GGX alpha below which a pixel is a mirror: always traced, never filtered",
+                     "SssrDesc, ReflectionsDenoiserDesc::mirrorThreshold"),
+        uintSetting("samplesPerQuad", s.samplesPerQuad, 1, 4, "rays per 2x2 quad: 1, 2 or 4",
+                    "SssrDesc::samplesPerQuad"),
+        uintSetting("maxTraversalIterations", s.maxTraversalIterations, 1, 4096,
+                    "steps a ray may take through the depth pyramid", "SssrDesc::maxTraversalIterations"),
+        uintSetting("mostDetailedMip", s.mostDetailedMip, 0, GLINT_SSSR_PYRAMID_LEVELS - 1,
+                    "finest pyramid level non-mirror rays descend to", "SssrDesc::mostDetailedMip"),
+        floatSetting("occupancyExitFraction", s.occupancyExitFraction, 0, 1,
+                     "non-mirror rays stop once at most this fraction of their group is live (0 = off)",
+                     "SssrDesc::occupancyExitFraction"),
+        floatSetting("importanceSampleBias", s.importanceSampleBias, 0, 1,
+                     "shrinks the sampled lobe: sharper, biased reflections", "SssrDesc::importanceSampleBias"),
+        floatSetting("thickness", s.thickness, 0, 1e6, "assumed surface thickness, relative to its view depth",
+                     "SssrDesc::thickness"),
+        boolSetting("thicknessAware", s.thicknessAware,
+                    "rays pass behind thin objects (closest+farthest pyramid)", "SssrDesc::thicknessAware"),
+        boolSetting("halfResolution", s.halfResolution, "one ray per 2x2 quad for every pixel",
+                    "SssrDesc::halfResolution"),
+        boolSetting("previousFrameColor", s.previousFrameColor,
+                    "hits fetch last frame's final colour through motion", "SssrDesc::previousFrameColor"),
+        boolSetting("varianceGuided", s.varianceGuided,
+                    "extra rays where the denoiser's variance history is high", "SssrDesc::varianceGuided"),
+        floatSetting("varianceThreshold", s.varianceThreshold, 0, 1e6,
+                     "variance above which variance-guided tracing adds rays", "SssrDesc::varianceThreshold"),
+        boolSetting("halfPrecisionStorage", s.halfPrecisionStorage,
+                    "16-bit radiance, roughness, confidence and denoiser histories",
+                    "SssrDesc, ReflectionsDenoiserDesc::halfPrecisionStorage"),
+        boolSetting("debugOutput", s.debugOutput, "the intersection writes each ray's class and iterations",
+                    "SssrDesc::debugOutput"),
+        boolSetting("composite", s.composite, "adds the reflection to the lit colour (needs base colour)",
+                    "SssrDesc::composite"),
+        boolSetting("denoise", false, "runs the reflections denoiser on the traced samples",
+                    "the denoiser's passes"),
+        floatSetting("denoiser.historyClipScale", d.historyClipScale, 1e-6, 100,
+                     "scale of the resolve's history clip box", "ReflectionsDenoiserDesc::historyClipScale"),
+        uintSetting("denoiser.maxHistoryLength", d.maxHistoryLength, 8, 1024, "frames a history may average",
+                    "ReflectionsDenoiserDesc::maxHistoryLength"),
+        core::choiceSetting("denoiser.spatialPath", 0, {"prefilter", "ratio"},
+                            "spatial filter: edge-aware prefilter or ratio-estimator reuse of rays",
+                            "ReflectionsDenoiserDesc::spatialPath"),
+        floatSetting("denoiser.reconstructionRadius", d.reconstructionRadius, 1, 8,
+                     "ratio path: reconstruction disk radius in pixels",
+                     "ReflectionsDenoiserDesc::reconstructionRadius"),
+        floatSetting("denoiser.cleanupSigma", d.cleanupSigma, 1e-6, 2,
+                     "ratio path: spatial sigma of the cleanup in pixels", "ReflectionsDenoiserDesc::cleanupSigma"),
+    };
+}
+
+SssrDesc sssrDesc(const FrameInfo& frame, const SettingValues& settings) {
+    SssrDesc desc;
+    desc.size = frame.size;
+    desc.projection = frame.projection;
+    desc.viewFromWorld = frame.viewFromWorld;
+    desc.depth = frame.depth;
+    desc.nearPlane = frame.nearPlane;
+    desc.farPlane = frame.farPlane;
+    desc.vulkanNdc = frame.vulkanNdc;
+    desc.normalUnpackMul = frame.normalUnpackMul;
+    desc.normalUnpackAdd = frame.normalUnpackAdd;
+    desc.materialChannel = frame.materialChannel;
+    desc.roughnessIsPerceptual = frame.roughnessIsPerceptual;
+    desc.motionScaleX = frame.motionScaleX;
+    desc.motionScaleY = frame.motionScaleY;
+    desc.environmentTexelSolidAngle = frame.environmentTexelSolidAngle;
+    desc.environmentMaxLod = frame.environmentMaxLod;
+    desc.frameIndex = frame.frameIndex;
+
+    desc.roughnessThreshold = settings.real("roughnessThreshold");
+    desc.mirrorThreshold = settings.real("mirrorThreshold");
+    desc.samplesPerQuad = settings.count("samplesPerQuad");
+    desc.maxTraversalIterations = settings.count("maxTraversalIterations");
+    desc.mostDetailedMip = settings.count("mostDetailedMip");
+    desc.occupancyExitFraction = settings.real("occupancyExitFraction");
+    desc.importanceSampleBias = settings.real("importanceSampleBias");
+    desc.thickness = settings.real("thickness");
+    desc.thicknessAware = settings.flag("thicknessAware");
+    desc.halfResolution = settings.flag("halfResolution");
+    desc.previousFrameColor = settings.flag("previousFrameColor");
+    desc.varianceGuided = settings.flag("varianceGuided");
+    desc.varianceThreshold = settings.real("varianceThreshold");
+    desc.halfPrecisionStorage = settings.flag("halfPrecisionStorage");
+    desc.debugOutput = settings.flag("debugOutput");
+    desc.composite = settings.flag("composite");
+    desc.denoise = settings.flag("denoise");
+    return desc;
+}
+
+ReflectionsDenoiserDesc denoiserDesc(const FrameInfo& frame, const SettingValues& settings,
+                                     const SssrDesc& sssr) {
+    ReflectionsDenoiserDesc desc;
+    desc.size = frame.size;
+    desc.projection = frame.projection;
+    desc.viewFromWorld = frame.viewFromWorld;
+    desc.previousClipFromWorld = frame.previousClipFromWorld;
+    desc.depth = frame.depth;
+    desc.nearPlane = frame.nearPlane;
+    desc.farPlane = frame.farPlane;
+    desc.vulkanNdc = frame.vulkanNdc;
+    desc.normalUnpackMul = frame.normalUnpackMul;
+    desc.normalUnpackAdd = frame.normalUnpackAdd;
+    desc.motionScaleX = frame.motionScaleX;
+    desc.motionScaleY = frame.motionScaleY;
+    desc.resetHistory = frame.resetHistory;
+    desc.frameIndex = frame.frameIndex;
+    // Shared with SSSR: the classification decides which pixels the denoiser sees.
+    desc.roughnessThreshold = sssr.roughnessThreshold;
+    desc.mirrorThreshold = sssr.mirrorThreshold;
+    desc.halfPrecisionStorage = sssr.halfPrecisionStorage;
+    desc.historyClipScale = settings.real("denoiser.historyClipScale");
+    desc.maxHistoryLength = settings.count("denoiser.maxHistoryLength");
+    desc.spatialPath = static_cast<SpatialPath>(settings.choice("denoiser.spatialPath"));
+    desc.reconstructionRadius = settings.real("denoiser.reconstructionRadius");
+    desc.cleanupSigma = settings.real("denoiser.cleanupSigma");
+    return desc;
+}
+
+std::shared_ptr<const std::vector<float>> blueNoiseTexels() {
+    static const auto texels = std::make_shared<const std::vector<float>>(sssrBlueNoise());
+    return texels;
+}
+
+std::shared_ptr<const std::vector<float>> brdfLutTexels() {
+    static const auto texels = std::make_shared<const std::vector<float>>(sssrBrdfLut(kSssrBrdfLutSize));
+    return texels;
+}
+
+void renameResource(EffectPlan& plan, const std::string& from, const std::string& to) {
+    for (Pass& pass : plan.passes)
+        for (ResourceUse& use : pass.uses)
+            if (use.resource == from) use.resource = to;
+}
+
+void addOutputs(EffectPlan& plan, const SssrDesc& sssr, const ReflectionsDenoiserDesc* denoiser) {
+    const char* denoisedBy =
+        denoiser && denoiser->spatialPath == SpatialPath::RatioEstimator ? "cleanup" : "resolve";
+    auto& out = plan.outputs;
+    out.push_back({"noisy", "sssr_radiance", "intersect", OutputDecoder::Channels, 0, 3});
+    if (denoiser) out.push_back({"denoised", "sssr_radiance", denoisedBy, OutputDecoder::Channels, 0, 3});
+    if (sssr.composite) out.push_back({"composite", "composite", "composite", OutputDecoder::Channels, 0, 3});
+    out.push_back({"confidence", "sssr_confidence", "intersect", OutputDecoder::Channels, 0, 1});
+    const auto intermediate = [&](OutputDesc output) {
+        output.intermediate = true;
+        out.push_back(std::move(output));
+    };
+    intermediate({"hit_distance", "sssr_radiance", denoiser ? denoisedBy : "intersect", OutputDecoder::Channels,
+                  3, 1});
+    intermediate({"roughness", "sssr_roughness", "classify", OutputDecoder::Channels, 0, 1});
+    intermediate({"ray_list", "sssr_ray_list", "classify", OutputDecoder::RayList, 0, 1, 0, "traced_pixels"});
+    intermediate({"tile_list", "sssr_tile_list", "classify", OutputDecoder::TileList, 0, 1, 0, "listed_tiles"});
+    if (sssr.debugOutput) {
+        intermediate({"ray_class", "sssr_ray_info", "intersect", OutputDecoder::Channels, 2, 1});
+        intermediate({"iterations", "sssr_ray_info", "intersect", OutputDecoder::Channels, 3, 1});
+    }
+    if (denoiser)
+        intermediate({"variance", reflectionsDenoiserVariance(denoiser->frameIndex), "resolve",
+                      OutputDecoder::Channels, 0, 1});
+    intermediate({"pyramid_mip", "depth_pyramid", "depth_pyramid", OutputDecoder::MipChain, 0, 1, 1});
+    plan.counters.push_back({"traced_pixels", "sssr_counters", 1, "traced_fraction"});
+    plan.counters.push_back({"listed_tiles", "sssr_counters", 3, ""});
+}
+
+Result planFrame(const FrameInfo& frame, const SettingValues& settings, EffectPlan& plan, std::string* error) {
+    SssrDesc sssr = sssrDesc(frame, settings);
+    const ReflectionsDenoiserDesc denoiser = denoiserDesc(frame, settings, sssr);
+    sssr.storeRays = sssr.denoise && denoiser.spatialPath == SpatialPath::RatioEstimator;
+    return planReflections(sssr, sssr.denoise ? &denoiser : nullptr, plan, error);
+}
+
+} // namespace
+
+Result planReflections(const SssrDesc& sssr, const ReflectionsDenoiserDesc* denoiser, EffectPlan& plan,
+                       std::string* error) {
+    if (denoiser && !sssr.denoise) {
+        if (error) *error = "reflections: a denoiser desc needs SssrDesc::denoise";
+        return Result::InvalidArgument;
+    }
+    if (const Result result = planSssr(sssr, plan, error); result != Result::Ok) return result;
+    plan.effect = "reflections";
+    for (Pass& pass : plan.passes)
+        if (pass.pipeline.rfind("depth_pyramid", 0) == 0) pass.name = "depth_pyramid";
+
+    plan.images.push_back({"sssr_blue_noise_source", kSssrBlueNoiseSize, kSssrBlueNoiseSize, 1,
+                           Format::RG32Float, blueNoiseTexels()});
+    if (sssr.composite)
+        plan.images.push_back(
+            {"sssr_brdf_lut", kSssrBrdfLutSize, kSssrBrdfLutSize, 1, Format::RG32Float, brdfLutTexels()});
+    if (!sssr.denoise) {
+        // Without a denoiser there is no variance to guide by: a zero history.
+        plan.images.push_back({"sssr_zero_variance", 1, 1, 1, Format::R32Float});
+        renameResource(plan, "sssr_variance_history", "sssr_zero_variance");
+        addOutputs(plan, sssr, nullptr);
+        return Result::Ok;
+    }
+    renameResource(plan, "sssr_variance_history", reflectionsDenoiserVariance(sssr.frameIndex + 1));
+    // With denoise but no denoiser desc this frame: the denoiser's resources, none of its passes.
+    ReflectionsDenoiserDesc resourcesOnly;
+    resourcesOnly.size = sssr.size;
+    resourcesOnly.halfPrecisionStorage = sssr.halfPrecisionStorage;
+    EffectPlan denoiserPlan;
+    if (const Result result = planReflectionsDenoiser(denoiser ? *denoiser : resourcesOnly, denoiserPlan, error);
+        result != Result::Ok)
+        return result;
+    const auto composite = std::find_if(plan.passes.begin(), plan.passes.end(),
+                                        [](const Pass& pass) { return pass.name == "composite"; });
+    if (denoiser) plan.passes.insert(composite, denoiserPlan.passes.begin(), denoiserPlan.passes.end());
+    plan.images.insert(plan.images.end(), denoiserPlan.images.begin(), denoiserPlan.images.end());
+    plan.buffers.insert(plan.buffers.end(), denoiserPlan.buffers.begin(), denoiserPlan.buffers.end());
+    addOutputs(plan, sssr, denoiser);
+    return Result::Ok;
+}
+
+const EffectDescriptor& reflectionsEffect() {
+    static const EffectDescriptor descriptor{
+        "reflections",
+        "stochastic screen-space reflections, optionally denoised and composited",
+        reflectionsSettings(),
+        {{"depth", InputKind::Depth, ""},
+         {"normals", InputKind::Normals, ""},
+         {"material", InputKind::Material, ""},
+         {"color", InputKind::Color, "", "input"},
+         {"motion", InputKind::Motion, ""},
+         {"environment", InputKind::Environment, ""},
+         {"base_color_metallic", InputKind::BaseColorMetallic, "composite"}},
+        planFrame,
+        {"thicknessAware", "debugOutput", "composite", "halfPrecisionStorage", "denoise",
+         "denoiser.spatialPath"},
+        "debugOutput",
+        "reflection",
+    };
+    return descriptor;
+}
+
+} // namespace glint

@@ -1,0 +1,140 @@
+// The shadow denoiser as an effect (glint_shadow_denoiser.h): the frame's camera gives the
+// reprojection, the inverse view-projection and the eye position the classification needs.
+#include "core/camera.h"
+#include "core/effects/effect_tables.h"
+
+#include "glint/glint_effect.h"
+#include "glint/glint_shadow_denoiser.h"
+
+namespace glint {
+namespace {
+
+using core::boolSetting;
+using core::floatSetting;
+
+std::vector<SettingDesc> shadowSettings() {
+    const ShadowDenoiserDesc s;
+    return {
+        boolSetting("shadows.filter", s.filter, "runs the a-trous filter passes", "ShadowDenoiserDesc::filter"),
+        boolSetting("shadows.classify", s.classify,
+                    "temporal tile classification (a capture replay needs it)", "ShadowDenoiserDesc::classify"),
+        boolSetting("shadows.skipClearedTiles", s.skipClearedTiles,
+                    "the filter skips tiles classification cleared", "ShadowDenoiserDesc::skipClearedTiles"),
+        boolSetting("shadows.pairedFilter", s.pairedFilter, "filter iterations 1 and 2 in one dispatch",
+                    "ShadowDenoiserDesc::pairedFilter"),
+        boolSetting("shadows.splitClassify", s.splitClassify,
+                    "classification in two dispatches (every tile, then listed tiles)",
+                    "ShadowDenoiserDesc::splitClassify"),
+        core::choiceSetting("shadows.outputFormat", 0, {"r8", "r16f", "rg32f"},
+                            "format of the denoised shadow (rg32f adds its variance)",
+                            "ShadowDenoiserDesc::outputFormat"),
+        boolSetting("shadows.antiLag", s.antiLag, "shortens histories their neighbourhood contradicts",
+                    "ShadowDenoiserDesc::antiLag"),
+        boolSetting("shadows.rebuildClearHistory", s.rebuildClearHistory,
+                    "clear tiles' histories rebuilt from tile metadata instead of stored",
+                    "ShadowDenoiserDesc::rebuildClearHistory"),
+        boolSetting("shadows.contrastRemap", s.contrastRemap, "contrast recovery in the last filter pass",
+                    "ShadowDenoiserDesc::contrastRemap"),
+        floatSetting("shadows.storedVarianceScale", s.storedVarianceScale, 0, 1e6,
+                     "scale of the variance classification stores for the filter's edge stop (0: automatic "
+                     "for the size)",
+                     "ShadowDenoiserDesc::storedVarianceScale"),
+        floatSetting("shadows.depthSigma", s.depthSigma, 1e-6, 1e6, "relative depth edge stop of the filter",
+                     "ShadowDenoiserDesc::depthSigma"),
+        floatSetting("shadows.normalPower", s.normalPower, 1, 256, "normal edge stop exponent of the filter",
+                     "ShadowDenoiserDesc::normalPower"),
+    };
+}
+
+const Format kOutputFormats[] = {Format::R8Unorm, Format::R16Float, Format::RG32Float};
+
+Result invalid(std::string* error, const std::string& message) {
+    if (error) *error = "shadows: " + message;
+    return Result::InvalidArgument;
+}
+
+Result planShadows(const FrameInfo& frame, const SettingValues& settings, EffectPlan& plan, std::string* error) {
+    ShadowDenoiserDesc desc;
+    desc.size = frame.size;
+    desc.depth = frame.depth == DepthConvention::Standard ? ShadowDenoiserDepth::Standard
+                                                          : ShadowDenoiserDepth::Reversed;
+    desc.nearPlane = frame.nearPlane;
+    desc.farPlane = frame.farPlane;
+    desc.normalUnpackMul = frame.normalUnpackMul;
+    desc.normalUnpackAdd = frame.normalUnpackAdd;
+    desc.vulkanNdc = frame.vulkanNdc;
+    desc.resetHistory = frame.resetHistory;
+    desc.frameIndex = frame.frameIndex;
+    const core::Matrix4 clipFromWorld = core::multiply(frame.projection, frame.viewFromWorld);
+    core::Matrix4 worldFromClip{}, worldFromView{};
+    if (!core::invert(clipFromWorld, worldFromClip) || !core::invert(frame.viewFromWorld, worldFromView))
+        return invalid(error, "the camera's view-projection is not invertible");
+    desc.inverseViewProjection = worldFromClip;
+    desc.reprojection = core::multiply(frame.previousClipFromWorld, worldFromClip);
+    desc.eyePosition = {static_cast<float>(worldFromView[3]), static_cast<float>(worldFromView[7]),
+                        static_cast<float>(worldFromView[11])};
+
+    desc.filter = settings.flag("shadows.filter");
+    desc.classify = settings.flag("shadows.classify");
+    desc.skipClearedTiles = settings.flag("shadows.skipClearedTiles");
+    desc.pairedFilter = settings.flag("shadows.pairedFilter");
+    desc.splitClassify = settings.flag("shadows.splitClassify");
+    desc.outputFormat = kOutputFormats[settings.choice("shadows.outputFormat")];
+    desc.antiLag = settings.flag("shadows.antiLag");
+    desc.rebuildClearHistory = settings.flag("shadows.rebuildClearHistory");
+    desc.contrastRemap = settings.flag("shadows.contrastRemap");
+    desc.storedVarianceScale = settings.real("shadows.storedVarianceScale");
+    desc.depthSigma = settings.real("shadows.depthSigma");
+    desc.normalPower = settings.real("shadows.normalPower");
+    if (!desc.classify)
+        return invalid(error, "needs shadows.classify=true (the filter alone reads a (mean, variance) image "
+                              "no frame carries)");
+    if (const Result result = planShadowDenoiser(desc, plan, error); result != Result::Ok) return result;
+    plan.effect = "shadows";
+
+    const std::uint32_t parity = frame.frameIndex & 1u;
+    const std::string moments = parity != 0 ? "shadow_moments1" : "shadow_moments0";
+    if (desc.filter) {
+        const char* last = "filter2";
+        plan.outputs.push_back({"denoised", "shadow_output", last, OutputDecoder::Channels, 0, 1});
+        if (desc.outputFormat == Format::RG32Float)
+            plan.outputs.push_back({"variance", "shadow_output", last, OutputDecoder::Channels, 1, 1});
+    } else {
+        plan.outputs.push_back({"denoised", "shadow_scratch0", "classify", OutputDecoder::Channels, 0, 1});
+        plan.outputs.push_back({"variance", "shadow_scratch0", "classify", OutputDecoder::Channels, 1, 1});
+    }
+    OutputDesc mask{"mask", "shadow_mask", "prepare", OutputDecoder::ShadowMask};
+    OutputDesc classes{"tile_class", shadowTileMetadataName(frame.frameIndex), "classify",
+                       OutputDecoder::ShadowTileClass};
+    OutputDesc history{"moments", moments, "classify", OutputDecoder::Channels, 0, 3};
+    for (OutputDesc* output : {&mask, &classes, &history}) {
+        output->intermediate = true;
+        plan.outputs.push_back(*output);
+    }
+    if (desc.filter && desc.skipClearedTiles)
+        plan.counters.push_back({"filtered_tiles", "shadow_filter_work", 0, ""});
+    return Result::Ok;
+}
+
+} // namespace
+
+const EffectDescriptor& shadowsEffect() {
+    static const EffectDescriptor descriptor{
+        "shadows",
+        "ray-traced shadow denoiser: one visibility sample per pixel in, a stable shadow mask out",
+        shadowSettings(),
+        {{"shadow_visibility", InputKind::ShadowVisibility, "", "noisy"},
+         {"shadow_depth", InputKind::Depth, ""},
+         {"shadow_previous_depth", InputKind::PreviousDepth, ""},
+         {"shadow_normals", InputKind::Normals, ""},
+         {"shadow_motion", InputKind::Motion, ""}},
+        planShadows,
+        {"shadows.filter", "shadows.classify", "shadows.skipClearedTiles", "shadows.pairedFilter",
+         "shadows.splitClassify", "shadows.outputFormat", "shadows.rebuildClearHistory"},
+        "",
+        "shadow",
+    };
+    return descriptor;
+}
+
+} // namespace glint
