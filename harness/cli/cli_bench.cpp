@@ -8,7 +8,7 @@
 #include "glint/glint_shadow_denoiser.h"
 
 #include <gpu/gpu_context.h>
-#include <gpu/gpu_plan_runner.h>
+#include <gpu/gpu_effect_runner.h>
 #include <gpu/gpu_transfer.h>
 
 #include <algorithm>
@@ -140,15 +140,28 @@ int runBench(const BenchOptions& options) {
         gpu::uploadImage(context, inputs.back(), input.texels, input.channels);
         external[input.name] = &inputs.back();
     }
-    // Owned images start at 0 rather than NaN: histories must hold finite values when the
-    // frame being timed does not reset them.
-    gpu::PlanResources owned = gpu::createPlanResources(context, setup.plan, 0.0f);
-    vk::Executor executor = vk::createExecutor(context.device);
-    const vk::ResourceTable table = gpu::resourceTable(owned, external);
-
-    // Warm-up runs settle clocks and pipeline creation before anything is measured.
-    gpu::executePlan(context, executor, setup.plan, table, std::min(options.runs, 10u));
-    const gpu::PlanTimings timings = gpu::executePlan(context, executor, setup.plan, table, options.runs);
+    std::vector<std::string> passes;
+    std::vector<std::vector<double>> times; // times[run][pass]
+    {
+        // Owned resources start at zero: histories hold finite values when the timed frames
+        // do not reset them.
+        gpu::EffectRunner runner(context, setup.plan);
+        vk::ResourceTable table;
+        table.images = external;
+        // Warm-up runs settle clocks and pipeline creation before anything is measured.
+        for (uint32_t run = 0; run < std::min(options.runs, 10u); ++run) runner.run(setup.plan, table);
+        for (uint32_t run = 0; run < options.runs; ++run) {
+            gpu::FrameRun frame = runner.run(setup.plan, table);
+            passes = frame.passes;
+            if (!frame.milliseconds.empty()) times.push_back(std::move(frame.milliseconds));
+        }
+    }
+    const auto median = [&](std::size_t pass) {
+        std::vector<double> values;
+        for (const auto& run : times) values.push_back(run.at(pass));
+        std::sort(values.begin(), values.end());
+        return values.empty() ? -1.0 : values[values.size() / 2];
+    };
 
     std::printf("device: %s, driver %s %s\n", context.info.name.c_str(), context.info.driverName.c_str(),
                 context.info.driverInfo.c_str());
@@ -158,28 +171,25 @@ int runBench(const BenchOptions& options) {
     if (options.effect == "depth_pyramid")
         std::printf("levels %s%s\n", options.levels ? std::to_string(options.levels).c_str() : "full chain",
                     options.skipLevel0 ? ", level 0 not copied" : "");
-    for (std::size_t pass = 0; pass < timings.passes.size(); ++pass) {
+    for (std::size_t pass = 0; pass < passes.size(); ++pass) {
         std::vector<double> values;
-        for (const auto& run : timings.times) values.push_back(run.at(pass));
+        for (const auto& run : times) values.push_back(run.at(pass));
         std::sort(values.begin(), values.end());
         if (values.empty()) {
-            std::printf("  %-20s no timestamps on this queue\n", timings.passes[pass].c_str());
+            std::printf("  %-20s no timestamps on this queue\n", passes[pass].c_str());
             continue;
         }
-        std::printf("  %-20s median %9.2f us   min %9.2f us   p90 %9.2f us\n", timings.passes[pass].c_str(),
-                    1000.0 * gpu::medianMilliseconds(timings, pass), 1000.0 * values.front(),
+        std::printf("  %-20s median %9.2f us   min %9.2f us   p90 %9.2f us\n", passes[pass].c_str(),
+                    1000.0 * median(pass), 1000.0 * values.front(),
                     1000.0 * values[values.size() * 9 / 10]);
     }
 
-    if (timings.passes.size() > 1 && !timings.times.empty()) {
+    if (passes.size() > 1 && !times.empty()) {
         double total = 0.0;
-        for (std::size_t pass = 0; pass < timings.passes.size(); ++pass)
-            total += gpu::medianMilliseconds(timings, pass);
+        for (std::size_t pass = 0; pass < passes.size(); ++pass) total += median(pass);
         std::printf("  %-20s %9.2f us (sum of the medians)\n", "all passes", 1000.0 * total);
     }
 
-    vk::destroyExecutor(executor);
-    gpu::destroyPlanResources(context, owned);
     for (vk::Image& input : inputs) vk::destroyImage(context.device, input);
     gpu::destroyContext(context);
     const uint32_t errors = context.validation ? context.validation->errors.load() : 0u;

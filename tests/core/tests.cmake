@@ -6,4 +6,6 @@ glint_add_test_suite(NAME core LABELS unit
     core/plan_validation_test.cpp
     core/shader_library_test.cpp
     core/constants_layout_test.cpp
+    core/settings_test.cpp
+    core/effect_registry_test.cpp
   LIBS glint_vulkan glint_internal)
