@@ -89,7 +89,7 @@ struct ReportOptions {
 
 int runDevices(bool validate);
 // glint settings [effect]: the settings tables; settingsHelp() is the same listing for --help.
-int runSettings(const std::string& effect);
+int runSettings(const std::string& effect, bool markdown);
 std::string settingsHelp();
 // The registered effects' names, "a, b, c".
 std::string effectNames();

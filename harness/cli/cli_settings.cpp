@@ -19,12 +19,21 @@ std::string settingsHelp() {
     return "Settings (--set name=value):\n" + describeSettings(allSettings());
 }
 
-int runSettings(const std::string& effectName) {
+std::string settingsSection(const EffectDescriptor& effect) {
+    std::vector<const SettingDesc*> table;
+    for (const SettingDesc& setting : effect.settings) table.push_back(&setting);
+    return "## " + effect.name + "\n\n" + effect.help + ".\n\n" + settingsMarkdown(table);
+}
+
+int runSettings(const std::string& effectName, bool markdown) {
     for (const EffectDescriptor* effect : effectRegistry()) {
         if (!effectName.empty() && effect->name != effectName) continue;
         std::vector<const SettingDesc*> table;
         for (const SettingDesc& setting : effect->settings) table.push_back(&setting);
-        std::printf("%s: %s\n%s", effect->name.c_str(), effect->help.c_str(), describeSettings(table).c_str());
+        if (markdown)
+            std::printf("\n%s", settingsSection(*effect).c_str());
+        else
+            std::printf("%s: %s\n%s", effect->name.c_str(), effect->help.c_str(), describeSettings(table).c_str());
         if (!effectName.empty()) return kExitOk;
     }
     if (!effectName.empty())

@@ -23,6 +23,8 @@ int main(int argc, char** argv) {
     CLI::App* settings = app.add_subcommand(
         "settings", "List every effect's settings (--set name=value): type, default, range, help");
     settings->add_option("effect", settingsEffect, glint::cli::effectNames());
+    bool settingsMarkdown = false;
+    settings->add_flag("--markdown", settingsMarkdown, "as the Markdown tables of docs/settings.md");
 
     std::string infoPath;
     bool headerOnly = false;
@@ -147,7 +149,7 @@ int main(int argc, char** argv) {
 
     try {
         if (*devices) return glint::cli::runDevices(validate);
-        if (*settings) return glint::cli::runSettings(settingsEffect);
+        if (*settings) return glint::cli::runSettings(settingsEffect, settingsMarkdown);
         if (*info) return glint::cli::runInfo(infoPath, !headerOnly);
         if (*simulateCommand) {
             if (!simulateSize.empty() &&

@@ -4,6 +4,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <fstream>
+#include <iterator>
+
 namespace {
 
 using glint::SettingDesc;
@@ -93,4 +96,17 @@ TEST_CASE("the roughness threshold is one setting shared by SSSR and the denoise
     std::size_t rows = 0;
     for (const SettingDesc* setting : glint::allSettings()) rows += setting->name == "roughnessThreshold";
     CHECK(rows == 1);
+}
+
+TEST_CASE("docs/settings.md holds every effect's settings table as the tables say", "[settings]") {
+    std::ifstream file(std::string(GLINT_SOURCE_DIR) + "/docs/settings.md");
+    REQUIRE(file);
+    const std::string docs((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    for (const glint::EffectDescriptor* effect : glint::effectRegistry()) {
+        INFO(effect->name << ": regenerate with glint settings --markdown");
+        std::vector<const SettingDesc*> table;
+        for (const SettingDesc& setting : effect->settings) table.push_back(&setting);
+        CHECK_THAT(docs, Catch::Contains("## " + effect->name + "\n\n" + effect->help + ".\n\n" +
+                                         glint::settingsMarkdown(table)));
+    }
 }

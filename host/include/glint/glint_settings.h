@@ -63,6 +63,9 @@ class SettingValues {
 // "name  type  default  range  help" lines of a table, for `glint settings` and --help.
 std::string describeSettings(const std::vector<const SettingDesc*>& table);
 
+// The same rows as a Markdown table (docs/settings.md is made of these, and a test keeps it so).
+std::string settingsMarkdown(const std::vector<const SettingDesc*>& table);
+
 // The value of a setting as a tool spells it ("true", "0.2", "prefilter").
 std::string formatSettingValue(const SettingDesc& setting, double value);
 

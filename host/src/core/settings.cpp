@@ -161,4 +161,13 @@ std::string describeSettings(const std::vector<const SettingDesc*>& table) {
     return text;
 }
 
+std::string settingsMarkdown(const std::vector<const SettingDesc*>& table) {
+    std::string text = "| setting | type | default | range | what it does | goes to |\n|---|---|---|---|---|---|\n";
+    for (const SettingDesc* setting : table)
+        text += "| `" + setting->name + "` | " + typeName(setting->type) + " | " +
+                formatSettingValue(*setting, setting->defaultValue) + " | " + rangeOf(*setting) + " | " +
+                setting->help + " | `" + setting->target + "` |\n";
+    return text;
+}
+
 } // namespace glint
