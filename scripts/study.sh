@@ -3,7 +3,7 @@
 # runs `glint study` and `glint study --scaling` into one folder, then computes FLIP, the
 # Pareto fronts, the plots and the tables with scripts/study.py in a venv (build/venv).
 #
-#   scripts/study.sh [--out DIR] [--size WxH] [--frames N] [--spp N] [--runs N]
+#   scripts/study.sh [--out DIR] [--size WxH] [--frame-count N] [--spp N] [--runs N]
 #                    [--effect reflections|shadows|all] [--quick] [--glint PATH]
 #                    [--python PATH] [--no-plots | --plots-only]
 #
@@ -23,7 +23,7 @@ args=()
 while (($#)); do
   case "$1" in
     --out) out=$2; shift 2 ;;
-    --size | --frames | --spp | --runs | --effect) args+=("$1" "$2"); shift 2 ;;
+    --size | --frame-count | --spp | --runs | --effect) args+=("$1" "$2"); shift 2 ;;
     --quick) args+=(--quick); shift ;;
     --glint) glint=$2; shift 2 ;;
     --python) python=$2; shift 2 ;;

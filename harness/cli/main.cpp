@@ -73,7 +73,7 @@ int main(int argc, char** argv) {
         ->add_option("--scenes", study.scenes, "scene files (default: three bundled scenes per effect)")
         ->delimiter(',');
     studyCommand->add_option("--size", studySize, "resolution WxH (default 1920x1080)");
-    studyCommand->add_option("--frames", study.frames, "frames per point; the last is measured (default 16)");
+    studyCommand->add_option("--frame-count", study.frames, "frames per point; the last is measured (default 16)");
     studyCommand->add_option("--spp", study.spp, "reference samples per pixel");
     studyCommand->add_option("--runs", study.runs, "timed runs per point (default 50)");
     studyCommand->add_flag("--quick", study.quick, "tiny sizes, few frames and points (smoke test)");
@@ -90,7 +90,7 @@ int main(int argc, char** argv) {
         ->required();
     simulateCommand->add_option("--out", simulate.outDir, "output sequence folder")->required();
     simulateCommand->add_option("--size", simulateSize, "override the resolution, WxH");
-    simulateCommand->add_option("--frames", simulate.frames, "override the frame count");
+    simulateCommand->add_option("--frame-count", simulate.frames, "override the frame count");
     simulateCommand->add_option("--spp", simulate.spp, "override the reference samples per pixel");
     CLI::Option* seedOption =
         simulateCommand->add_option("--seed", simulateSeed, "override the scene's seed");

@@ -2,7 +2,7 @@
 # wrote. Fails on any non-zero exit (validation errors included) or when info does not list
 # the frames.
 file(REMOVE_RECURSE "${OUT}")
-execute_process(COMMAND "${GLINT}" --validate simulate "${SCENE}" --size 32x18 --frames 2 --spp 2 --out "${OUT}"
+execute_process(COMMAND "${GLINT}" --validate simulate "${SCENE}" --size 32x18 --frame-count 2 --spp 2 --out "${OUT}"
                 RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
 message(STATUS "simulate: exit ${status}\n${out}${err}")
 if(NOT status EQUAL 0)
