@@ -180,8 +180,7 @@ int runBench(const BenchOptions& options) {
             continue;
         }
         std::printf("  %-20s median %9.2f us   min %9.2f us   p90 %9.2f us\n", passes[pass].c_str(),
-                    1000.0 * median(pass), 1000.0 * values.front(),
-                    1000.0 * values[values.size() * 9 / 10]);
+                    1000.0 * median(pass), 1000.0 * values.front(), 1000.0 * values[values.size() * 9 / 10]);
     }
 
     if (passes.size() > 1 && !times.empty()) {

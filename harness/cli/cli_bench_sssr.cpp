@@ -68,7 +68,8 @@ int runBenchSssr(const BenchOptions& options, const gpu::Context& context) {
     FrameInfo info = replay::frameInfo(frame, environment, 0, true);
     for (std::size_t i = 0; i < 16; ++i) {
         double sum = 0.0;
-        for (std::size_t k = 0; k < 4; ++k) sum += info.projection[i / 4 * 4 + k] * info.viewFromWorld[k * 4 + i % 4];
+        for (std::size_t k = 0; k < 4; ++k)
+            sum += info.projection[i / 4 * 4 + k] * info.viewFromWorld[k * 4 + i % 4];
         info.previousClipFromWorld[i] = sum;
     }
     EffectPlan plan;
@@ -79,7 +80,8 @@ int runBenchSssr(const BenchOptions& options, const gpu::Context& context) {
     for (const InputDesc& input : effect.inputs) {
         if (!input.setting.empty() && !settings.flag(input.setting)) continue;
         if (input.kind == InputKind::Environment) {
-            inputs.uploadEnvironment(environment.width, environment.height, replay::environmentTexels(environment));
+            inputs.uploadEnvironment(environment.width, environment.height,
+                                     replay::environmentTexels(environment));
         } else {
             std::uint32_t channels = 0;
             inputs.upload(input.kind, replay::inputTexels(frame, input.kind, channels), channels);

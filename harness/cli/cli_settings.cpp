@@ -11,7 +11,8 @@ namespace glint::cli {
 
 std::string effectNames() {
     std::string names;
-    for (const EffectDescriptor* effect : effectRegistry()) names += (names.empty() ? "" : ", ") + effect->name;
+    for (const EffectDescriptor* effect : effectRegistry())
+        names += (names.empty() ? "" : ", ") + effect->name;
     return names;
 }
 
@@ -33,7 +34,8 @@ int runSettings(const std::string& effectName, bool markdown) {
         if (markdown)
             std::printf("\n%s", settingsSection(*effect).c_str());
         else
-            std::printf("%s: %s\n%s", effect->name.c_str(), effect->help.c_str(), describeSettings(table).c_str());
+            std::printf("%s: %s\n%s", effect->name.c_str(), effect->help.c_str(),
+                        describeSettings(table).c_str());
         if (!effectName.empty()) return kExitOk;
     }
     if (!effectName.empty())

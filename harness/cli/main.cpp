@@ -73,7 +73,8 @@ int main(int argc, char** argv) {
         ->add_option("--scenes", study.scenes, "scene files (default: three bundled scenes per effect)")
         ->delimiter(',');
     studyCommand->add_option("--size", studySize, "resolution WxH (default 1920x1080)");
-    studyCommand->add_option("--frame-count", study.frames, "frames per point; the last is measured (default 16)");
+    studyCommand->add_option("--frame-count", study.frames,
+                             "frames per point; the last is measured (default 16)");
     studyCommand->add_option("--spp", study.spp, "reference samples per pixel");
     studyCommand->add_option("--runs", study.runs, "timed runs per point (default 50)");
     studyCommand->add_flag("--quick", study.quick, "tiny sizes, few frames and points (smoke test)");
@@ -103,9 +104,7 @@ int main(int argc, char** argv) {
                          "frame .exr, sequence folder, or foreign EXR(s) with --map")
             ->required();
         command->add_option("--map", options.mapPath, "channel map of a foreign capture (docs/replay.md)");
-        command
-            ->add_option("--effects", options.effects,
-                         glint::cli::effectNames() + " (default: declared)")
+        command->add_option("--effects", options.effects, glint::cli::effectNames() + " (default: declared)")
             ->delimiter(',');
         command->add_option("--set", options.settings, "a setting, name=value (repeatable; glint settings)");
         command->footer(glint::cli::settingsHelp());

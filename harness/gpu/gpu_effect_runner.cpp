@@ -49,12 +49,13 @@ void recordCopy(VkCommandBuffer cmd, const vk::Image& source, const vk::Image& t
     region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.extent = {source.width, source.height, 1};
-    vkCmdCopyImage(cmd, source.image, VK_IMAGE_LAYOUT_GENERAL, target.image, VK_IMAGE_LAYOUT_GENERAL, 1, &region);
+    vkCmdCopyImage(cmd, source.image, VK_IMAGE_LAYOUT_GENERAL, target.image, VK_IMAGE_LAYOUT_GENERAL, 1,
+                   &region);
     VkMemoryBarrier after{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
     after.srcAccessMask = VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
     after.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
-    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &after,
-                         0, nullptr, 0, nullptr);
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1,
+                         &after, 0, nullptr, 0, nullptr);
 }
 
 std::vector<float> channelsOf(const std::vector<float>& texels, std::size_t count, std::uint32_t stride,
@@ -73,9 +74,11 @@ std::vector<std::string> passNames(const EffectPlan& plan) {
     return names;
 }
 
-EffectRunner::EffectRunner(const Context& context, const EffectPlan& plan) : context_(context), size_(plan.size) {
+EffectRunner::EffectRunner(const Context& context, const EffectPlan& plan)
+    : context_(context), size_(plan.size) {
     std::string error;
-    if (vk::createEffect(context.device, plan, effect_, &error) != Result::Ok) throw std::runtime_error(error);
+    if (vk::createEffect(context.device, plan, effect_, &error) != Result::Ok)
+        throw std::runtime_error(error);
     executor_ = vk::createExecutor(context.device);
 }
 
@@ -120,7 +123,8 @@ FrameRun EffectRunner::run(const EffectPlan& plan, const vk::ResourceTable& inpu
             if (!needsSnapshot(plan, output) || !effect_.images.contains(output.resource)) continue;
             const vk::Image& source = effect_.images.at(output.resource);
             vk::Image& target = snapshots_[output.name];
-            if (target.image == VK_NULL_HANDLE || target.format != source.format || target.width != source.width) {
+            if (target.image == VK_NULL_HANDLE || target.format != source.format ||
+                target.width != source.width) {
                 vk::destroyImage(context_.device, target);
                 target = vk::createImage2D(context_.device, source.width, source.height, source.format);
                 clearImage(context_, target, VkClearColorValue{});
@@ -131,7 +135,8 @@ FrameRun EffectRunner::run(const EffectPlan& plan, const vk::ResourceTable& inpu
     result.passes = passNames(plan);
     const bool timed = context_.device.timestamps;
     TimestampPool pool;
-    if (timed) pool = createTimestampPool(context_.device, static_cast<std::uint32_t>(2 * plan.passes.size()));
+    if (timed)
+        pool = createTimestampPool(context_.device, static_cast<std::uint32_t>(2 * plan.passes.size()));
     vk::PassHooks hooks;
     // Top of pipe before and bottom of pipe after: the dispatch's own duration, with the
     // barriers before it and the copies after it outside the interval.
@@ -218,7 +223,8 @@ std::vector<DecodedOutput> EffectRunner::readOutputs(const EffectPlan& plan, boo
                 }
                 const std::uint32_t x0 = GLINT_WIRE_TileEntryX(entry), y0 = GLINT_WIRE_TileEntryY(entry);
                 for (std::uint32_t y = y0; y < std::min(h, y0 + 8); ++y)
-                    for (std::uint32_t x = x0; x < std::min(w, x0 + 8); ++x) decoded.pixels[std::size_t{y} * w + x] = 1.0f;
+                    for (std::uint32_t x = x0; x < std::min(w, x0 + 8); ++x)
+                        decoded.pixels[std::size_t{y} * w + x] = 1.0f;
             }
             break;
         }

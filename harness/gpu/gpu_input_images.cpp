@@ -11,15 +11,22 @@ namespace {
 VkFormat formatFor(InputKind kind, bool compact) {
     switch (kind) {
     case InputKind::Depth:
-    case InputKind::PreviousDepth: return VK_FORMAT_R32_SFLOAT;
+    case InputKind::PreviousDepth:
+        return VK_FORMAT_R32_SFLOAT;
     case InputKind::Normals:
-    case InputKind::Color: return compact ? VK_FORMAT_R16G16B16A16_SFLOAT : VK_FORMAT_R32G32B32A32_SFLOAT;
-    case InputKind::Material: return compact ? VK_FORMAT_R16_SFLOAT : VK_FORMAT_R32G32B32A32_SFLOAT;
-    case InputKind::Motion: return compact ? VK_FORMAT_R16G16_SFLOAT : VK_FORMAT_R32G32_SFLOAT;
-    case InputKind::BaseColorMetallic: return compact ? VK_FORMAT_R8G8B8A8_UNORM : VK_FORMAT_R32G32B32A32_SFLOAT;
+    case InputKind::Color:
+        return compact ? VK_FORMAT_R16G16B16A16_SFLOAT : VK_FORMAT_R32G32B32A32_SFLOAT;
+    case InputKind::Material:
+        return compact ? VK_FORMAT_R16_SFLOAT : VK_FORMAT_R32G32B32A32_SFLOAT;
+    case InputKind::Motion:
+        return compact ? VK_FORMAT_R16G16_SFLOAT : VK_FORMAT_R32G32_SFLOAT;
+    case InputKind::BaseColorMetallic:
+        return compact ? VK_FORMAT_R8G8B8A8_UNORM : VK_FORMAT_R32G32B32A32_SFLOAT;
     // 8-bit visibility: 0 or 1; NaN uploads as 0, shadowed, as the shader treats it.
-    case InputKind::ShadowVisibility: return compact ? VK_FORMAT_R8_UNORM : VK_FORMAT_R32_SFLOAT;
-    case InputKind::Environment: return VK_FORMAT_R32G32B32A32_SFLOAT;
+    case InputKind::ShadowVisibility:
+        return compact ? VK_FORMAT_R8_UNORM : VK_FORMAT_R32_SFLOAT;
+    case InputKind::Environment:
+        return VK_FORMAT_R32G32B32A32_SFLOAT;
     }
     return VK_FORMAT_UNDEFINED;
 }
@@ -40,7 +47,8 @@ std::vector<std::vector<float>> environmentMips(std::uint32_t width, std::uint32
                     float sum = 0.0f;
                     for (std::uint32_t dy = 0; dy < 2; ++dy)
                         for (std::uint32_t dx = 0; dx < 2; ++dx) {
-                            const std::uint32_t sx = std::min(2 * x + dx, w - 1), sy = std::min(2 * y + dy, h - 1);
+                            const std::uint32_t sx = std::min(2 * x + dx, w - 1),
+                                                sy = std::min(2 * y + dy, h - 1);
                             sum += src[(std::size_t{sy} * w + sx) * 4 + c];
                         }
                     dst[(std::size_t{y} * nw + x) * 4 + c] = 0.25f * sum;
@@ -62,8 +70,8 @@ InputImages::~InputImages() {
 void InputImages::upload(InputKind kind, const std::vector<float>& texels, std::uint32_t channels) {
     const std::size_t pixels = std::size_t{size_.width} * size_.height;
     if (texels.size() != pixels * channels)
-        throw std::runtime_error("input images: an input has " + std::to_string(texels.size()) + " values, not " +
-                                 std::to_string(pixels * channels));
+        throw std::runtime_error("input images: an input has " + std::to_string(texels.size()) +
+                                 " values, not " + std::to_string(pixels * channels));
     vk::Image& image = images_[kind];
     if (image.image == VK_NULL_HANDLE)
         image = vk::createImage2D(context_.device, size_.width, size_.height, formatFor(kind, compact_));
@@ -76,7 +84,8 @@ void InputImages::upload(InputKind kind, const std::vector<float>& texels, std::
     uploadImage(context_, image, texels, channels);
 }
 
-void InputImages::uploadEnvironment(std::uint32_t width, std::uint32_t height, const std::vector<float>& rgba) {
+void InputImages::uploadEnvironment(std::uint32_t width, std::uint32_t height,
+                                    const std::vector<float>& rgba) {
     const auto levels = environmentMips(width, height, rgba);
     vk::Image& image = images_[InputKind::Environment];
     vk::destroyImage(context_.device, image);

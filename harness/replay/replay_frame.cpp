@@ -64,10 +64,12 @@ std::vector<float> roughnessTexels(const capture::Frame& frame) {
     const capture::RoughnessSource& source = frame.roughness;
     if (source.layer.empty()) throw std::runtime_error("capture declares no roughness source");
     const capture::Layer* roughness = capture::findLayer(frame, source.layer);
-    if (!roughness) throw std::runtime_error("capture has no '" + source.layer + "' layer (roughness source)");
+    if (!roughness)
+        throw std::runtime_error("capture has no '" + source.layer + "' layer (roughness source)");
     const int channel = capture::channelIndex(roughness->channels, source.channel);
     if (channel < 0)
-        throw std::runtime_error("roughness layer '" + source.layer + "' has no channel '" + source.channel + "'");
+        throw std::runtime_error("roughness layer '" + source.layer + "' has no channel '" + source.channel +
+                                 "'");
     const std::size_t count = std::size_t{frame.width} * frame.height;
     std::vector<float> material(4 * count, 0.0f);
     const std::size_t have = roughness->channels.size();
@@ -80,30 +82,53 @@ std::vector<float> roughnessTexels(const capture::Frame& frame) {
 
 std::string inputLayer(const capture::Frame& frame, InputKind kind) {
     switch (kind) {
-    case InputKind::Depth: return "depth";
-    case InputKind::Normals: return "normal";
-    case InputKind::Material: return frame.roughness.layer;
-    case InputKind::Color: return "color";
-    case InputKind::Motion: return "motion";
-    case InputKind::BaseColorMetallic: return "material";
-    case InputKind::ShadowVisibility: return "shadow";
+    case InputKind::Depth:
+        return "depth";
+    case InputKind::Normals:
+        return "normal";
+    case InputKind::Material:
+        return frame.roughness.layer;
+    case InputKind::Color:
+        return "color";
+    case InputKind::Motion:
+        return "motion";
+    case InputKind::BaseColorMetallic:
+        return "material";
+    case InputKind::ShadowVisibility:
+        return "shadow";
     case InputKind::PreviousDepth:
-    case InputKind::Environment: return "";
+    case InputKind::Environment:
+        return "";
     }
     return "";
 }
 
 std::vector<float> inputTexels(const capture::Frame& frame, InputKind kind, std::uint32_t& channels) {
     switch (kind) {
-    case InputKind::Depth: channels = 1; return layerChannels(frame, "depth", 1);
-    case InputKind::Normals: channels = 4; return decodedNormals(frame);
-    case InputKind::Material: channels = 4; return roughnessTexels(frame);
-    case InputKind::Color: channels = 4; return layerChannels(frame, "color", 4);
-    case InputKind::Motion: channels = 2; return motionConventionA(frame);
-    case InputKind::BaseColorMetallic: channels = 4; return layerChannels(frame, "material", 4);
-    case InputKind::ShadowVisibility: channels = 1; return layerChannels(frame, "shadow", 1);
+    case InputKind::Depth:
+        channels = 1;
+        return layerChannels(frame, "depth", 1);
+    case InputKind::Normals:
+        channels = 4;
+        return decodedNormals(frame);
+    case InputKind::Material:
+        channels = 4;
+        return roughnessTexels(frame);
+    case InputKind::Color:
+        channels = 4;
+        return layerChannels(frame, "color", 4);
+    case InputKind::Motion:
+        channels = 2;
+        return motionConventionA(frame);
+    case InputKind::BaseColorMetallic:
+        channels = 4;
+        return layerChannels(frame, "material", 4);
+    case InputKind::ShadowVisibility:
+        channels = 1;
+        return layerChannels(frame, "shadow", 1);
     case InputKind::PreviousDepth:
-    case InputKind::Environment: break;
+    case InputKind::Environment:
+        break;
     }
     throw std::logic_error("replay: inputTexels does not read this kind");
 }
@@ -141,8 +166,9 @@ FrameInfo frameInfo(const capture::Frame& frame, const capture::Environment& env
     info.roughnessIsPerceptual = frame.roughness.perceptual;
     if (environment.width > 0 && environment.height > 0) {
         // A lat-long texel at the equator spans (2 pi / w) x (pi / h) steradians.
-        info.environmentTexelSolidAngle = static_cast<float>(
-            2.0 * std::numbers::pi * std::numbers::pi / (static_cast<double>(environment.width) * environment.height));
+        info.environmentTexelSolidAngle =
+            static_cast<float>(2.0 * std::numbers::pi * std::numbers::pi /
+                               (static_cast<double>(environment.width) * environment.height));
         info.environmentMaxLod =
             std::floor(std::log2(static_cast<float>(std::max(environment.width, environment.height))));
     }

@@ -15,7 +15,8 @@ bool hasLayer(const capture::Frame& frame, const std::string& name) {
 }
 
 // A capture layer's first `keep` channels, or nothing when the capture lacks it.
-std::optional<report::Image> layerImage(const capture::Frame& frame, const std::string& name, std::uint32_t keep) {
+std::optional<report::Image> layerImage(const capture::Frame& frame, const std::string& name,
+                                        std::uint32_t keep) {
     const capture::Layer* layer = capture::findLayer(frame, name);
     if (!layer) return std::nullopt;
     const auto stride = static_cast<std::uint32_t>(layer->channels.size());
@@ -29,11 +30,13 @@ bool inputUsed(const InputDesc& input, const SettingValues& settings) {
 
 std::string joinedEffectNames() {
     std::string names;
-    for (const EffectDescriptor* effect : effectRegistry()) names += (names.empty() ? "" : ", ") + effect->name;
+    for (const EffectDescriptor* effect : effectRegistry())
+        names += (names.empty() ? "" : ", ") + effect->name;
     return names;
 }
 
-EffectPlan planOrThrow(const EffectDescriptor& descriptor, const FrameInfo& info, const SettingValues& settings) {
+EffectPlan planOrThrow(const EffectDescriptor& descriptor, const FrameInfo& info,
+                       const SettingValues& settings) {
     EffectPlan plan;
     std::string error;
     if (descriptor.plan(info, settings, plan, &error) != Result::Ok) throw std::invalid_argument(error);
@@ -63,7 +66,8 @@ std::vector<std::string> knownEffects() {
 std::vector<std::string> effectsToRun(const capture::Frame& frame, const std::vector<std::string>& requested,
                                       const SettingValues& settings) {
     const std::vector<std::string>& wanted = requested.empty() ? frame.effects : requested;
-    if (wanted.empty()) throw std::invalid_argument("the capture declares no effects; name them with --effects");
+    if (wanted.empty())
+        throw std::invalid_argument("the capture declares no effects; name them with --effects");
     for (const std::string& name : wanted)
         if (!findEffect(name))
             throw std::invalid_argument("unknown effect '" + name + "' (" + joinedEffectNames() + ")");
@@ -79,7 +83,8 @@ std::vector<std::string> effectsToRun(const capture::Frame& frame, const std::ve
                 throw std::invalid_argument("effect '" + effect->name +
                                             "' needs a roughness source, which this capture does not have");
             if (!hasLayer(frame, layer))
-                throw std::invalid_argument("effect '" + effect->name + "' needs the capture layer '" + layer + "'" +
+                throw std::invalid_argument("effect '" + effect->name + "' needs the capture layer '" +
+                                            layer + "'" +
                                             (input.setting.empty() ? "" : " (for " + input.setting + ")") +
                                             ", which this capture does not have");
         }
@@ -88,13 +93,14 @@ std::vector<std::string> effectsToRun(const capture::Frame& frame, const std::ve
     return effects;
 }
 
-Session::Session(const gpu::Context& context, const capture::Frame& first, const capture::Environment& environment,
-                 SessionOptions options)
+Session::Session(const gpu::Context& context, const capture::Frame& first,
+                 const capture::Environment& environment, SessionOptions options)
     : context_(context), environment_(environment), options_(std::move(options)), width_(first.width),
       height_(first.height) {
     effects_ = effectsToRun(first, options_.effects, options_.settings);
     // Without readback (benchmarks) the inputs take the formats an engine would bind.
-    inputs_ = std::make_unique<gpu::InputImages>(context_, Extent2D{first.width, first.height}, !options_.readback);
+    inputs_ =
+        std::make_unique<gpu::InputImages>(context_, Extent2D{first.width, first.height}, !options_.readback);
     const FrameInfo info = frameInfo(first, environment_, 0, true);
     for (const std::string& name : effects_) {
         auto running = std::make_unique<Running>();
@@ -162,7 +168,8 @@ FrameResult Session::repeat() {
     for (std::size_t row = 0; row < 4; ++row)
         for (std::size_t col = 0; col < 4; ++col) {
             double sum = 0.0;
-            for (std::size_t k = 0; k < 4; ++k) sum += info.projection[row * 4 + k] * info.viewFromWorld[k * 4 + col];
+            for (std::size_t k = 0; k < 4; ++k)
+                sum += info.projection[row * 4 + k] * info.viewFromWorld[k * 4 + col];
             info.previousClipFromWorld[row * 4 + col] = sum;
         }
     for (const auto& running : running_) dispatch(*running, info, result);
@@ -173,9 +180,10 @@ FrameResult Session::repeat() {
 
 FrameResult Session::run(const capture::Frame& frame, bool cut) {
     if (frame.width != width_ || frame.height != height_)
-        throw std::invalid_argument("frame " + std::to_string(frame.frameIndex) + " is " + std::to_string(frame.width) +
-                                    "x" + std::to_string(frame.height) + ", the sequence started at " +
-                                    std::to_string(width_) + "x" + std::to_string(height_));
+        throw std::invalid_argument("frame " + std::to_string(frame.frameIndex) + " is " +
+                                    std::to_string(frame.width) + "x" + std::to_string(frame.height) +
+                                    ", the sequence started at " + std::to_string(width_) + "x" +
+                                    std::to_string(height_));
     effectsToRun(frame, effects_, options_.settings); // every frame must still feed every effect
     FrameResult result;
     const bool reset = frame_ == 0 || cut;

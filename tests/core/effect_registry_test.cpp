@@ -28,9 +28,9 @@ glint::FrameInfo testFrame(std::uint32_t index = 1) {
 }
 
 bool declares(const glint::EffectDescriptor& effect, const std::string& name, glint::SettingType type) {
-    return std::any_of(effect.settings.begin(), effect.settings.end(), [&](const glint::SettingDesc& setting) {
-        return setting.name == name && setting.type == type;
-    });
+    return std::any_of(
+        effect.settings.begin(), effect.settings.end(),
+        [&](const glint::SettingDesc& setting) { return setting.name == name && setting.type == type; });
 }
 
 bool hasResource(const glint::EffectPlan& plan, const std::string& name) {
@@ -86,7 +86,8 @@ TEST_CASE("every setting an effect refers to is declared in its own table", "[ef
         for (const std::string& name : effect->resourceSettings) CHECK(names.contains(name));
         for (const glint::InputDesc& input : effect->inputs)
             if (!input.setting.empty()) CHECK(declares(*effect, input.setting, glint::SettingType::Bool));
-        if (!effect->debugSetting.empty()) CHECK(declares(*effect, effect->debugSetting, glint::SettingType::Bool));
+        if (!effect->debugSetting.empty())
+            CHECK(declares(*effect, effect->debugSetting, glint::SettingType::Bool));
     }
 }
 
@@ -139,11 +140,11 @@ TEST_CASE("the roughness threshold set once reaches SSSR's and the denoiser's co
     using glint::shaders::GLINT_ReflectionsDenoiserConstants;
     using glint::shaders::GLINT_SssrConstants;
     CHECK(floatAt(passNamed(plan, "classify"), offsetof(GLINT_SssrConstants, roughnessThreshold)) == 0.35f);
-    CHECK(floatAt(passNamed(plan, "reproject"), offsetof(GLINT_ReflectionsDenoiserConstants, roughnessThreshold)) ==
-          0.35f);
+    CHECK(floatAt(passNamed(plan, "reproject"),
+                  offsetof(GLINT_ReflectionsDenoiserConstants, roughnessThreshold)) == 0.35f);
     CHECK(floatAt(passNamed(plan, "classify"), offsetof(GLINT_SssrConstants, mirrorThreshold)) == 0.01f);
-    CHECK(floatAt(passNamed(plan, "reproject"), offsetof(GLINT_ReflectionsDenoiserConstants, mirrorThreshold)) ==
-          0.01f);
+    CHECK(floatAt(passNamed(plan, "reproject"),
+                  offsetof(GLINT_ReflectionsDenoiserConstants, mirrorThreshold)) == 0.01f);
 }
 
 TEST_CASE("the reflections' variance history is last frame's denoised variance", "[effects]") {
@@ -159,7 +160,8 @@ TEST_CASE("the reflections' variance history is last frame's denoised variance",
         CHECK(written != read);
         bool classifyReads = false;
         for (const glint::ResourceUse& use : passNamed(plan, "classify").uses)
-            classifyReads = classifyReads || (use.binding == "g_glint_variance_history" && use.resource == read);
+            classifyReads =
+                classifyReads || (use.binding == "g_glint_variance_history" && use.resource == read);
         CHECK(classifyReads);
         // Without the denoiser: a zero history, and none of the denoiser's passes.
         REQUIRE(settings.assign("denoise=false").empty());

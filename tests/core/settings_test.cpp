@@ -55,8 +55,9 @@ TEST_CASE("settings parse every spelling of their type", "[settings]") {
     CHECK(values.real("scale") == 2500.0f);
     CHECK(values.assign("mode=c").empty());
     CHECK(values.choice("mode") == 2);
-    CHECK(values.assignments() == std::vector<std::string>{"flag=1", "flag=off", "flag=true", "flag=off", "flag=on",
-                                                           "flag=off", "count=8", "scale=2.5e3", "mode=c"});
+    CHECK(values.assignments() == std::vector<std::string>{"flag=1", "flag=off", "flag=true", "flag=off",
+                                                           "flag=on", "flag=off", "count=8", "scale=2.5e3",
+                                                           "mode=c"});
 }
 
 TEST_CASE("bad settings get one line naming the setting, what it needs and what it got", "[settings]") {

@@ -327,11 +327,13 @@ TEST_CASE("tile skipping: an all-lit frame filters no tile, with identical outpu
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }
 
-TEST_CASE("tile skipping after classification: the unskipped result over frames with penumbrae",
+TEST_CASE("tile skipping after classification: close to filtering every tile, over frames with penumbrae",
           "[classify][tiles]") {
     // Odd size: partial groups and clamped borders. A penumbra everywhere but in the lit and
-    // shadowed bands, so tiles of every kind meet at group borders; the filter over the tile
-    // list (CLEAR neighbours rebuilt from the metadata) must give what it gives over every tile.
+    // shadowed bands, so tiles of every kind meet at group borders. Skipping keeps a CLEAR
+    // tile's constant where filtering it would blend in, through the edge stops, a little of the
+    // neighbouring filtered tiles: the two differ there, by far less than half an 8-bit output
+    // step (2e-3); a skipped tile with a wrong constant or a listed tile left out would not.
     ShadowDenoiserDesc desc = classifyDesc(53, 37);
     desc.filter = true;
     test::ShadowInputs inputs = test::makeShadowInputs(53, 37, 23);
@@ -347,8 +349,7 @@ TEST_CASE("tile skipping after classification: the unskipped result over frames 
     float worst = 0.0f;
     for (std::size_t i = 0; i < results[0].filtered.size(); ++i)
         worst = std::max(worst, std::abs(results[0].filtered[i] - results[1].filtered[i]));
-    // Same operations in the same order; only the compiler's contraction may differ.
-    CHECK(worst <= 1e-5f);
+    CHECK(worst <= 1e-3f);
     CHECK(results[0].filteredTiles > 0u);
     CHECK(results[0].filteredTiles < 3u * 7u * 5u);
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();

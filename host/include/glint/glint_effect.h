@@ -31,12 +31,12 @@ struct FrameInfo {
                                                  0, 0, 1, 0, 0, 0, 0, 1}; // last frame's projection * view
     DepthConvention depth = DepthConvention::Standard;
     float nearPlane = 0.1f;
-    float farPlane = 1000.0f; // 0 = infinite (reversed depth only)
-    bool vulkanNdc = true;    // y_n = 2v - 1 (true) or 1 - 2v (D3D-style)
+    float farPlane = 1000.0f;     // 0 = infinite (reversed depth only)
+    bool vulkanNdc = true;        // y_n = 2v - 1 (true) or 1 - 2v (D3D-style)
     float normalUnpackMul = 1.0f; // n = normalize(raw.xyz * mul + add)
     float normalUnpackAdd = 0.0f;
-    std::uint32_t materialChannel = 0; // channel of the material image holding roughness
-    bool roughnessIsPerceptual = true; // true: r (squared once); false: GGX alpha
+    std::uint32_t materialChannel = 0;              // channel of the material image holding roughness
+    bool roughnessIsPerceptual = true;              // true: r (squared once); false: GGX alpha
     float motionScaleX = 1.0f, motionScaleY = 1.0f; // uv_prev = uv + scale * mv
     // The environment behind the reflections' misses: solid angle of a level-0 texel and the
     // last mip level.

@@ -90,11 +90,11 @@ struct Pass {
 // How a tool turns a resource into a picture. Wire formats are the ones of
 // glint/common/glint_wire_formats.h.
 enum class OutputDecoder : std::uint8_t {
-    Channels,      // an image's channels [firstChannel, firstChannel + channels) at `level`
-    MipChain,      // every level from `level` on, channel firstChannel: outputs "<name><level>"
-    RayList,       // a ray-list buffer: 1 at each listed pixel; the entry count is counter `count`
-    TileList,      // a tile-list buffer: 1 over each listed 8x8 tile; the count is counter `count`
-    ShadowMask,    // the shadow denoiser's packed visibility (one word per 8x4 pixels)
+    Channels,        // an image's channels [firstChannel, firstChannel + channels) at `level`
+    MipChain,        // every level from `level` on, channel firstChannel: outputs "<name><level>"
+    RayList,         // a ray-list buffer: 1 at each listed pixel; the entry count is counter `count`
+    TileList,        // a tile-list buffer: 1 over each listed 8x8 tile; the count is counter `count`
+    ShadowMask,      // the shadow denoiser's packed visibility (one word per 8x4 pixels)
     ShadowTileClass, // the shadow tile metadata: its CLEAR and LIGHT bits over each 8x8 tile
 };
 
@@ -120,10 +120,10 @@ struct CounterDesc {
 
 struct EffectPlan {
     std::string effect;
-    Extent2D size;      // the frame size the plan was made for (outputs are decoded at it)
+    Extent2D size; // the frame size the plan was made for (outputs are decoded at it)
     std::vector<Pass> passes;
-    std::vector<ImageDesc> images;   // images the effect defines (not the application's inputs)
-    std::vector<BufferDesc> buffers; // buffers the effect defines
+    std::vector<ImageDesc> images;     // images the effect defines (not the application's inputs)
+    std::vector<BufferDesc> buffers;   // buffers the effect defines
     std::vector<OutputDesc> outputs;   // filled by the effect descriptors (glint_effect.h)
     std::vector<CounterDesc> counters; // likewise
 };

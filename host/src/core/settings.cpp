@@ -34,19 +34,26 @@ bool parseNumber(std::string_view text, double& value) {
 
 const char* typeName(SettingType type) {
     switch (type) {
-    case SettingType::Bool: return "bool";
-    case SettingType::Uint: return "uint";
-    case SettingType::Float: return "float";
-    case SettingType::Choice: return "choice";
+    case SettingType::Bool:
+        return "bool";
+    case SettingType::Uint:
+        return "uint";
+    case SettingType::Float:
+        return "float";
+    case SettingType::Choice:
+        return "choice";
     }
     return "?";
 }
 
 std::string rangeOf(const SettingDesc& setting) {
     switch (setting.type) {
-    case SettingType::Bool: return "true, false";
-    case SettingType::Choice: return alternatives(setting.choices);
-    default: return number(setting.minimum) + ".." + number(setting.maximum);
+    case SettingType::Bool:
+        return "true, false";
+    case SettingType::Choice:
+        return alternatives(setting.choices);
+    default:
+        return number(setting.minimum) + ".." + number(setting.maximum);
     }
 }
 
@@ -56,9 +63,12 @@ std::string parseValue(const SettingDesc& setting, std::string_view text, double
     const std::string got = ", got '" + std::string(text) + "'";
     switch (setting.type) {
     case SettingType::Bool:
-        if (text == "1" || text == "true" || text == "on") value = 1.0;
-        else if (text == "0" || text == "false" || text == "off") value = 0.0;
-        else return prefix + "true or false" + got;
+        if (text == "1" || text == "true" || text == "on")
+            value = 1.0;
+        else if (text == "0" || text == "false" || text == "off")
+            value = 0.0;
+        else
+            return prefix + "true or false" + got;
         return {};
     case SettingType::Choice:
         for (std::size_t i = 0; i < setting.choices.size(); ++i)
@@ -137,12 +147,14 @@ std::uint32_t SettingValues::choice(std::string_view name) const {
 
 std::string formatSettingValue(const SettingDesc& setting, double value) {
     switch (setting.type) {
-    case SettingType::Bool: return value != 0.0 ? "true" : "false";
+    case SettingType::Bool:
+        return value != 0.0 ? "true" : "false";
     case SettingType::Choice: {
         const auto index = static_cast<std::size_t>(value);
         return index < setting.choices.size() ? setting.choices[index] : "?";
     }
-    default: return number(value);
+    default:
+        return number(value);
     }
 }
 
@@ -162,7 +174,8 @@ std::string describeSettings(const std::vector<const SettingDesc*>& table) {
 }
 
 std::string settingsMarkdown(const std::vector<const SettingDesc*>& table) {
-    std::string text = "| setting | type | default | range | what it does | goes to |\n|---|---|---|---|---|---|\n";
+    std::string text =
+        "| setting | type | default | range | what it does | goes to |\n|---|---|---|---|---|---|\n";
     for (const SettingDesc* setting : table)
         text += "| `" + setting->name + "` | " + typeName(setting->type) + " | " +
                 formatSettingValue(*setting, setting->defaultValue) + " | " + rangeOf(*setting) + " | " +

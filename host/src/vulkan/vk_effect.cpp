@@ -51,8 +51,8 @@ void recordInitialization(EffectInstance& effect, VkCommandBuffer cmd) {
         toGeneral.push_back(barrier);
     }
     if (!toGeneral.empty())
-        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr,
-                             0, nullptr, static_cast<uint32_t>(toGeneral.size()), toGeneral.data());
+        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0,
+                             nullptr, 0, nullptr, static_cast<uint32_t>(toGeneral.size()), toGeneral.data());
     const VkClearColorValue zero{};
     for (auto& [name, image] : effect.images) {
         const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, image.mipLevels, 0, 1};
@@ -62,8 +62,8 @@ void recordInitialization(EffectInstance& effect, VkCommandBuffer cmd) {
     VkMemoryBarrier cleared{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
     cleared.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
     cleared.dstAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1, &cleared, 0,
-                         nullptr, 0, nullptr);
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1, &cleared,
+                         0, nullptr, 0, nullptr);
     VkDeviceSize offset = 0;
     for (const ImageDesc& desc : effect.imageDescs) {
         if (!desc.initialTexels) continue;
@@ -78,15 +78,17 @@ void recordInitialization(EffectInstance& effect, VkCommandBuffer cmd) {
     // The executor's first barrier per resource waits for "all commands" writes.
     VkMemoryBarrier done{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
     done.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-    done.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_INDIRECT_COMMAND_READ_BIT;
+    done.dstAccessMask =
+        VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_INDIRECT_COMMAND_READ_BIT;
     vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT, 0, 1, &done, 0,
-                         nullptr, 0, nullptr);
+                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT, 0, 1,
+                         &done, 0, nullptr, 0, nullptr);
 }
 
 } // namespace
 
-Result createEffect(const Device& device, const EffectPlan& plan, EffectInstance& effect, std::string* error) {
+Result createEffect(const Device& device, const EffectPlan& plan, EffectInstance& effect,
+                    std::string* error) {
     effect = EffectInstance{};
     effect.device = &device;
     effect.effect = plan.effect;
@@ -100,7 +102,8 @@ Result createEffect(const Device& device, const EffectPlan& plan, EffectInstance
                 destroyEffect(effect);
                 return fail(error, plan.effect, "image '" + image.name + "' is declared twice");
             }
-            effect.images[image.name] = createImage2D(device, image.width, image.height, format, image.mipLevels);
+            effect.images[image.name] =
+                createImage2D(device, image.width, image.height, format, image.mipLevels);
             if (!image.initialTexels) continue;
             const VkDeviceSize bytes = image.initialTexels->size() * sizeof(float);
             if (bytes != VkDeviceSize{image.width} * image.height * formatTexelSize(format)) {
@@ -115,12 +118,14 @@ Result createEffect(const Device& device, const EffectPlan& plan, EffectInstance
             effect.buffers[buffer.name] = createBuffer(device, buffer.size, usage, MemoryUse::DeviceLocal);
         }
         if (stagedBytes > 0) {
-            effect.staging = createBuffer(device, stagedBytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Upload);
+            effect.staging =
+                createBuffer(device, stagedBytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Upload);
             VkDeviceSize offset = 0;
             for (const ImageDesc& image : plan.images) {
                 if (!image.initialTexels) continue;
                 const std::size_t bytes = image.initialTexels->size() * sizeof(float);
-                std::memcpy(static_cast<char*>(effect.staging.mapped) + offset, image.initialTexels->data(), bytes);
+                std::memcpy(static_cast<char*>(effect.staging.mapped) + offset, image.initialTexels->data(),
+                            bytes);
                 offset += bytes;
             }
             flushBuffer(device, effect.staging);

@@ -10,10 +10,12 @@ namespace {
 
 std::vector<SettingDesc> pyramidSettings() {
     return {core::boolSetting("pyramid.closestAndFarthest", false,
-                              "RG32F pyramid: closest depth in R, farthest in G", "DepthPyramidDesc::channels")};
+                              "RG32F pyramid: closest depth in R, farthest in G",
+                              "DepthPyramidDesc::channels")};
 }
 
-Result planPyramid(const FrameInfo& frame, const SettingValues& settings, EffectPlan& plan, std::string* error) {
+Result planPyramid(const FrameInfo& frame, const SettingValues& settings, EffectPlan& plan,
+                   std::string* error) {
     DepthPyramidDesc desc;
     desc.size = frame.size;
     desc.depth = frame.depth;

@@ -43,9 +43,10 @@ std::vector<SettingDesc> reflectionsSettings() {
                      "non-mirror rays stop once at most this fraction of their group is live (0 = off)",
                      "SssrDesc::occupancyExitFraction"),
         floatSetting("importanceSampleBias", s.importanceSampleBias, 0, 1,
-                     "shrinks the sampled lobe: sharper, biased reflections", "SssrDesc::importanceSampleBias"),
-        floatSetting("thickness", s.thickness, 0, 1e6, "assumed surface thickness, relative to its view depth",
-                     "SssrDesc::thickness"),
+                     "shrinks the sampled lobe: sharper, biased reflections",
+                     "SssrDesc::importanceSampleBias"),
+        floatSetting("thickness", s.thickness, 0, 1e6,
+                     "assumed surface thickness, relative to its view depth", "SssrDesc::thickness"),
         boolSetting("thicknessAware", s.thicknessAware,
                     "rays pass behind thin objects (closest+farthest pyramid)", "SssrDesc::thicknessAware"),
         boolSetting("halfResolution", s.halfResolution, "one ray per 2x2 quad for every pixel",
@@ -76,7 +77,8 @@ std::vector<SettingDesc> reflectionsSettings() {
                      "ratio path: reconstruction disk radius in pixels",
                      "ReflectionsDenoiserDesc::reconstructionRadius"),
         floatSetting("denoiser.cleanupSigma", d.cleanupSigma, 1e-6, 2,
-                     "ratio path: spatial sigma of the cleanup in pixels", "ReflectionsDenoiserDesc::cleanupSigma"),
+                     "ratio path: spatial sigma of the cleanup in pixels",
+                     "ReflectionsDenoiserDesc::cleanupSigma"),
     };
 }
 
@@ -176,11 +178,12 @@ void addOutputs(EffectPlan& plan, const SssrDesc& sssr, const ReflectionsDenoise
         output.intermediate = true;
         out.push_back(std::move(output));
     };
-    intermediate({"hit_distance", "sssr_radiance", denoiser ? denoisedBy : "intersect", OutputDecoder::Channels,
-                  3, 1});
+    intermediate({"hit_distance", "sssr_radiance", denoiser ? denoisedBy : "intersect",
+                  OutputDecoder::Channels, 3, 1});
     intermediate({"roughness", "sssr_roughness", "classify", OutputDecoder::Channels, 0, 1});
     intermediate({"ray_list", "sssr_ray_list", "classify", OutputDecoder::RayList, 0, 1, 0, "traced_pixels"});
-    intermediate({"tile_list", "sssr_tile_list", "classify", OutputDecoder::TileList, 0, 1, 0, "listed_tiles"});
+    intermediate(
+        {"tile_list", "sssr_tile_list", "classify", OutputDecoder::TileList, 0, 1, 0, "listed_tiles"});
     if (sssr.debugOutput) {
         intermediate({"ray_class", "sssr_ray_info", "intersect", OutputDecoder::Channels, 2, 1});
         intermediate({"iterations", "sssr_ray_info", "intersect", OutputDecoder::Channels, 3, 1});
@@ -193,7 +196,8 @@ void addOutputs(EffectPlan& plan, const SssrDesc& sssr, const ReflectionsDenoise
     plan.counters.push_back({"listed_tiles", "sssr_counters", 3, ""});
 }
 
-Result planFrame(const FrameInfo& frame, const SettingValues& settings, EffectPlan& plan, std::string* error) {
+Result planFrame(const FrameInfo& frame, const SettingValues& settings, EffectPlan& plan,
+                 std::string* error) {
     SssrDesc sssr = sssrDesc(frame, settings);
     const ReflectionsDenoiserDesc denoiser = denoiserDesc(frame, settings, sssr);
     sssr.storeRays = sssr.denoise && denoiser.spatialPath == SpatialPath::RatioEstimator;
@@ -231,7 +235,8 @@ Result planReflections(const SssrDesc& sssr, const ReflectionsDenoiserDesc* deno
     resourcesOnly.size = sssr.size;
     resourcesOnly.halfPrecisionStorage = sssr.halfPrecisionStorage;
     EffectPlan denoiserPlan;
-    if (const Result result = planReflectionsDenoiser(denoiser ? *denoiser : resourcesOnly, denoiserPlan, error);
+    if (const Result result =
+            planReflectionsDenoiser(denoiser ? *denoiser : resourcesOnly, denoiserPlan, error);
         result != Result::Ok)
         return result;
     const auto composite = std::find_if(plan.passes.begin(), plan.passes.end(),

@@ -15,9 +15,11 @@ using core::floatSetting;
 std::vector<SettingDesc> shadowSettings() {
     const ShadowDenoiserDesc s;
     return {
-        boolSetting("shadows.filter", s.filter, "runs the a-trous filter passes", "ShadowDenoiserDesc::filter"),
+        boolSetting("shadows.filter", s.filter, "runs the a-trous filter passes",
+                    "ShadowDenoiserDesc::filter"),
         boolSetting("shadows.classify", s.classify,
-                    "temporal tile classification (a capture replay needs it)", "ShadowDenoiserDesc::classify"),
+                    "temporal tile classification (a capture replay needs it)",
+                    "ShadowDenoiserDesc::classify"),
         boolSetting("shadows.skipClearedTiles", s.skipClearedTiles,
                     "the filter skips tiles classification cleared", "ShadowDenoiserDesc::skipClearedTiles"),
         boolSetting("shadows.pairedFilter", s.pairedFilter, "filter iterations 1 and 2 in one dispatch",
@@ -53,7 +55,8 @@ Result invalid(std::string* error, const std::string& message) {
     return Result::InvalidArgument;
 }
 
-Result planShadows(const FrameInfo& frame, const SettingValues& settings, EffectPlan& plan, std::string* error) {
+Result planShadows(const FrameInfo& frame, const SettingValues& settings, EffectPlan& plan,
+                   std::string* error) {
     ShadowDenoiserDesc desc;
     desc.size = frame.size;
     desc.depth = frame.depth == DepthConvention::Standard ? ShadowDenoiserDepth::Standard
