@@ -82,8 +82,9 @@ std::vector<SettingDesc> reflectionsSettings() {
     };
 }
 
-SssrDesc sssrDesc(const FrameInfo& frame, const SettingValues& settings) {
-    SssrDesc desc;
+// The camera and G-buffer decoding both descs take from the frame (same field names in each).
+template <typename Desc> Desc cameraDesc(const FrameInfo& frame) {
+    Desc desc;
     desc.size = frame.size;
     desc.projection = frame.projection;
     desc.viewFromWorld = frame.viewFromWorld;
@@ -93,13 +94,18 @@ SssrDesc sssrDesc(const FrameInfo& frame, const SettingValues& settings) {
     desc.vulkanNdc = frame.vulkanNdc;
     desc.normalUnpackMul = frame.normalUnpackMul;
     desc.normalUnpackAdd = frame.normalUnpackAdd;
-    desc.materialChannel = frame.materialChannel;
-    desc.roughnessIsPerceptual = frame.roughnessIsPerceptual;
     desc.motionScaleX = frame.motionScaleX;
     desc.motionScaleY = frame.motionScaleY;
+    desc.frameIndex = frame.frameIndex;
+    return desc;
+}
+
+SssrDesc sssrDesc(const FrameInfo& frame, const SettingValues& settings) {
+    SssrDesc desc = cameraDesc<SssrDesc>(frame);
+    desc.materialChannel = frame.materialChannel;
+    desc.roughnessIsPerceptual = frame.roughnessIsPerceptual;
     desc.environmentTexelSolidAngle = frame.environmentTexelSolidAngle;
     desc.environmentMaxLod = frame.environmentMaxLod;
-    desc.frameIndex = frame.frameIndex;
 
     desc.roughnessThreshold = settings.real("roughnessThreshold");
     desc.mirrorThreshold = settings.real("mirrorThreshold");
@@ -123,21 +129,9 @@ SssrDesc sssrDesc(const FrameInfo& frame, const SettingValues& settings) {
 
 ReflectionsDenoiserDesc denoiserDesc(const FrameInfo& frame, const SettingValues& settings,
                                      const SssrDesc& sssr) {
-    ReflectionsDenoiserDesc desc;
-    desc.size = frame.size;
-    desc.projection = frame.projection;
-    desc.viewFromWorld = frame.viewFromWorld;
+    ReflectionsDenoiserDesc desc = cameraDesc<ReflectionsDenoiserDesc>(frame);
     desc.previousClipFromWorld = frame.previousClipFromWorld;
-    desc.depth = frame.depth;
-    desc.nearPlane = frame.nearPlane;
-    desc.farPlane = frame.farPlane;
-    desc.vulkanNdc = frame.vulkanNdc;
-    desc.normalUnpackMul = frame.normalUnpackMul;
-    desc.normalUnpackAdd = frame.normalUnpackAdd;
-    desc.motionScaleX = frame.motionScaleX;
-    desc.motionScaleY = frame.motionScaleY;
     desc.resetHistory = frame.resetHistory;
-    desc.frameIndex = frame.frameIndex;
     // Shared with SSSR: the classification decides which pixels the denoiser sees.
     desc.roughnessThreshold = sssr.roughnessThreshold;
     desc.mirrorThreshold = sssr.mirrorThreshold;
