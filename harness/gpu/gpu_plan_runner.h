@@ -1,6 +1,8 @@
-// Runs an EffectPlan on the harness context: creates the resources the plan describes,
-// executes it with a GPU timestamp around every dispatch, and hands back per-pass times.
-// Shared by tests, `glint bench` and (later) `glint run`.
+// Runs a harness-internal plan (the simulator's ray caster, a test's probe shaders) on the
+// harness context: creates the resources the plan describes (images filled with NaN by default,
+// so a texel no pass writes cannot pass for a result), executes it with a GPU timestamp around
+// every dispatch, and hands back per-pass times. glint's effects do not come this way: they go
+// through gpu::EffectRunner (gpu_effect_runner.h) and glint::vk::createEffect.
 #pragma once
 
 #include <gpu/gpu_context.h>
