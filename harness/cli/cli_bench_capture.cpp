@@ -102,7 +102,7 @@ Measurement measureFrames(const gpu::Context& context, const std::vector<capture
     std::vector<double> totals;
     // Every frame once (uploads, histories), then the warm-up and the measured runs repeat the
     // last frame back to back: uploads between timed frames would let the GPU clock down and
-    // charge the passes for it (about 4x at 1080p on an H100).
+    // charge the passes for it (docs/performance.md).
     for (const capture::Frame& frame : frames) session.run(frame);
     const std::uint32_t all = measurement.warmup + runs;
     for (std::uint32_t run = 0; run < all; ++run) {
