@@ -84,7 +84,8 @@ int runBenchSssr(const BenchOptions& options, const gpu::Context& context) {
                                      replay::environmentTexels(environment));
         } else {
             std::uint32_t channels = 0;
-            inputs.upload(input.kind, replay::inputTexels(frame, input.kind, channels), channels);
+            const std::vector<float> texels = replay::inputTexels(frame, input.kind, channels);
+            inputs.upload(input.kind, texels, channels);
         }
         table.images[input.resource] = inputs.find(input.kind);
     }

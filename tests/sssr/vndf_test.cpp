@@ -7,9 +7,9 @@
 //   - the reference densities integrate to one;
 //   - finite results in the hard cases, the bent normal and the tangent frame.
 #include "glint/glint_pass.h"
+#include "glint/vulkan/vk_executor.h"
 #include "scene/scene_shaders.h"
 #include "support/gpu_test_context.h"
-#include "glint/vulkan/vk_executor.h"
 
 #include <gpu/gpu_plan_runner.h>
 #include <gpu/gpu_transfer.h>
