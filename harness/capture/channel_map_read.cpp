@@ -60,7 +60,8 @@ std::map<std::string, Plane> readPlanes(const std::string& framePath, const Chan
     std::filesystem::path first;
     for (const auto& [file, wanted] : byFile) {
         ExrSize fileSize;
-        const Imf::Header header = readExrHeader(file, fileSize);
+        ExrLayout layout;
+        const Imf::Header header = readExrHeader(file, fileSize, &layout);
         if (first.empty()) {
             first = file;
             size = fileSize;
@@ -78,6 +79,7 @@ std::map<std::string, Plane> readPlanes(const std::string& framePath, const Chan
             if (c->xSampling != 1 || c->ySampling != 1) fail(file, "channel '" + channel + "' is subsampled");
             planes[r->ref].half = c->type == Imf::HALF;
         }
+        checkPixelData(file, header, layout); // before the planes are allocated
         const std::size_t pixels = std::size_t{size.width} * size.height;
         translateErrors(file, "cannot read pixel data", [&] {
             Imf::InputFile input(file.c_str());

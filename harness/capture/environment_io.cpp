@@ -45,7 +45,8 @@ std::optional<std::string> checkEnvironment(const Environment& env) {
 
 Environment readEnvironment(const std::filesystem::path& file) {
     ExrSize size;
-    const Imf::Header exr = readExrHeader(file, size);
+    ExrLayout exrLayout;
+    const Imf::Header exr = readExrHeader(file, size, &exrLayout);
     if (const auto* version = exr.findTypedAttribute<Imf::IntAttribute>("glint.formatVersion");
         version && version->value() != static_cast<int>(kFormatVersion))
         fail(file, "unsupported format version " + std::to_string(version->value()));
@@ -64,6 +65,7 @@ Environment readEnvironment(const std::filesystem::path& file) {
         if (ch->xSampling != 1 || ch->ySampling != 1)
             fail(file, std::string("channel '") + name + "' is subsampled");
     }
+    checkPixelData(file, exr, exrLayout); // before the allocation the header asks for
     env.width = size.width;
     env.height = size.height;
     env.rgb.resize(std::size_t{size.width} * size.height * 3);

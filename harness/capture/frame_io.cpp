@@ -55,8 +55,11 @@ FrameHeader readFrameHeader(const std::filesystem::path& file) {
 
 Frame readFrame(const std::filesystem::path& file) {
     ExrSize size;
-    const Imf::Header exr = readExrHeader(file, size);
+    ExrLayout layout;
+    const Imf::Header exr = readExrHeader(file, size, &layout);
     const FrameHeader header = parseHeader(file, exr, size);
+    // Before the layers are allocated: a header may declare far more than the file holds.
+    checkPixelData(file, exr, layout);
 
     Frame frame = frameFromHeader(header);
     const std::size_t pixels = std::size_t{size.width} * size.height;

@@ -7,6 +7,7 @@
 
 #include <capture/frame_io.h>
 #include <capture/sample_frame.h>
+#include <replay/replay_session.h>
 
 #include <catch2/catch.hpp>
 
@@ -53,5 +54,38 @@ TEST_CASE("roughness from a capture file's material layer matches the CPU refere
     CHECK(*std::max_element(expected.begin(), expected.end()) >
           *std::min_element(expected.begin(), expected.end()));
     if (test::testContext().device.timestamps) CHECK(run.dispatchMs >= 0.0);
+    GLINT_REQUIRE_NO_VALIDATION_ERRORS();
+}
+
+TEST_CASE("the roughness effect replayed through its descriptor matches the CPU reference", "[gbuffer][e2e]") {
+    const std::filesystem::path dir = std::filesystem::path(GLINT_TEST_OUTPUT_DIR) / "roughness_effect";
+    std::filesystem::create_directories(dir);
+    const std::filesystem::path file = dir / "frame.exr";
+    capture::writeFrame(file, capture::makeSampleFrame(29, 17, 1));
+    const capture::Frame frame = capture::readFrame(file);
+    const capture::Layer* material = capture::findLayer(frame, frame.roughness.layer);
+    REQUIRE(material != nullptr);
+    const int channel = capture::channelIndex(material->channels, frame.roughness.channel);
+    REQUIRE(channel >= 0);
+
+    replay::SessionOptions options;
+    options.effects = {"roughness"};
+    const capture::Environment environment;
+    replay::Session session(test::testContext(), frame, environment, options);
+    const replay::FrameResult result = session.run(frame);
+    const replay::NamedImage* alpha = result.find("roughness/alpha");
+    REQUIRE(alpha != nullptr);
+    CHECK(alpha->pass == "roughness/extract_roughness");
+    REQUIRE(alpha->image.channels == 1);
+
+    const std::vector<float> expected =
+        reference::extractRoughness(material->pixels, material->channels.size(),
+                                    static_cast<std::size_t>(channel), frame.roughness.perceptual);
+    REQUIRE(alpha->image.pixels.size() == expected.size());
+    for (std::size_t i = 0; i < expected.size(); ++i) {
+        INFO("pixel " << i);
+        if (expected[i] < FLT_MIN && alpha->image.pixels[i] == 0.0f) continue; // denormals may flush
+        REQUIRE(alpha->image.pixels[i] == expected[i]);
+    }
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }

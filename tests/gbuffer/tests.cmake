@@ -9,4 +9,4 @@ glint_add_test_suite(NAME gbuffer_e2e LABELS e2e
   SOURCES
     gbuffer/capture_to_roughness_test.cpp
     gbuffer/roughness_runner.cpp
-  LIBS glint_gpu_test_support glint_gpu glint_capture)
+  LIBS glint_gpu_test_support glint_gpu glint_capture glint_replay)
