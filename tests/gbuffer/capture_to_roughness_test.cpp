@@ -57,7 +57,8 @@ TEST_CASE("roughness from a capture file's material layer matches the CPU refere
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }
 
-TEST_CASE("the roughness effect replayed through its descriptor matches the CPU reference", "[gbuffer][e2e]") {
+TEST_CASE("the roughness effect replayed through its descriptor matches the CPU reference",
+          "[gbuffer][e2e]") {
     const std::filesystem::path dir = std::filesystem::path(GLINT_TEST_OUTPUT_DIR) / "roughness_effect";
     std::filesystem::create_directories(dir);
     const std::filesystem::path file = dir / "frame.exr";
