@@ -121,9 +121,10 @@ function(glint_check_hlsl_header header)
   file(GENERATE OUTPUT "${check_src}" CONTENT "${body}")
   set(output "${PROJECT_BINARY_DIR}/hlsl_check/${stem}.spv")
   _glint_hlsl_command(cmd "${check_src}" "${output}" "${output}.d" "GLINT_HEADER_CHECK=1")
+  string(REPLACE ";" "|" strict "${cmd}")
   add_custom_command(
     OUTPUT "${output}"
-    COMMAND ${cmd}
+    COMMAND "${CMAKE_COMMAND}" "-DCOMMAND=${strict}" -P "${PROJECT_SOURCE_DIR}/cmake/GlintStrictCompile.cmake"
     COMMAND "${GLINT_SPIRV_VAL}" --target-env ${GLINT_SPIRV_TARGET_ENV} "${output}"
     DEPENDS "${header}" ${ARG_STUBS} ${GLINT_HLSL_HEADERS}
     COMMENT "HLSL header check ${stem}"

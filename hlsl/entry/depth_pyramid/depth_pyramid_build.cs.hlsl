@@ -7,16 +7,16 @@
 #include "glint/depth_pyramid/glint_depth_pyramid_constants.h"
 #include "glint/depth_pyramid/glint_depth_pyramid.hlsli"
 
-[[vk::binding(0, 0)]] ConstantBuffer<GLINT_DepthPyramidConstants> g_glint_constants;
-[[vk::binding(1, 0)]] Texture2D<float> g_glint_depth;
+GLINT_BINDING(0, 0) ConstantBuffer<GLINT_DepthPyramidConstants> g_glint_constants;
+GLINT_BINDING(1, 0) Texture2D<float> g_glint_depth;
 #if GLINT_DEPTH_PYRAMID_FARTHEST
-[[vk::binding(2, 0)]] GLINT_IMAGE_FORMAT(rg32f) globallycoherent RWTexture2D<float2> g_glint_pyramid[GLINT_DEPTH_PYRAMID_MAX_LEVELS];
+GLINT_BINDING(2, 0) GLINT_IMAGE_FORMAT(rg32f) globallycoherent RWTexture2D<float2> g_glint_pyramid[GLINT_DEPTH_PYRAMID_MAX_LEVELS];
 #else
-[[vk::binding(2, 0)]] GLINT_IMAGE_FORMAT(r32f) globallycoherent RWTexture2D<float> g_glint_pyramid[GLINT_DEPTH_PYRAMID_MAX_LEVELS];
+GLINT_BINDING(2, 0) GLINT_IMAGE_FORMAT(r32f) globallycoherent RWTexture2D<float> g_glint_pyramid[GLINT_DEPTH_PYRAMID_MAX_LEVELS];
 #endif
-[[vk::binding(3, 0)]] globallycoherent RWStructuredBuffer<uint> g_glint_counter;
+GLINT_BINDING(3, 0) globallycoherent RWStructuredBuffer<uint> g_glint_counter;
 // Gather ignores filtering; a nearest sampler keeps formats without linear filtering legal.
-[[vk::binding(4, 0)]] SamplerState g_glint_point_clamp;
+GLINT_BINDING(4, 0) SamplerState g_glint_point_clamp;
 
 float4 GLINT_DEPTH_PYRAMID_GatherDepth(int2 pixel)
 {

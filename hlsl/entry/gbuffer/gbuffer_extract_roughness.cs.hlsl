@@ -6,12 +6,12 @@
 #include "glint/gbuffer/glint_gbuffer_constants.h"
 #include "glint/gbuffer/glint_gbuffer_roughness.hlsli"
 
-[[vk::binding(0, 0)]] ConstantBuffer<GLINT_GBufferRoughnessConstants> g_glint_constants;
-[[vk::binding(1, 0)]] Texture2D<float4> g_glint_material;
+GLINT_BINDING(0, 0) ConstantBuffer<GLINT_GBufferRoughnessConstants> g_glint_constants;
+GLINT_BINDING(1, 0) Texture2D<float4> g_glint_material;
 #if GLINT_GBUFFER_HALF_OUTPUT
-[[vk::binding(2, 0)]] GLINT_IMAGE_FORMAT(r16f) RWTexture2D<float> g_glint_alpha;
+GLINT_BINDING(2, 0) GLINT_IMAGE_FORMAT(r16f) RWTexture2D<float> g_glint_alpha;
 #else
-[[vk::binding(2, 0)]] GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float> g_glint_alpha;
+GLINT_BINDING(2, 0) GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float> g_glint_alpha;
 #endif
 
 float4 GLINT_GBUFFER_LoadMaterial(int2 pixel)

@@ -2,8 +2,8 @@
 #ifndef RD_ENTRY_AVERAGE_HLSLI
 #define RD_ENTRY_AVERAGE_HLSLI
 
-[[vk::binding(5, 0)]] Texture2D<float4> g_glint_average;
-[[vk::binding(6, 0)]] StructuredBuffer<uint> g_glint_tile_mask;
+GLINT_BINDING(5, 0) Texture2D<float4> g_glint_average;
+GLINT_BINDING(6, 0) StructuredBuffer<uint> g_glint_tile_mask;
 
 float4 GLINT_RD_LoadAverage(uint2 tile) { return g_glint_average.Load(int3(tile, 0)); }
 bool GLINT_RD_TileListed(uint2 tile)

@@ -3,12 +3,12 @@
 #include "entry/reflections_denoiser/rd_ratio_common.hlsli"
 #include "glint/reflections_denoiser/glint_reflections_denoiser_cleanup.hlsli"
 
-[[vk::binding(5, 0)]] Texture2D<float4> g_glint_resolved;
-[[vk::binding(6, 0)]] Texture2D<float> g_glint_variance;
+GLINT_BINDING(5, 0) Texture2D<float4> g_glint_resolved;
+GLINT_BINDING(6, 0) Texture2D<float> g_glint_variance;
 #if GLINT_RD_HALF_STORAGE
-[[vk::binding(7, 0)]] GLINT_IMAGE_FORMAT(rgba16f) RWTexture2D<float4> g_glint_output;
+GLINT_BINDING(7, 0) GLINT_IMAGE_FORMAT(rgba16f) RWTexture2D<float4> g_glint_output;
 #else
-[[vk::binding(7, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_output;
+GLINT_BINDING(7, 0) GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_output;
 #endif
 
 float3 GLINT_RD_LoadResolved(int2 pixel) { return g_glint_resolved.Load(int3(pixel, 0)).rgb; }

@@ -6,11 +6,11 @@
 
 // The clamped sample carries the temporal variance in alpha (reproject writes both), so the
 // prefilter needs no variance image.
-[[vk::binding(7, 0)]] Texture2D<float4> g_glint_clamped;
+GLINT_BINDING(7, 0) Texture2D<float4> g_glint_clamped;
 #if GLINT_RD_HALF_STORAGE
-[[vk::binding(8, 0)]] GLINT_IMAGE_FORMAT(rgba16f) RWTexture2D<float4> g_glint_prefiltered;
+GLINT_BINDING(8, 0) GLINT_IMAGE_FORMAT(rgba16f) RWTexture2D<float4> g_glint_prefiltered;
 #else
-[[vk::binding(8, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_prefiltered;
+GLINT_BINDING(8, 0) GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_prefiltered;
 #endif
 
 float4 GLINT_RD_LoadClamped(int2 pixel) { return g_glint_clamped.Load(int3(pixel, 0)); }

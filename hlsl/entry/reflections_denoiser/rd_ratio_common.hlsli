@@ -11,11 +11,11 @@
 #include "glint/reflections_denoiser/glint_reflections_denoiser_ratio_constants.h"
 
 // A cbuffer holding the struct (not ConstantBuffer<T>) so that glslang can pass it by value.
-[[vk::binding(0, 0)]] cbuffer g_glint_constants { GLINT_ReflectionsDenoiserRatioConstants g_glint_rd_ratio; };
-[[vk::binding(1, 0)]] StructuredBuffer<uint> g_glint_tile_list;
-[[vk::binding(2, 0)]] Texture2D<float> g_glint_depth;
-[[vk::binding(3, 0)]] Texture2D<float4> g_glint_normals;
-[[vk::binding(4, 0)]] Texture2D<float> g_glint_roughness;
+GLINT_BINDING(0, 0) cbuffer g_glint_constants { GLINT_ReflectionsDenoiserRatioConstants g_glint_rd_ratio; };
+GLINT_BINDING(1, 0) StructuredBuffer<uint> g_glint_tile_list;
+GLINT_BINDING(2, 0) Texture2D<float> g_glint_depth;
+GLINT_BINDING(3, 0) Texture2D<float4> g_glint_normals;
+GLINT_BINDING(4, 0) Texture2D<float> g_glint_roughness;
 
 uint GLINT_RD_LoadTile(uint index) { return g_glint_tile_list[index]; }
 float GLINT_RD_LoadDepth(int2 pixel) { return g_glint_depth.Load(int3(pixel, 0)); }

@@ -3,13 +3,13 @@
 #include "entry/reflections_denoiser/rd_ratio_common.hlsli"
 #include "glint/reflections_denoiser/glint_reflections_denoiser_reconstruct.hlsli"
 
-[[vk::binding(5, 0)]] Texture2D<float4> g_glint_clamped;
-[[vk::binding(6, 0)]] Texture2D<float4> g_glint_rays;
-[[vk::binding(7, 0)]] Texture2D<float> g_glint_variance;
+GLINT_BINDING(5, 0) Texture2D<float4> g_glint_clamped;
+GLINT_BINDING(6, 0) Texture2D<float4> g_glint_rays;
+GLINT_BINDING(7, 0) Texture2D<float> g_glint_variance;
 #if GLINT_RD_HALF_STORAGE
-[[vk::binding(8, 0)]] GLINT_IMAGE_FORMAT(rgba16f) RWTexture2D<float4> g_glint_reconstructed;
+GLINT_BINDING(8, 0) GLINT_IMAGE_FORMAT(rgba16f) RWTexture2D<float4> g_glint_reconstructed;
 #else
-[[vk::binding(8, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_reconstructed;
+GLINT_BINDING(8, 0) GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_reconstructed;
 #endif
 
 float4 GLINT_RD_LoadClamped(int2 pixel) { return g_glint_clamped.Load(int3(pixel, 0)); }

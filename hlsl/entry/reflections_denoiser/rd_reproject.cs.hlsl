@@ -3,37 +3,37 @@
 #include "entry/reflections_denoiser/rd_common.hlsli"
 #include "glint/reflections_denoiser/glint_reflections_denoiser_reproject.hlsli"
 
-[[vk::binding(5, 0)]] Texture2D<float4> g_glint_noisy;
-[[vk::binding(6, 0)]] Texture2D<float2> g_glint_motion;
-[[vk::binding(7, 0)]] StructuredBuffer<uint> g_glint_history_tile_mask;
-[[vk::binding(8, 0)]] Texture2D<float4> g_glint_history_guides;
-[[vk::binding(9, 0)]] Texture2D<float4> g_glint_history_radiance;
+GLINT_BINDING(5, 0) Texture2D<float4> g_glint_noisy;
+GLINT_BINDING(6, 0) Texture2D<float2> g_glint_motion;
+GLINT_BINDING(7, 0) StructuredBuffer<uint> g_glint_history_tile_mask;
+GLINT_BINDING(8, 0) Texture2D<float4> g_glint_history_guides;
+GLINT_BINDING(9, 0) Texture2D<float4> g_glint_history_radiance;
 // The radiance history carries the final variance in alpha (the resolve writes both), so that
 // a history tap is one fetch fewer.
-[[vk::binding(10, 0)]] Texture2D<float> g_glint_history_length;
+GLINT_BINDING(10, 0) Texture2D<float> g_glint_history_length;
 #if GLINT_RD_HALF_STORAGE
-[[vk::binding(11, 0)]] GLINT_IMAGE_FORMAT(rgba16f) RWTexture2D<float4> g_glint_clamped;
+GLINT_BINDING(11, 0) GLINT_IMAGE_FORMAT(rgba16f) RWTexture2D<float4> g_glint_clamped;
 #else
-[[vk::binding(11, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_clamped;
+GLINT_BINDING(11, 0) GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_clamped;
 #endif
 #if GLINT_RD_HALF_STORAGE
-[[vk::binding(12, 0)]] GLINT_IMAGE_FORMAT(rgba16f) RWTexture2D<float4> g_glint_reprojected;
+GLINT_BINDING(12, 0) GLINT_IMAGE_FORMAT(rgba16f) RWTexture2D<float4> g_glint_reprojected;
 #else
-[[vk::binding(12, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_reprojected;
+GLINT_BINDING(12, 0) GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_reprojected;
 #endif
 #if GLINT_RD_HALF_STORAGE
-[[vk::binding(13, 0)]] GLINT_IMAGE_FORMAT(r16f) RWTexture2D<float> g_glint_variance;
+GLINT_BINDING(13, 0) GLINT_IMAGE_FORMAT(r16f) RWTexture2D<float> g_glint_variance;
 #else
-[[vk::binding(13, 0)]] GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float> g_glint_variance;
+GLINT_BINDING(13, 0) GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float> g_glint_variance;
 #endif
 #if GLINT_RD_HALF_STORAGE
-[[vk::binding(14, 0)]] GLINT_IMAGE_FORMAT(r16f) RWTexture2D<float> g_glint_length;
+GLINT_BINDING(14, 0) GLINT_IMAGE_FORMAT(r16f) RWTexture2D<float> g_glint_length;
 #else
-[[vk::binding(14, 0)]] GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float> g_glint_length;
+GLINT_BINDING(14, 0) GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float> g_glint_length;
 #endif
-[[vk::binding(15, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_guides;
-[[vk::binding(16, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_average;
-[[vk::binding(17, 0)]] RWStructuredBuffer<uint> g_glint_tile_mask;
+GLINT_BINDING(15, 0) GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_guides;
+GLINT_BINDING(16, 0) GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_average;
+GLINT_BINDING(17, 0) RWStructuredBuffer<uint> g_glint_tile_mask;
 
 float4 GLINT_RD_LoadNoisy(int2 pixel) { return g_glint_noisy.Load(int3(pixel, 0)); }
 float2 GLINT_RD_LoadMotion(int2 pixel) { return g_glint_motion.Load(int3(pixel, 0)); }

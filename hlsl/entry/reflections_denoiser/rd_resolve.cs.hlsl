@@ -4,23 +4,23 @@
 #include "entry/reflections_denoiser/rd_average.hlsli"
 #include "glint/reflections_denoiser/glint_reflections_denoiser_resolve.hlsli"
 
-[[vk::binding(7, 0)]] Texture2D<float4> g_glint_prefiltered;
-[[vk::binding(8, 0)]] Texture2D<float4> g_glint_reprojected;
-[[vk::binding(9, 0)]] Texture2D<float> g_glint_length;
+GLINT_BINDING(7, 0) Texture2D<float4> g_glint_prefiltered;
+GLINT_BINDING(8, 0) Texture2D<float4> g_glint_reprojected;
+GLINT_BINDING(9, 0) Texture2D<float> g_glint_length;
 #if GLINT_RD_HALF_STORAGE
-[[vk::binding(10, 0)]] GLINT_IMAGE_FORMAT(rgba16f) RWTexture2D<float4> g_glint_output;
+GLINT_BINDING(10, 0) GLINT_IMAGE_FORMAT(rgba16f) RWTexture2D<float4> g_glint_output;
 #else
-[[vk::binding(10, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_output;
+GLINT_BINDING(10, 0) GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_output;
 #endif
 #if GLINT_RD_HALF_STORAGE
-[[vk::binding(11, 0)]] GLINT_IMAGE_FORMAT(rgba16f) RWTexture2D<float4> g_glint_radiance_history;
+GLINT_BINDING(11, 0) GLINT_IMAGE_FORMAT(rgba16f) RWTexture2D<float4> g_glint_radiance_history;
 #else
-[[vk::binding(11, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_radiance_history;
+GLINT_BINDING(11, 0) GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_radiance_history;
 #endif
 #if GLINT_RD_HALF_STORAGE
-[[vk::binding(12, 0)]] GLINT_IMAGE_FORMAT(r16f) RWTexture2D<float> g_glint_variance;
+GLINT_BINDING(12, 0) GLINT_IMAGE_FORMAT(r16f) RWTexture2D<float> g_glint_variance;
 #else
-[[vk::binding(12, 0)]] GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float> g_glint_variance;
+GLINT_BINDING(12, 0) GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float> g_glint_variance;
 #endif
 
 float4 GLINT_RD_LoadPrefiltered(int2 pixel) { return g_glint_prefiltered.Load(int3(pixel, 0)); }

@@ -6,26 +6,26 @@
 #include "glint/shadow_denoiser/glint_shadow_denoiser_constants.h"
 #include "glint/shadow_denoiser/glint_shadow_denoiser_classify.hlsli"
 
-[[vk::binding(0, 0)]] ConstantBuffer<GLINT_ShadowDenoiserClassifyConstants> g_glint_constants;
-[[vk::binding(1, 0)]] StructuredBuffer<uint> g_glint_shadow_mask;
-[[vk::binding(2, 0)]] Texture2D<float> g_glint_depth;
-[[vk::binding(3, 0)]] Texture2D<float> g_glint_previous_depth;
-[[vk::binding(4, 0)]] Texture2D<float4> g_glint_normals;
-[[vk::binding(5, 0)]] Texture2D<float2> g_glint_motion;
-[[vk::binding(6, 0)]] Texture2D<float4> g_glint_moments_history;
-[[vk::binding(7, 0)]] StructuredBuffer<uint> g_glint_previous_metadata;
-[[vk::binding(8, 0)]] RWStructuredBuffer<uint> g_glint_tile_metadata;
-[[vk::binding(9, 0)]] GLINT_IMAGE_FORMAT(rg32f) RWTexture2D<float2> g_glint_shadow_variance;
-[[vk::binding(10, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_moments;
+GLINT_BINDING(0, 0) ConstantBuffer<GLINT_ShadowDenoiserClassifyConstants> g_glint_constants;
+GLINT_BINDING(1, 0) StructuredBuffer<uint> g_glint_shadow_mask;
+GLINT_BINDING(2, 0) Texture2D<float> g_glint_depth;
+GLINT_BINDING(3, 0) Texture2D<float> g_glint_previous_depth;
+GLINT_BINDING(4, 0) Texture2D<float4> g_glint_normals;
+GLINT_BINDING(5, 0) Texture2D<float2> g_glint_motion;
+GLINT_BINDING(6, 0) Texture2D<float4> g_glint_moments_history;
+GLINT_BINDING(7, 0) StructuredBuffer<uint> g_glint_previous_metadata;
+GLINT_BINDING(8, 0) RWStructuredBuffer<uint> g_glint_tile_metadata;
+GLINT_BINDING(9, 0) GLINT_IMAGE_FORMAT(rg32f) RWTexture2D<float2> g_glint_shadow_variance;
+GLINT_BINDING(10, 0) GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_moments;
 
 #if GLINT_SHADOW_DENOISER_TILE_LIST
 // Permutations "list", "tiles" and "listed": the filter's tile list (indirect arguments first
 // written by prepare); "tiles" appends to it, "listed" (dispatched from it) reads it.
 // g_glint_filter_output is the final output ("shadow_output"), in the format
 // GLINT_SHADOW_DENOISER_OUTPUT_FORMAT picks (shadow_denoiser_output.hlsli).
-[[vk::binding(11, 0)]] RWStructuredBuffer<uint> g_glint_filter_args;
-[[vk::binding(12, 0)]] RWStructuredBuffer<uint> g_glint_filter_tiles;
-[[vk::binding(13, 0)]] GLINT_SHADOW_DENOISER_OUTPUT_IMAGE g_glint_filter_output;
+GLINT_BINDING(11, 0) RWStructuredBuffer<uint> g_glint_filter_args;
+GLINT_BINDING(12, 0) RWStructuredBuffer<uint> g_glint_filter_tiles;
+GLINT_BINDING(13, 0) GLINT_SHADOW_DENOISER_OUTPUT_IMAGE g_glint_filter_output;
 
 void GLINT_SHADOW_DENOISER_AppendFilterTile(uint2 tile)
 {

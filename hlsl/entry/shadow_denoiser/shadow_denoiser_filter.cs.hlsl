@@ -12,13 +12,13 @@
 #include "glint/shadow_denoiser/glint_shadow_denoiser_constants.h"
 #include "glint/shadow_denoiser/glint_shadow_denoiser_filter.hlsli"
 
-[[vk::binding(0, 0)]] ConstantBuffer<GLINT_ShadowDenoiserFilterConstants> g_glint_constants;
-[[vk::binding(1, 0)]] Texture2D<float2> g_glint_filter_input;
-[[vk::binding(2, 0)]] Texture2D<float> g_glint_depth;
-[[vk::binding(3, 0)]] Texture2D<float4> g_glint_normals;
-[[vk::binding(4, 0)]] GLINT_SHADOW_DENOISER_OUTPUT_IMAGE g_glint_filter_output;
+GLINT_BINDING(0, 0) ConstantBuffer<GLINT_ShadowDenoiserFilterConstants> g_glint_constants;
+GLINT_BINDING(1, 0) Texture2D<float2> g_glint_filter_input;
+GLINT_BINDING(2, 0) Texture2D<float> g_glint_depth;
+GLINT_BINDING(3, 0) Texture2D<float4> g_glint_normals;
+GLINT_BINDING(4, 0) GLINT_SHADOW_DENOISER_OUTPUT_IMAGE g_glint_filter_output;
 #if GLINT_SHADOW_DENOISER_TILE_LIST
-[[vk::binding(7, 0)]] StructuredBuffer<uint> g_glint_filter_tiles;
+GLINT_BINDING(7, 0) StructuredBuffer<uint> g_glint_filter_tiles;
 
 uint2 GLINT_SHADOW_DENOISER_LoadFilterTile(uint listIndex)
 {
@@ -26,8 +26,8 @@ uint2 GLINT_SHADOW_DENOISER_LoadFilterTile(uint listIndex)
     return uint2(GLINT_WIRE_TileEntryX(packed), GLINT_WIRE_TileEntryY(packed));
 }
 
-[[vk::binding(5, 0)]] StructuredBuffer<uint> g_glint_tile_metadata;
-[[vk::binding(6, 0)]] RWStructuredBuffer<uint> g_glint_filter_work;
+GLINT_BINDING(5, 0) StructuredBuffer<uint> g_glint_tile_metadata;
+GLINT_BINDING(6, 0) RWStructuredBuffer<uint> g_glint_filter_work;
 
 uint GLINT_SHADOW_DENOISER_LoadTileMetadata(uint tileIndex)
 {

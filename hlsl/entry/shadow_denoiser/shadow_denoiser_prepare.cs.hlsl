@@ -4,13 +4,13 @@
 #include "glint/shadow_denoiser/glint_shadow_denoiser_constants.h"
 #include "glint/shadow_denoiser/glint_shadow_denoiser_prepare.hlsli"
 
-[[vk::binding(0, 0)]] ConstantBuffer<GLINT_ShadowDenoiserPrepareConstants> g_glint_constants;
-[[vk::binding(1, 0)]] Texture2D<float> g_glint_visibility;
-[[vk::binding(2, 0)]] RWStructuredBuffer<uint> g_glint_shadow_mask;
+GLINT_BINDING(0, 0) ConstantBuffer<GLINT_ShadowDenoiserPrepareConstants> g_glint_constants;
+GLINT_BINDING(1, 0) Texture2D<float> g_glint_visibility;
+GLINT_BINDING(2, 0) RWStructuredBuffer<uint> g_glint_shadow_mask;
 
 #if GLINT_SHADOW_DENOISER_TILE_LIST
 // Permutation "list": resets the filter's tile list for classification to append to.
-[[vk::binding(3, 0)]] RWStructuredBuffer<uint> g_glint_filter_args;
+GLINT_BINDING(3, 0) RWStructuredBuffer<uint> g_glint_filter_args;
 
 void GLINT_SHADOW_DENOISER_ResetFilterTiles()
 {

@@ -8,15 +8,15 @@
 #include "glint/sssr/glint_sssr_indirect_args.hlsli"
 
 // A cbuffer holding the struct (not ConstantBuffer<T>) so that glslang can pass it by value.
-[[vk::binding(0, 0)]] cbuffer g_glint_constants { GLINT_SssrConstants g_glint_sssr; };
-[[vk::binding(1, 0)]] Texture2D<float2> g_glint_blue_noise_source;
-[[vk::binding(2, 0)]] GLINT_IMAGE_FORMAT(rg32f) RWTexture2D<float2> g_glint_blue_noise;
+GLINT_BINDING(0, 0) cbuffer g_glint_constants { GLINT_SssrConstants g_glint_sssr; };
+GLINT_BINDING(1, 0) Texture2D<float2> g_glint_blue_noise_source;
+GLINT_BINDING(2, 0) GLINT_IMAGE_FORMAT(rg32f) RWTexture2D<float2> g_glint_blue_noise;
 
 float2 GLINT_SSSR_LoadBlueNoiseSource(int2 texel) { return g_glint_blue_noise_source.Load(int3(texel, 0)); }
 void GLINT_SSSR_StoreBlueNoise(int2 texel, float2 sample) { g_glint_blue_noise[texel] = sample; }
 
-[[vk::binding(3, 0)]] RWStructuredBuffer<uint> g_glint_counters;
-[[vk::binding(4, 0)]] RWStructuredBuffer<uint> g_glint_arguments;
+GLINT_BINDING(3, 0) RWStructuredBuffer<uint> g_glint_counters;
+GLINT_BINDING(4, 0) RWStructuredBuffer<uint> g_glint_arguments;
 
 uint GLINT_SSSR_LoadCounter(uint index) { return g_glint_counters[index]; }
 void GLINT_SSSR_StoreCounter(uint index, uint value) { g_glint_counters[index] = value; }

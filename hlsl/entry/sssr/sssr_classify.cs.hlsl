@@ -8,32 +8,32 @@
 #include "entry/sssr/sssr_environment.hlsli"
 
 // A cbuffer holding the struct (not ConstantBuffer<T>) so that glslang can pass it by value.
-[[vk::binding(0, 0)]] cbuffer g_glint_constants { GLINT_SssrConstants g_glint_sssr; };
-[[vk::binding(1, 0)]] Texture2D<float> g_glint_depth;
-[[vk::binding(2, 0)]] Texture2D<float4> g_glint_normals;
-[[vk::binding(3, 0)]] Texture2D<float4> g_glint_material;
-[[vk::binding(4, 0)]] Texture2D<float2> g_glint_motion;
-[[vk::binding(5, 0)]] Texture2D<float> g_glint_variance_history;
-[[vk::binding(6, 0)]] Texture2D<float4> g_glint_environment;
-[[vk::binding(7, 0)]] SamplerState g_glint_linear_clamp;
+GLINT_BINDING(0, 0) cbuffer g_glint_constants { GLINT_SssrConstants g_glint_sssr; };
+GLINT_BINDING(1, 0) Texture2D<float> g_glint_depth;
+GLINT_BINDING(2, 0) Texture2D<float4> g_glint_normals;
+GLINT_BINDING(3, 0) Texture2D<float4> g_glint_material;
+GLINT_BINDING(4, 0) Texture2D<float2> g_glint_motion;
+GLINT_BINDING(5, 0) Texture2D<float> g_glint_variance_history;
+GLINT_BINDING(6, 0) Texture2D<float4> g_glint_environment;
+GLINT_BINDING(7, 0) SamplerState g_glint_linear_clamp;
 #if GLINT_SSSR_HALF_STORAGE
-[[vk::binding(8, 0)]] GLINT_IMAGE_FORMAT(r16f) RWTexture2D<float> g_glint_roughness;
+GLINT_BINDING(8, 0) GLINT_IMAGE_FORMAT(r16f) RWTexture2D<float> g_glint_roughness;
 #else
-[[vk::binding(8, 0)]] GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float> g_glint_roughness;
+GLINT_BINDING(8, 0) GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float> g_glint_roughness;
 #endif
 #if GLINT_SSSR_HALF_STORAGE
-[[vk::binding(9, 0)]] GLINT_IMAGE_FORMAT(rgba16f) RWTexture2D<float4> g_glint_radiance;
+GLINT_BINDING(9, 0) GLINT_IMAGE_FORMAT(rgba16f) RWTexture2D<float4> g_glint_radiance;
 #else
-[[vk::binding(9, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_radiance;
+GLINT_BINDING(9, 0) GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_radiance;
 #endif
 #if GLINT_SSSR_HALF_STORAGE
-[[vk::binding(10, 0)]] GLINT_IMAGE_FORMAT(r16f) RWTexture2D<float> g_glint_confidence;
+GLINT_BINDING(10, 0) GLINT_IMAGE_FORMAT(r16f) RWTexture2D<float> g_glint_confidence;
 #else
-[[vk::binding(10, 0)]] GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float> g_glint_confidence;
+GLINT_BINDING(10, 0) GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float> g_glint_confidence;
 #endif
-[[vk::binding(11, 0)]] RWStructuredBuffer<uint> g_glint_counters;
-[[vk::binding(12, 0)]] RWStructuredBuffer<uint> g_glint_ray_list;
-[[vk::binding(13, 0)]] RWStructuredBuffer<uint> g_glint_tile_list;
+GLINT_BINDING(11, 0) RWStructuredBuffer<uint> g_glint_counters;
+GLINT_BINDING(12, 0) RWStructuredBuffer<uint> g_glint_ray_list;
+GLINT_BINDING(13, 0) RWStructuredBuffer<uint> g_glint_tile_list;
 
 float GLINT_SSSR_LoadDepth(int2 pixel, int mip) { return g_glint_depth.Load(int3(pixel, 0)); }
 float3 GLINT_SSSR_LoadNormal(int2 pixel) { return g_glint_normals.Load(int3(pixel, 0)).xyz; }

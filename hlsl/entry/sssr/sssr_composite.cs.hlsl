@@ -4,16 +4,16 @@
 #include "glint/sssr/glint_sssr_composite.hlsli"
 
 // A cbuffer holding the struct (not ConstantBuffer<T>) so that glslang can pass it by value.
-[[vk::binding(0, 0)]] cbuffer g_glint_constants { GLINT_SssrConstants g_glint_sssr; };
-[[vk::binding(1, 0)]] Texture2D<float4> g_glint_color;
-[[vk::binding(2, 0)]] Texture2D<float4> g_glint_reflection;
-[[vk::binding(3, 0)]] Texture2D<float> g_glint_depth;
-[[vk::binding(4, 0)]] Texture2D<float4> g_glint_normals;
-[[vk::binding(5, 0)]] Texture2D<float> g_glint_roughness;
-[[vk::binding(6, 0)]] Texture2D<float4> g_glint_base_color_metallic;
-[[vk::binding(7, 0)]] Texture2D<float2> g_glint_brdf_lut;
-[[vk::binding(8, 0)]] SamplerState g_glint_linear_clamp;
-[[vk::binding(9, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_composite;
+GLINT_BINDING(0, 0) cbuffer g_glint_constants { GLINT_SssrConstants g_glint_sssr; };
+GLINT_BINDING(1, 0) Texture2D<float4> g_glint_color;
+GLINT_BINDING(2, 0) Texture2D<float4> g_glint_reflection;
+GLINT_BINDING(3, 0) Texture2D<float> g_glint_depth;
+GLINT_BINDING(4, 0) Texture2D<float4> g_glint_normals;
+GLINT_BINDING(5, 0) Texture2D<float> g_glint_roughness;
+GLINT_BINDING(6, 0) Texture2D<float4> g_glint_base_color_metallic;
+GLINT_BINDING(7, 0) Texture2D<float2> g_glint_brdf_lut;
+GLINT_BINDING(8, 0) SamplerState g_glint_linear_clamp;
+GLINT_BINDING(9, 0) GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_composite;
 
 float3 GLINT_SSSR_LoadColor(int2 pixel) { return g_glint_color.Load(int3(pixel, 0)).rgb; }
 float3 GLINT_SSSR_LoadReflection(int2 pixel) { return g_glint_reflection.Load(int3(pixel, 0)).rgb; }

@@ -12,43 +12,43 @@
 #include "entry/sssr/sssr_environment.hlsli"
 
 // A cbuffer holding the struct (not ConstantBuffer<T>) so that glslang can pass it by value.
-[[vk::binding(0, 0)]] cbuffer g_glint_constants { GLINT_SssrConstants g_glint_sssr; };
-[[vk::binding(1, 0)]] Texture2D<float> g_glint_depth;
+GLINT_BINDING(0, 0) cbuffer g_glint_constants { GLINT_SssrConstants g_glint_sssr; };
+GLINT_BINDING(1, 0) Texture2D<float> g_glint_depth;
 #if GLINT_SSSR_THICKNESS_AWARE
-[[vk::binding(2, 0)]] Texture2D<float2> g_glint_depth_pyramid;
+GLINT_BINDING(2, 0) Texture2D<float2> g_glint_depth_pyramid;
 #else
-[[vk::binding(2, 0)]] Texture2D<float> g_glint_depth_pyramid;
+GLINT_BINDING(2, 0) Texture2D<float> g_glint_depth_pyramid;
 #endif
-[[vk::binding(3, 0)]] Texture2D<float4> g_glint_normals;
-[[vk::binding(4, 0)]] Texture2D<float> g_glint_roughness;
-[[vk::binding(5, 0)]] Texture2D<float2> g_glint_blue_noise;
-[[vk::binding(6, 0)]] Texture2D<float4> g_glint_color;
-[[vk::binding(7, 0)]] Texture2D<float2> g_glint_motion;
-[[vk::binding(8, 0)]] Texture2D<float4> g_glint_environment;
-[[vk::binding(9, 0)]] SamplerState g_glint_linear_clamp;
-[[vk::binding(10, 0)]] StructuredBuffer<uint> g_glint_counters;
-[[vk::binding(11, 0)]] StructuredBuffer<uint> g_glint_ray_list;
+GLINT_BINDING(3, 0) Texture2D<float4> g_glint_normals;
+GLINT_BINDING(4, 0) Texture2D<float> g_glint_roughness;
+GLINT_BINDING(5, 0) Texture2D<float2> g_glint_blue_noise;
+GLINT_BINDING(6, 0) Texture2D<float4> g_glint_color;
+GLINT_BINDING(7, 0) Texture2D<float2> g_glint_motion;
+GLINT_BINDING(8, 0) Texture2D<float4> g_glint_environment;
+GLINT_BINDING(9, 0) SamplerState g_glint_linear_clamp;
+GLINT_BINDING(10, 0) StructuredBuffer<uint> g_glint_counters;
+GLINT_BINDING(11, 0) StructuredBuffer<uint> g_glint_ray_list;
 #if GLINT_SSSR_HALF_STORAGE
-[[vk::binding(12, 0)]] GLINT_IMAGE_FORMAT(rgba16f) RWTexture2D<float4> g_glint_radiance;
+GLINT_BINDING(12, 0) GLINT_IMAGE_FORMAT(rgba16f) RWTexture2D<float4> g_glint_radiance;
 #else
-[[vk::binding(12, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_radiance;
+GLINT_BINDING(12, 0) GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_radiance;
 #endif
 #if GLINT_SSSR_HALF_STORAGE
-[[vk::binding(13, 0)]] GLINT_IMAGE_FORMAT(r16f) RWTexture2D<float> g_glint_confidence;
+GLINT_BINDING(13, 0) GLINT_IMAGE_FORMAT(r16f) RWTexture2D<float> g_glint_confidence;
 #else
-[[vk::binding(13, 0)]] GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float> g_glint_confidence;
+GLINT_BINDING(13, 0) GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float> g_glint_confidence;
 #endif
 #if GLINT_SSSR_DEBUG_OUTPUT
-[[vk::binding(14, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_ray_info;
+GLINT_BINDING(14, 0) GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_ray_info;
 void GLINT_SSSR_StoreRayInfo(int2 pixel, float4 info) { g_glint_ray_info[pixel] = info; }
 #endif
 #if GLINT_SSSR_STORE_RAY
 #if GLINT_SSSR_HALF_STORAGE
-[[vk::binding(15, 0)]] GLINT_IMAGE_FORMAT(rgba16f) RWTexture2D<float4> g_glint_rays;
+GLINT_BINDING(15, 0) GLINT_IMAGE_FORMAT(rgba16f) RWTexture2D<float4> g_glint_rays;
 // The pdf of a near-mirror sample exceeds the fp16 range: clamped before narrowing.
 void GLINT_SSSR_StoreRay(int2 pixel, float4 ray) { g_glint_rays[pixel] = float4(ray.xyz, min(ray.w, 65504.0)); }
 #else
-[[vk::binding(15, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_rays;
+GLINT_BINDING(15, 0) GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_rays;
 void GLINT_SSSR_StoreRay(int2 pixel, float4 ray) { g_glint_rays[pixel] = ray; }
 #endif
 #endif
