@@ -1,8 +1,10 @@
 # Every dependency comes from the distribution's packages (see scripts/setup.sh).
 # Nothing here touches the network.
-find_package(Vulkan 1.3 REQUIRED)
-find_package(spirv_cross_core CONFIG REQUIRED)
-find_package(spirv_cross_reflect CONFIG QUIET)
+if(GLINT_BUILD_VULKAN)
+  find_package(Vulkan 1.3 REQUIRED)
+  find_package(spirv_cross_core CONFIG REQUIRED)
+  find_package(spirv_cross_reflect CONFIG QUIET)
+endif()
 
 find_program(GLINT_GLSLANG NAMES glslangValidator glslang REQUIRED)
 find_program(GLINT_SPIRV_VAL NAMES spirv-val REQUIRED)
