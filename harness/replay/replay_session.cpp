@@ -3,6 +3,7 @@
 #include "replay/replay_frame.h"
 
 #include <gpu/gpu_effect_runner.h>
+#include <gpu/gpu_transfer.h>
 
 #include <algorithm>
 #include <stdexcept>
@@ -211,6 +212,16 @@ FrameResult Session::run(const capture::Frame& frame, bool cut) {
             if (auto reference = layerImage(frame, "reference." + descriptor.reference, 3))
                 result.images.push_back({name + "/reference", name + "/input", *reference});
         if (!options_.intermediates) continue;
+        // The inputs as the effect read them (decoded normals, motion in convention A, roughness in
+        // channel 0), so an import can be checked against what the capture meant.
+        for (const InputDesc& input : descriptor.inputs) {
+            const vk::Image* image = input.kind == InputKind::Environment ? nullptr : inputs_->find(input.kind);
+            if (!image) continue;
+            std::vector<float> texels = gpu::readbackImage(context_, *image);
+            const auto channels = static_cast<std::uint32_t>(texels.size() / (std::size_t{width_} * height_));
+            result.images.push_back({name + "/input_" + input.resource, name + "/input",
+                                     report::Image{width_, height_, channels, std::move(texels)}});
+        }
         for (const OutputDesc& output : running->plan.outputs) {
             if (!output.intermediate) continue;
             EffectPlan one = running->plan;

@@ -66,7 +66,8 @@ elseif(CASE STREQUAL "roundtrip")
   glint_expect(0 --validate simulate "${SCENES}/glossy_room.toml" --size 64x36 --frame-count 2 --spp 4 --out "${OUT}/capture")
   glint_expect(0 --validate dump "${OUT}/capture" --set denoise=true --out "${OUT}/dump")
   foreach(file reflections/intersect/noisy.exr reflections/classify/ray_list.png reflections/depth_pyramid/pyramid_mip1.exr
-               reflections/resolve/variance.exr index.json)
+               reflections/resolve/variance.exr reflections/input/input_depth.exr
+               reflections/input/input_normals.exr reflections/input/input_motion.exr index.json)
     if(NOT EXISTS "${OUT}/dump/${file}")
       message(FATAL_ERROR "dump wrote no ${file}")
     endif()
