@@ -8,4 +8,5 @@ glint_add_test_suite(NAME core LABELS unit
     core/constants_layout_test.cpp
     core/settings_test.cpp
     core/effect_registry_test.cpp
+    core/view_depth_test.cpp
   LIBS glint_vulkan glint_internal)

@@ -1,17 +1,14 @@
 // Camera helpers shared by the effects' plans.
 #include "core/camera.h"
 
+#include "glint/common/glint_view_depth.h"
+
 #include <cmath>
 
 namespace glint::core {
 
 shared::float4 viewDepthCoefficients(bool reversed, double n, double f) {
-    if (reversed && !(f > 0.0)) // infinite far plane: z = n / d
-        return {static_cast<float>(n), 0.0f, 1.0f, 0.0f};
-    const double a = n * f / (f - n);
-    if (!reversed) // z = n f / (f - d (f - n))
-        return {static_cast<float>(a), static_cast<float>(f / (f - n)), -1.0f, 0.0f};
-    return {static_cast<float>(a), static_cast<float>(n / (f - n)), 1.0f, 0.0f}; // z = n f / (n + d (f - n))
+    return shared::GLINT_ViewDepthCoefficients(reversed, n, f);
 }
 
 Matrix4 multiply(const Matrix4& a, const Matrix4& b) {
