@@ -4,7 +4,8 @@
 #   glint::core    the Vulkan-free plans (static), needs no Vulkan or SPIRV-Cross
 #   glint::vulkan  the backend (static): create / dispatch / destroy of any effect's plan
 # Each component has its own export file, so a package built without the Vulkan backend says
-# which component is missing. The compiled SPIR-V of every module goes to share/glint/spirv.
+# which component is missing. The compiled SPIR-V of every module goes to share/glint/spirv, the
+# SSSR tables as data files and a C++ header to share/glint/tables.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
@@ -30,6 +31,8 @@ if(TARGET glint_vulkan)
           DESTINATION "${GLINT_CMAKE_DIR}")
   set_target_properties(glint_vulkan PROPERTIES EXPORT_NAME vulkan)
 endif()
+
+install(FILES ${GLINT_TABLE_FILES} DESTINATION "${CMAKE_INSTALL_DATADIR}/glint/tables")
 
 get_property(glint_spirv GLOBAL PROPERTY GLINT_SHADER_FILES_glint)
 install(FILES ${glint_spirv} DESTINATION "${CMAKE_INSTALL_DATADIR}/glint/spirv")

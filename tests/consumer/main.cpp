@@ -4,6 +4,7 @@
 // with the minimum of each 2x2 footprint (the far value outside the image). Exits 1 on a
 // mismatch or a validation error, 2 when no Vulkan device is there.
 #include <glint/glint_depth_pyramid.h>
+#include <glint/glint_sssr_tables.h>
 #include <glint/vulkan/vk_effect.h>
 #include <glint/vulkan/vk_resources.h>
 
@@ -11,8 +12,12 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
+
+#include "glint_sssr_tables_data.h"
 
 namespace {
 
@@ -55,7 +60,28 @@ void barrier(VkCommandBuffer cmd, VkPipelineStageFlags src, VkAccessFlags srcAcc
 
 } // namespace
 
+// The installed table files and header hold exactly what the library computes.
+int tableMismatches() {
+    std::ifstream file(std::string(GLINT_CONSUMER_TABLES_DIR) + "/sssr_blue_noise_rg32f.bin",
+                       std::ios::binary);
+    const std::vector<char> bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    const std::vector<float>& noise = glint::sssrBlueNoise();
+    int mismatches = bytes.size() == noise.size() * sizeof(float) &&
+                             std::memcmp(bytes.data(), noise.data(), bytes.size()) == 0
+                         ? 0
+                         : 1;
+    const std::vector<float> lut = glint::sssrBrdfLut(glint::kSssrBrdfLutSize);
+    for (std::size_t i = 0; i < lut.size(); ++i) mismatches += lut[i] != glint::tables::kSssrBrdfLut[i];
+    for (std::size_t i = 0; i < noise.size(); ++i) mismatches += noise[i] != glint::tables::kSssrBlueNoise[i];
+    return mismatches;
+}
+
 int main() {
+    if (const int mismatches = tableMismatches(); mismatches != 0) {
+        std::fprintf(stderr, "consumer: the installed tables differ from the library's in %d places\n",
+                     mismatches);
+        return 1;
+    }
     const char* layer = "VK_LAYER_KHRONOS_validation";
     const bool validate = hasLayer(layer);
     VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
