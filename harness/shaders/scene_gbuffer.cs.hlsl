@@ -5,17 +5,17 @@
 #include "entry/common/glint_entry_common.hlsli"
 #include "../harness/shaders/scene_constants.h"
 
-[[vk::binding(0, 0)]] ConstantBuffer<GLINT_SceneConstants> g_scene;
-[[vk::binding(1, 0)]] StructuredBuffer<SceneBvhNode> g_scene_nodes;
-[[vk::binding(2, 0)]] StructuredBuffer<ScenePrimitive> g_scene_primitives;
-[[vk::binding(3, 0)]] StructuredBuffer<SceneObject> g_scene_objects;
-[[vk::binding(4, 0)]] GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float> g_depth;
-[[vk::binding(5, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_normal;
-[[vk::binding(6, 0)]] GLINT_IMAGE_FORMAT(rg32f) RWTexture2D<float2> g_motion;
+GLINT_BINDING(0, 0) ConstantBuffer<GLINT_SceneConstants> g_scene;
+GLINT_BINDING(1, 0) StructuredBuffer<SceneBvhNode> g_scene_nodes;
+GLINT_BINDING(2, 0) StructuredBuffer<ScenePrimitive> g_scene_primitives;
+GLINT_BINDING(3, 0) StructuredBuffer<SceneObject> g_scene_objects;
+GLINT_BINDING(4, 0) GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float> g_depth;
+GLINT_BINDING(5, 0) GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_normal;
+GLINT_BINDING(6, 0) GLINT_IMAGE_FORMAT(rg32f) RWTexture2D<float2> g_motion;
 #if SCENE_WRITE_MATERIAL
-[[vk::binding(7, 0)]] StructuredBuffer<SceneMaterial> g_scene_materials;
-[[vk::binding(8, 0)]] GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float> g_roughness;
-[[vk::binding(9, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_material;
+GLINT_BINDING(7, 0) StructuredBuffer<SceneMaterial> g_scene_materials;
+GLINT_BINDING(8, 0) GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float> g_roughness;
+GLINT_BINDING(9, 0) GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_material;
 #endif
 
 #include "../harness/shaders/scene_trace.hlsli"

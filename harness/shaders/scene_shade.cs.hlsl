@@ -3,13 +3,13 @@
 #include "entry/common/glint_entry_common.hlsli"
 #include "../harness/shaders/scene_constants.h"
 
-[[vk::binding(0, 0)]] ConstantBuffer<GLINT_SceneConstants> g_scene;
-[[vk::binding(1, 0)]] StructuredBuffer<SceneBvhNode> g_scene_nodes;
-[[vk::binding(2, 0)]] StructuredBuffer<ScenePrimitive> g_scene_primitives;
-[[vk::binding(3, 0)]] StructuredBuffer<SceneMaterial> g_scene_materials;
-[[vk::binding(4, 0)]] StructuredBuffer<SceneLight> g_scene_lights;
-[[vk::binding(5, 0)]] Texture2D<float4> g_scene_environment;
-[[vk::binding(6, 0)]] GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_color;
+GLINT_BINDING(0, 0) ConstantBuffer<GLINT_SceneConstants> g_scene;
+GLINT_BINDING(1, 0) StructuredBuffer<SceneBvhNode> g_scene_nodes;
+GLINT_BINDING(2, 0) StructuredBuffer<ScenePrimitive> g_scene_primitives;
+GLINT_BINDING(3, 0) StructuredBuffer<SceneMaterial> g_scene_materials;
+GLINT_BINDING(4, 0) StructuredBuffer<SceneLight> g_scene_lights;
+GLINT_BINDING(5, 0) Texture2D<float4> g_scene_environment;
+GLINT_BINDING(6, 0) GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_color;
 
 #include "../harness/shaders/scene_trace.hlsli"
 #include "../harness/shaders/scene_surface.hlsli"

@@ -2,6 +2,7 @@
 // input record evaluates the library's GGX functions and writes every result, so that the CPU
 // can check them against independent double-precision references (chi-square of the sampled
 // directions, finiteness in hard cases, the tangent frame and the bent normal).
+#include "entry/common/glint_entry_common.hlsli"
 #include "glint/common/glint_ggx.hlsli"
 
 struct TestGgxConstants {
@@ -23,9 +24,9 @@ struct TestGgxOutput {
     float4 bitangent;  // TangentFrame(n): b, then ToLocal(V).z (= dot(V, n))
 };
 
-[[vk::binding(0, 0)]] ConstantBuffer<TestGgxConstants> g_glint_constants;
-[[vk::binding(1, 0)]] StructuredBuffer<TestGgxInput> g_glint_ggx_inputs;
-[[vk::binding(2, 0)]] RWStructuredBuffer<TestGgxOutput> g_glint_ggx_outputs;
+GLINT_BINDING(0, 0) ConstantBuffer<TestGgxConstants> g_glint_constants;
+GLINT_BINDING(1, 0) StructuredBuffer<TestGgxInput> g_glint_ggx_inputs;
+GLINT_BINDING(2, 0) RWStructuredBuffer<TestGgxOutput> g_glint_ggx_outputs;
 
 [numthreads(64, 1, 1)] void main(uint3 id : SV_DispatchThreadID)
 {
