@@ -171,3 +171,14 @@ TEST_CASE("the reflections' variance history is last frame's denoised variance",
         CHECK(hasResource(plain, "sssr_zero_variance"));
     }
 }
+
+TEST_CASE("the shadows effect refuses scaled motion it cannot apply", "[effects]") {
+    const glint::EffectDescriptor& shadows = *glint::findEffect("shadows");
+    glint::FrameInfo frame = testFrame();
+    frame.motionScaleX = 2.0f;
+    glint::EffectPlan plan;
+    std::string error;
+    CHECK(shadows.plan(frame, glint::defaultSettings({&shadows}), plan, &error) ==
+          glint::Result::InvalidArgument);
+    CHECK(error == "shadows: motion must be unscaled convention A (FrameInfo::motionScale 1, 1)");
+}

@@ -69,7 +69,7 @@ struct SssrDesc {
 
     bool composite = false; // adds "composite": "color" + reflection x split-sum specular
     bool denoise =
-        false; // vk::createSssr also allocates the reflections denoiser (glint_reflections_denoiser.h)
+        false; // planReflections (glint_reflections.h) adds the reflections denoiser's resources
     std::string compositeReflection = "sssr_radiance"; // the image the composite applies
 
     std::uint32_t frameIndex = 0;

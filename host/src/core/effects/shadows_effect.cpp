@@ -57,6 +57,10 @@ Result invalid(std::string* error, const std::string& message) {
 
 Result planShadows(const FrameInfo& frame, const SettingValues& settings, EffectPlan& plan,
                    std::string* error) {
+    // The shadow denoiser reads motion in convention A as it is (ShadowDenoiserDesc has no
+    // scale): refuse a scaled frame rather than reproject it wrongly.
+    if (frame.motionScaleX != 1.0f || frame.motionScaleY != 1.0f)
+        return invalid(error, "motion must be unscaled convention A (FrameInfo::motionScale 1, 1)");
     ShadowDenoiserDesc desc;
     desc.size = frame.size;
     desc.depth = frame.depth == DepthConvention::Standard ? ShadowDenoiserDepth::Standard
