@@ -3,6 +3,7 @@
 // and the tangent frame that takes world directions into the sampler's local frame.
 //
 // Integration: include from any glint header; defines no resources and needs no callbacks.
+// No entry function, constants or dispatch of its own.
 // Conventions (docs/conventions.md §4 and §5):
 //   - every function takes GGX alpha (= perceptualRoughness^2), never perceptual roughness;
 //   - "local" means a tangent frame with z = the shading normal N (GLINT_GGX_TangentFrame);

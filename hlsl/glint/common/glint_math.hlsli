@@ -1,5 +1,6 @@
 // Shared math for every glint pass: finite-value guards and roughness conversions.
 // Integration: include from any glint header; defines no resources and needs no callbacks.
+// No entry function, constants or dispatch of its own.
 #ifndef GLINT_MATH_HLSLI
 #define GLINT_MATH_HLSLI
 

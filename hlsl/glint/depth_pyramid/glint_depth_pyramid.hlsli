@@ -24,9 +24,13 @@
 //   void   GLINT_DEPTH_PYRAMID_ResetCounter();
 //       Sets the counter back to 0 (the host also zeroes it every frame).
 //
-// Dispatch: [numthreads(256, 1, 1)], (W0 / 64) x (H0 / 64) x 1 groups, where (W0, H0) is the
-// input size rounded up to multiples of 64; call GLINT_DEPTH_PYRAMID_Build from main with
-// SV_GroupID.xy, SV_GroupIndex and the constants of glint_depth_pyramid_constants.h.
+// Entry: from main, GLINT_DEPTH_PYRAMID_Build(SV_GroupID.xy, SV_GroupIndex, c.inputSize,
+// c.level0Size, c.levelCount, c.groupCount, c.farDepth, c.writeLevel0 != 0), c a
+// GLINT_DepthPyramidConstants (glint_depth_pyramid_constants.h; filled by
+// host/src/core/depth_pyramid_passes.cpp).
+// Dispatch: [numthreads(256, 1, 1)] in every variant (reversed and closest+farthest only
+// change the callbacks), (W0 / 64) x (H0 / 64) x 1 groups, where (W0, H0) is the input size
+// rounded up to multiples of 64. Integration guide: docs/integration.md.
 //
 // Non-finite depth becomes the far plane, values outside [0, 1] are clamped, and -0 and
 // denormals become +0, so no NaN or Inf reaches any level, min/max never see an undefined

@@ -8,9 +8,12 @@
 //   void GLINT_GBUFFER_StoreAlpha(int2 pixel, float alpha);
 //       Receives GGX alpha in [0, 1] for pixel; always finite.
 //
-// Dispatch: one thread per pixel, [numthreads(8, 8, 1)] in the entry file,
-// ceil(width / 8) x ceil(height / 8) x 1 groups; call GLINT_GBUFFER_ExtractRoughness from
-// main with SV_DispatchThreadID.xy and the constants of glint_gbuffer_constants.h.
+// Entry: from main, GLINT_GBUFFER_ExtractRoughness(SV_DispatchThreadID.xy, c.size,
+// c.materialChannel, c.inputIsPerceptual != 0), c a GLINT_GBufferRoughnessConstants
+// (glint_gbuffer_constants.h; filled by host/src/core/gbuffer_passes.cpp).
+// Dispatch: one thread per pixel, [numthreads(8, 8, 1)] (every variant; the fp16 permutation
+// only changes the entry file's output format), ceil(width / 8) x ceil(height / 8) x 1 groups.
+// Integration guide: docs/integration.md.
 //
 // Non-finite or out-of-range input: NaN and -Inf become 1 (fully rough), +Inf clamps to 1,
 // negative values clamp to 0. Fully rough is the safe side: every effect treats such a pixel

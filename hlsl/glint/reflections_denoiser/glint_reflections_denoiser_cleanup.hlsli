@@ -19,7 +19,11 @@
 //   float4 GLINT_RD_LoadOutput(int2 pixel);      the effect's output; its alpha (hit distance) is kept
 //   void   GLINT_RD_StoreOutput(int2 pixel, float4 radianceAndHitDistance);
 //
-// Dispatch: [numthreads(8, 8, 1)], indirect (tiles, 1, 1) from SSSR's arguments at byte 12.
+// Entry: from main, GLINT_RD_Cleanup(r, SV_GroupID.x, SV_GroupThreadID.xy), r the
+// GLINT_ReflectionsDenoiserRatioConstants (glint_reflections_denoiser_ratio_constants.h) in a
+// cbuffer, as in glint_reflections_denoiser_common.hlsli.
+// Dispatch: [numthreads(8, 8, 1)] (also in the 16-bit permutation), indirect (tiles, 1, 1) from
+// SSSR's arguments at byte 12.
 #ifndef GLINT_REFLECTIONS_DENOISER_CLEANUP_HLSLI
 #define GLINT_REFLECTIONS_DENOISER_CLEANUP_HLSLI
 

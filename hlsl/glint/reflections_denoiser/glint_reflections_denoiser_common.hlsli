@@ -1,11 +1,20 @@
-// glint reflections denoiser: helpers shared by reproject, prefilter and resolve
-// (docs/reflections_denoiser.md). Defines no resources; the callbacks below are declared here
-// and defined by the entry files.
+// glint reflections denoiser: helpers shared by every pass (reproject, prefilter, resolve and
+// the ratio path's reconstruct and cleanup; docs/reflections_denoiser.md). Defines no resources
+// and no entry function; the callbacks below are declared here and defined by the entry files.
 //
 //   uint   GLINT_RD_LoadTile(uint index);          SSSR's tile list: the tile's top-left pixel, x | y << 16
 //   float  GLINT_RD_LoadDepth(int2 pixel);         device depth of an in-image pixel
-//   float3 GLINT_RD_LoadNormal(int2 pixel);        stored normal (unpacked with normalUnpack)
+//   float3 GLINT_RD_LoadNormal(int2 pixel);        stored world-space normal (unpacked with normalUnpack)
 //   float  GLINT_RD_LoadRoughness(int2 pixel);     GGX alpha (SSSR's "sssr_roughness")
+//
+// Every pass's entry function takes its constants struct by value: GLINT_ReflectionsDenoiserConstants
+// (glint_reflections_denoiser_constants.h), or GLINT_ReflectionsDenoiserRatioConstants for the
+// ratio path, both filled by host/src/core/reflections_denoiser_passes.cpp. Declare it as
+//   cbuffer MyConstants : register(b0) { GLINT_ReflectionsDenoiserConstants g_rd; };
+// (glslang cannot pass a ConstantBuffer<T> to a function taking T; DXC and glslang accept this).
+// Every pass: [numthreads(8, 8, 1)] in every variant, dispatched indirectly with SSSR's
+// arguments at byte 12, (listed tiles, 1, 1); SV_GroupID.x indexes SSSR's tile list.
+// Integration guide: docs/integration.md.
 #ifndef GLINT_REFLECTIONS_DENOISER_COMMON_HLSLI
 #define GLINT_REFLECTIONS_DENOISER_COMMON_HLSLI
 

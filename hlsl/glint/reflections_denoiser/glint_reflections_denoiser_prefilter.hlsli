@@ -11,7 +11,10 @@
 //   void   GLINT_RD_StorePrefiltered(int2 pixel, float4 radianceAndVariance);
 //                                                  rgb, a = variance (GLINT_RD_NOT_GLOSSY: not glossy)
 //
-// Dispatch: [numthreads(8, 8, 1)], indirect (tiles, 1, 1).
+// Entry: from main, GLINT_RD_Prefilter(c, SV_GroupID.x, SV_GroupThreadID.xy), c the
+// GLINT_ReflectionsDenoiserConstants in a cbuffer (glint_reflections_denoiser_common.hlsli).
+// Dispatch: [numthreads(8, 8, 1)] (also in the 16-bit permutation), indirect (tiles, 1, 1) from
+// SSSR's arguments at byte 12.
 #ifndef GLINT_REFLECTIONS_DENOISER_PREFILTER_HLSLI
 #define GLINT_REFLECTIONS_DENOISER_PREFILTER_HLSLI
 

@@ -21,7 +21,11 @@
 // is empty (a zero direction, or a pdf that is negative or not finite) still counts, with
 // weight 1e-6 (reference: untraced pixels).
 //
-// Dispatch: [numthreads(8, 8, 1)], indirect (tiles, 1, 1) from SSSR's arguments at byte 12.
+// Entry: from main, GLINT_RD_Reconstruct(r, SV_GroupID.x, SV_GroupThreadID.xy), r the
+// GLINT_ReflectionsDenoiserRatioConstants (glint_reflections_denoiser_ratio_constants.h) in a
+// cbuffer, as in glint_reflections_denoiser_common.hlsli.
+// Dispatch: [numthreads(8, 8, 1)] (also in the 16-bit permutation), indirect (tiles, 1, 1) from
+// SSSR's arguments at byte 12.
 #ifndef GLINT_REFLECTIONS_DENOISER_RECONSTRUCT_HLSLI
 #define GLINT_REFLECTIONS_DENOISER_RECONSTRUCT_HLSLI
 

@@ -26,7 +26,10 @@
 //   void   GLINT_RD_StoreAverage(uint2 tile, float4 average);   rgb, a = weight sum
 //   void   GLINT_RD_MarkTile(uint2 tile, uint bits);             this frame's tile mask: atomic OR
 //
-// Dispatch: [numthreads(8, 8, 1)], indirect (tiles, 1, 1) from SSSR's arguments at byte 12.
+// Entry: from main, GLINT_RD_Reproject(c, SV_GroupID.x, SV_GroupThreadID.xy), c the
+// GLINT_ReflectionsDenoiserConstants in a cbuffer (glint_reflections_denoiser_common.hlsli).
+// Dispatch: [numthreads(8, 8, 1)] (also in the 16-bit permutation), indirect (tiles, 1, 1) from
+// SSSR's arguments at byte 12.
 #ifndef GLINT_REFLECTIONS_DENOISER_REPROJECT_HLSLI
 #define GLINT_REFLECTIONS_DENOISER_REPROJECT_HLSLI
 

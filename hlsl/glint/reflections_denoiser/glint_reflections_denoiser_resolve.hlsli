@@ -4,7 +4,8 @@
 // effect's output is defined in every tile: unlisted tiles keep classification's values) and
 // into this frame's radiance history; the variance feeds next frame and SSSR's TVGT.
 //
-// Integration: the callbacks of glint_reflections_denoiser_common.hlsli (with the average), and
+// Integration: of the callbacks of glint_reflections_denoiser_common.hlsli only GLINT_RD_LoadTile
+// is called (and the average's), and
 //
 //   float4 GLINT_RD_LoadPrefiltered(int2 pixel);    rgb, a = variance (GLINT_RD_NOT_GLOSSY: not glossy;
 //                                                   defined in tiles listed this frame)
@@ -17,7 +18,10 @@
 //                                                   (next frame's reproject reads both in one fetch)
 //   void   GLINT_RD_StoreVariance(int2 pixel, float variance);
 //
-// Dispatch: [numthreads(8, 8, 1)], indirect (tiles, 1, 1).
+// Entry: from main, GLINT_RD_Resolve(c, SV_GroupID.x, SV_GroupThreadID.xy), c the
+// GLINT_ReflectionsDenoiserConstants in a cbuffer (glint_reflections_denoiser_common.hlsli).
+// Dispatch: [numthreads(8, 8, 1)] (also in the 16-bit permutation), indirect (tiles, 1, 1) from
+// SSSR's arguments at byte 12.
 #ifndef GLINT_REFLECTIONS_DENOISER_RESOLVE_HLSLI
 #define GLINT_REFLECTIONS_DENOISER_RESOLVE_HLSLI
 

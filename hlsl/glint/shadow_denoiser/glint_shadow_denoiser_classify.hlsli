@@ -27,16 +27,25 @@
 //          tiles from the metadata).
 // Every loaded value may be non-finite: such histories count as missing, such depths as sky.
 //
-// Dispatch: [numthreads(8, 8, GLINT_SHADOW_DENOISER_CLASSIFY_BLOCKS)]: 1 block (8x8 tile) a
-// group, ceil(W / 8) x ceil(H / 8) x 1 groups, unless GLINT_SHADOW_DENOISER_CLASSIFY_PART says:
-// - GLINT_SHADOW_DENOISER_CLASSIFY_PART_TILES (with the tile list): only the tile
+// Entry: from main, GLINT_SHADOW_DENOISER_Classify(SV_GroupID.xy, SV_GroupThreadID, p), p a
+// GLINT_ShadowDenoiserClassifyParams (below) copied field by field from a
+// GLINT_ShadowDenoiserClassifyConstants c (glint_shadow_denoiser_constants.h; filled by
+// host/src/core/shadow_denoiser_passes.cpp), the matrices as float4x4(c.reproject[0], ...,
+// c.reproject[3]): glslang cannot pass a ConstantBuffer to a function. c.normalUnpack is for
+// LoadNormal. Integration guide: docs/integration.md.
+//
+// Dispatch: [numthreads(8, 8, GLINT_SHADOW_DENOISER_CLASSIFY_BLOCKS)], that is (8, 8, 1): 1
+// block (8x8 tile) a group, ceil(W / 8) x ceil(H / 8) x 1 groups, unless
+// GLINT_SHADOW_DENOISER_CLASSIFY_PART says:
+// - GLINT_SHADOW_DENOISER_CLASSIFY_PART_TILES (with the tile list): (8, 8, 4), only the tile
 //   classification (metadata, list, clear tiles' output) of 2 x 2 blocks a group,
 //   ceil(W / 16) x ceil(H / 16) x 1 groups. With one block per group a pass over mostly clear
 //   tiles is bound by the rate at which the GPU starts groups, not by their work
 //   (docs/performance.md, "Sixth session");
-// - GLINT_SHADOW_DENOISER_CLASSIFY_PART_LISTED (with the tile list): the temporal part of the
-//   blocks the tiles part listed, one a group, dispatched indirectly from the list's arguments; it
-//   takes  uint2 GLINT_SHADOW_DENOISER_LoadFilterTile(uint listIndex)  as the filter does.
+// - GLINT_SHADOW_DENOISER_CLASSIFY_PART_LISTED (with the tile list): (8, 8, 1), the temporal part
+//   of the blocks the tiles part listed, one a group, dispatched indirectly from the list's
+//   arguments (listed tiles, 1, 1) at byte 0; it takes
+//   uint2 GLINT_SHADOW_DENOISER_LoadFilterTile(uint listIndex)  as the filter does.
 // Both parts together write what the whole pass writes. The whole pass keeps one block a group:
 // with four, its few busy groups would fill the SMs the clear ones share (docs/performance.md).
 #ifndef GLINT_SHADOW_DENOISER_CLASSIFY_HLSLI

@@ -35,6 +35,10 @@ GLINT_CONSTANTS_BEGIN(GLINT_ShadowDenoiserPrepareConstants)
     uint maskTilesY;  // ceil(H / 4): mask rows
 GLINT_CONSTANTS_END(GLINT_ShadowDenoiserPrepareConstants);
 
+// viewDepth = (A, B, C, 0) = GLINT_ViewDepthCoefficients(reversed, n, f) of
+// glint/common/glint_view_depth.h, n and f the near and far planes: standard
+// (n f / (f - n), f / (f - n), -1); reversed (n f / (f - n), n / (f - n), 1); reversed with an
+// infinite far plane (n, 0, 1).
 GLINT_CONSTANTS_BEGIN(GLINT_ShadowDenoiserFilterConstants)
     uint2 inputSize;         // W x H
     uint step;               // a-trous tap spacing in pixels: 1, 2 or 4
@@ -78,6 +82,7 @@ GLINT_CONSTANTS_END(GLINT_ShadowDenoiserFilterConstants);
 #define GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_REBUILD_CLEAR 8u
 
 // Matrices are column-vector (q = M p) and passed as four rows: q.i = dot(row_i, p).
+// Every field's formula (all three structs): docs/integration.md.
 GLINT_CONSTANTS_BEGIN(GLINT_ShadowDenoiserClassifyConstants)
     uint2 inputSize;
     uint2 maskTiles;            // ceil(W / 8) x ceil(H / 4)

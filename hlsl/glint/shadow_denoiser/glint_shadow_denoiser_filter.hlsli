@@ -1,6 +1,6 @@
-// glint shadow denoiser, passes 4-6 (filter): one edge-avoiding a-trous iteration over
-// (mean, variance) with depth and normal edge stops; run three times with step 1, 2 and 4
-// (docs/shadow_denoiser.md).
+// glint shadow denoiser, the filter passes ("filter0".."filter2", or "filter01" + "filter2"):
+// one edge-avoiding a-trous iteration over (mean, variance) with depth and normal edge stops;
+// run three times with step 1, 2 and 4 (docs/shadow_denoiser.md).
 //
 // Integration: define these callbacks before or after including this header.
 //
@@ -34,12 +34,20 @@
 // centre weighs 1. mean = sum w s / sum w, variance = sum w^2 var_q / (sum w)^2.
 // Final pass: mean^max(1.2 - variance, 1). Non-receivers write (0, 0).
 //
-// Dispatch: [numthreads(8, 8, 1)], ceil(W / 8) x ceil(H / 8) x 1 groups; groupshared tile of
-// 16 x 16 pixels (the 8 x 8 tile plus a 4-pixel apron), coordinates clamped to the image.
+// Entry: from main, with c a GLINT_ShadowDenoiserFilterConstants (glint_shadow_denoiser_constants.h,
+// filled by host/src/core/shadow_denoiser_passes.cpp; c.normalUnpack is for LoadNormal):
+//   GLINT_SHADOW_DENOISER_Filter(SV_GroupID.xy, SV_GroupThreadID.xy, SV_GroupIndex, c.inputSize,
+//                                c.step, c.finalPass != 0, c.viewDepth, c.depthSigma, c.normalPower)
+// or, with GLINT_SHADOW_DENOISER_FILTER_PAIR=1, steps 1 and 2 in one dispatch (the first over the
+// tile +- 2 pixels, in groupshared memory; same taps, same results as two Filter dispatches):
+//   GLINT_SHADOW_DENOISER_FilterPair(SV_GroupID.xy, SV_GroupThreadID.xy, SV_GroupIndex,
+//                                    c.inputSize, c.viewDepth, c.depthSigma, c.normalPower)
+// Integration guide: docs/integration.md.
 //
-// GLINT_SHADOW_DENOISER_FILTER_PAIR=1: GLINT_SHADOW_DENOISER_FilterPair runs the iterations with
-// steps 1 and 2 in one dispatch of the same groups (the first over the tile +- 2 pixels, in
-// groupshared memory), so the three iterations take two dispatches; same taps, same results.
+// Dispatch: [numthreads(8, 8, 1)] in every variant (single, pair, tile list, pair + tile list;
+// there is no fused three-iteration variant): ceil(W / 8) x ceil(H / 8) x 1 groups, or with the
+// tile list indirect, (listed tiles, 1, 1) from byte 0 of the arguments. Groupshared span of
+// 16 x 16 pixels (the 8 x 8 tile plus a 4-pixel apron), coordinates clamped to the image.
 #ifndef GLINT_SHADOW_DENOISER_FILTER_HLSLI
 #define GLINT_SHADOW_DENOISER_FILTER_HLSLI
 

@@ -19,11 +19,17 @@
 // 8 x 4) repeat the nearest in-image pixel (clamp to edge), so a border tile of a uniform
 // region is uniform too.
 //
-// Dispatch: [numthreads(32, 8, 1)], ceil(maskTilesX / 8) x ceil(maskTilesY / 8) x 1 groups. Four
-// consecutive threads pack one word, each from one 8-pixel row, and combine the four bytes
-// through groupshared memory after one barrier: 8 dependent-free loads a thread instead of 32
-// (one thread a word), and no atomics (OR-ing bits into groupshared words would put 32 atomics
-// on each; docs/performance.md). Nothing depends on the subgroup size.
+// Entry: from main, GLINT_SHADOW_DENOISER_Prepare(SV_GroupID.xy, SV_GroupThreadID.xy,
+// SV_GroupIndex, c.inputSize, uint2(c.maskTilesX, c.maskTilesY)), c a
+// GLINT_ShadowDenoiserPrepareConstants (glint_shadow_denoiser_constants.h; filled by
+// host/src/core/shadow_denoiser_passes.cpp). Integration guide: docs/integration.md.
+//
+// Dispatch: [numthreads(32, 8, 1)] with and without the tile list, ceil(maskTilesX / 8) x
+// ceil(maskTilesY / 8) x 1 groups. Four consecutive threads pack one word, each from one
+// 8-pixel row, and combine the four bytes through groupshared memory after one barrier: 8
+// dependent-free loads a thread instead of 32 (one thread a word), and no atomics (OR-ing bits
+// into groupshared words would put 32 atomics on each; docs/performance.md). Nothing depends
+// on the subgroup size.
 #ifndef GLINT_SHADOW_DENOISER_PREPARE_HLSLI
 #define GLINT_SHADOW_DENOISER_PREPARE_HLSLI
 

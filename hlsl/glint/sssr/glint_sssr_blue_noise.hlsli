@@ -8,6 +8,10 @@
 //   void   GLINT_SSSR_StoreBlueNoise(int2 texel, float2 sample);
 //       This frame's sample in [0, 1)^2 for texel in [0, 128)^2.
 //
+// Entry: from main, GLINT_SSSR_AnimateBlueNoise(c, SV_DispatchThreadID.xy), c the
+// GLINT_SssrConstants in a cbuffer (glint_sssr_common.hlsli; only c.frameIndex is read).
+// glint's entry also calls GLINT_SSSR_WriteIndirectArguments (glint_sssr_indirect_args.hlsli)
+// from thread (0, 0) of the same dispatch. Integration guide: docs/integration.md.
 // Dispatch: [numthreads(8, 8, 1)], 16 x 16 groups.
 //
 // Animation: each dimension d is shifted by frac(k a_d) with the R2 constants a = (0.7548776662,

@@ -8,7 +8,8 @@
 //   float  GLINT_SSSR_LoadDepth(int2 pixel, int mip);
 //       Device depth; this pass reads mip 0 only. Pixels outside the image are never asked.
 //   float3 GLINT_SSSR_LoadNormal(int2 pixel);
-//       The stored normal before unpacking (the header applies normalUnpack and normalizes).
+//       The stored world-space normal before unpacking (the header applies normalUnpack and
+//       normalizes).
 //   float4 GLINT_SSSR_LoadMaterial(int2 pixel);
 //       The material texture; constants.materialChannel selects roughness (r or alpha per flags).
 //   float2 GLINT_SSSR_LoadMotion(int2 pixel);
@@ -25,7 +26,11 @@
 //   uint   GLINT_SSSR_AddTile();             atomic add of 1 to counter 2, returns the previous value
 //   void   GLINT_SSSR_StoreTile(uint index, uint entry);
 //
-// Dispatch: [numthreads(8, 8, 1)], ceil(W / 8) x ceil(H / 8) groups, one 8x8 tile per group.
+// Entry: from main, GLINT_SSSR_Classify(c, SV_GroupID.xy, SV_GroupThreadID.xy), c the
+// GLINT_SssrConstants in a cbuffer (see glint_sssr_common.hlsli; filled by
+// host/src/core/sssr_passes.cpp). Integration guide: docs/integration.md.
+// Dispatch: [numthreads(8, 8, 1)] (also in the 16-bit storage permutation, which only changes
+// the entry file's formats), ceil(W / 8) x ceil(H / 8) groups, one 8x8 tile per group.
 // Quads never straddle tiles, so every quad decision is made in groupshared memory and holds
 // for any subgroup size.
 #ifndef GLINT_SSSR_CLASSIFY_HLSLI

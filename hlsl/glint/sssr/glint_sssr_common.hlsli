@@ -2,6 +2,12 @@
 // depth conventions, (un)projection, the quad rules and the ray-list packing
 // (docs/conventions.md §1, §2 and §8; docs/sssr.md).
 // Integration: included by the pass headers; needs no callbacks and declares no resources.
+// No entry function of its own. Every SSSR entry function takes the constants struct
+// GLINT_SssrConstants (glint_sssr_constants.h; filled by host/src/core/sssr_passes.cpp) by
+// value; declare it in the form DXC (DXIL and SPIR-V) and glslang all accept,
+//   cbuffer MyConstants : register(b0) { GLINT_SssrConstants g_sssr; };   ... (g_sssr, ...)
+// (glslang rejects a ConstantBuffer<GLINT_SssrConstants> passed to them: "no matching
+// overloaded function"). Normals are world space everywhere. Guide: docs/integration.md.
 #ifndef GLINT_SSSR_COMMON_HLSLI
 #define GLINT_SSSR_COMMON_HLSLI
 

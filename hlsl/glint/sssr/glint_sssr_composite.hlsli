@@ -10,13 +10,15 @@
 //   float3 GLINT_SSSR_LoadColor(int2 pixel);            lit colour
 //   float3 GLINT_SSSR_LoadReflection(int2 pixel);       the reflection (raw or denoised)
 //   float  GLINT_SSSR_LoadDepth(int2 pixel, int mip);   device depth (mip 0)
-//   float3 GLINT_SSSR_LoadNormal(int2 pixel);           stored normal (unpacked by the header)
+//   float3 GLINT_SSSR_LoadNormal(int2 pixel);           stored world-space normal (unpacked by the header)
 //   float  GLINT_SSSR_LoadRoughness(int2 pixel);        GGX alpha (classification output)
 //   float4 GLINT_SSSR_LoadBaseColorMetallic(int2 pixel);
 //   float2 GLINT_SSSR_SampleBrdfLut(float2 uv);         bilinear, uv = (N.V, r), texel centres at (i + 0.5) / size
 //   void   GLINT_SSSR_StoreComposite(int2 pixel, float4 color);
 //
-// Dispatch: [numthreads(8, 8, 1)], ceil(W / 8) x ceil(H / 8) groups.
+// Entry: from main, GLINT_SSSR_Composite(c, SV_DispatchThreadID.xy), c the GLINT_SssrConstants
+// in a cbuffer (glint_sssr_common.hlsli; filled by host/src/core/sssr_passes.cpp).
+// Dispatch: [numthreads(8, 8, 1)], ceil(W / 8) x ceil(H / 8) groups. Guide: docs/integration.md.
 #ifndef GLINT_SSSR_COMPOSITE_HLSLI
 #define GLINT_SSSR_COMPOSITE_HLSLI
 

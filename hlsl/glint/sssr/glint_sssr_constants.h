@@ -51,6 +51,11 @@ GLINT_SHARED_USING;
 #endif
 
 // Matrices are column-vector (q = M p) and passed as four rows: q.i = dot(row_i, p).
+// viewDepth = (A, B, C, 0) = GLINT_ViewDepthCoefficients(reversed, n, f) of
+// glint/common/glint_view_depth.h, n and f the near and far planes: standard
+// (n f / (f - n), f / (f - n), -1); reversed (n f / (f - n), n / (f - n), 1); reversed with an
+// infinite far plane (n, 0, 1).
+// Every field's formula: docs/integration.md.
 GLINT_CONSTANTS_BEGIN(GLINT_SssrConstants)
     uint2 inputSize;              // W x H
     float2 inverseInputSize;      // 1 / (W, H)

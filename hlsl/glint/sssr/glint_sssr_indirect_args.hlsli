@@ -9,7 +9,13 @@
 //   void GLINT_SSSR_StoreCounter(uint index, uint value);
 //   void GLINT_SSSR_StoreArgument(uint index, uint value);  index 0..5
 //
-// Dispatch: [numthreads(1, 1, 1)], 1 group.
+// Arguments: [0..2] the intersection's (min(g, 1024), ceil(g / 1024), 1), g = ceil(rays / 64);
+// [3..5] the reflections denoiser's (tiles, 1, 1), byte offset 12. Counters: [1] and [3] keep
+// this frame's ray and tile counts; [0] and [2] are zero again afterwards.
+//
+// Entry: GLINT_SSSR_WriteIndirectArguments() from one thread, after classification; no
+// constants. Dispatch: [numthreads(1, 1, 1)], 1 group, or (as glint's sssr_blue_noise entry
+// does) from thread (0, 0) of the blue-noise dispatch. Integration guide: docs/integration.md.
 #ifndef GLINT_SSSR_INDIRECT_ARGS_HLSLI
 #define GLINT_SSSR_INDIRECT_ARGS_HLSLI
 

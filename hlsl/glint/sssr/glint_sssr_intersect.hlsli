@@ -11,7 +11,7 @@
 //       [i 2^k, (i+1) 2^k) x [j 2^k, (j+1) 2^k)). Texels are clamped to the level by the header.
 //   float  GLINT_SSSR_LoadFarthestDepth(int2 texel, int mip);   (GLINT_SSSR_THICKNESS_AWARE=1 only)
 //       The pyramid's farthest value, mip 1..6.
-//   float3 GLINT_SSSR_LoadNormal(int2 pixel);        stored normal (unpacked by the header)
+//   float3 GLINT_SSSR_LoadNormal(int2 pixel);        stored world-space normal (unpacked by the header)
 //   float  GLINT_SSSR_LoadRoughness(int2 pixel);     GGX alpha written by the classification
 //   float2 GLINT_SSSR_LoadBlueNoise(int2 pixel);     this frame's sample in [0,1)^2, any pixel (wrap)
 //   float3 GLINT_SSSR_LoadColor(int2 pixel);         lit colour of this frame (point load)
@@ -29,7 +29,16 @@
 //       finite, > 0), written to the pixel and to its copies like the radiance; read by the
 //       reflections denoiser's ratio-estimator path
 //
-// Dispatch: [numthreads(64, 1, 1)], indirect from the arguments pass: (min(g, 1024), ceil(g / 1024), 1)
+// Entry: from main, GLINT_SSSR_Intersect(c, SV_GroupIndex, rayIndex), with
+//   rayIndex = (SV_GroupID.y * GLINT_SSSR_GROUPS_PER_ROW + SV_GroupID.x) * GLINT_SSSR_RAYS_PER_GROUP
+//              + SV_GroupIndex
+// and c the GLINT_SssrConstants (glint_sssr_constants.h; filled by host/src/core/sssr_passes.cpp)
+// declared as  cbuffer MyConstants : register(b0) { GLINT_SssrConstants c; };  : glslang
+// rejects a ConstantBuffer<GLINT_SssrConstants> passed here ("no matching overloaded function");
+// the cbuffer form compiles with DXC (DXIL and SPIR-V) and glslang. Guide: docs/integration.md.
+//
+// Dispatch: [numthreads(64, 1, 1)] in every variant (thickness-aware, debug, stored rays, 16-bit
+// storage), indirect from the arguments buffer at byte 0: (min(g, 1024), ceil(g / 1024), 1)
 // groups for g = ceil(rays / 64); ray index = (group.y * 1024 + group.x) * 64 + thread.
 // The low-occupancy exit counts the group's live rays in groupshared memory every
 // GLINT_SSSR_OCCUPANCY_INTERVAL iterations, so it means the same on 8-, 32- and 64-wide
