@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # Installs whatever system packages are missing, then configures and builds one preset.
 # Idempotent: with everything installed and built, it checks and returns in seconds.
-#   scripts/setup.sh <debug|release> [target...]
+#   scripts/setup.sh <debug|release|fuzz> [target...]
 set -euo pipefail
-preset=${1:?usage: scripts/setup.sh <debug|release>}
+preset=${1:?usage: scripts/setup.sh <debug|release|fuzz>}
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 
 # Debian bookworm package names; every dependency of the project is in this list.
@@ -14,6 +14,11 @@ packages=(
   libopenexr-dev libimath-dev libpng-dev catch2 libcli11-dev nlohmann-json3-dev libtomlplusplus-dev
   libassimp-dev assimp-testmodels
 )
+# The fuzz preset (scripts/fuzz.sh) also needs clang with libFuzzer and its sanitizer
+# runtimes, and llvm-symbolizer (llvm-14) for readable sanitizer reports.
+if [ "$preset" = fuzz ]; then
+  packages+=(clang libclang-rt-14-dev llvm-14)
+fi
 
 missing=()
 for package in "${packages[@]}"; do

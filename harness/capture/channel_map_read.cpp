@@ -58,7 +58,11 @@ std::map<std::string, Plane> readPlanes(const std::string& framePath, const Chan
         byFile[locate(framePath, r.ref, map.framesAreFolders).file].push_back(&r);
     std::map<std::string, Plane> planes;
     std::filesystem::path first;
-    for (const auto& [file, wanted] : byFile) {
+    for (const auto& entry : byFile) {
+        // Named references rather than a structured binding: the lambda below captures them
+        // (clang before 16 cannot capture structured bindings).
+        const std::filesystem::path& file = entry.first;
+        const std::vector<const Request*>& wanted = entry.second;
         ExrSize fileSize;
         ExrLayout layout;
         const Imf::Header header = readExrHeader(file, fileSize, &layout);

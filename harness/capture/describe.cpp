@@ -43,8 +43,9 @@ std::string describeCommon(const FrameHeader& h) {
     out += "projection: " + describe(c.projection) + "\n";
     out += "prevViewProjection: " + describe(c.prevViewProjection) + "\n";
     out += "normals: " + std::string(toString(h.normalEncoding)) + "\n";
-    out += "motion: " + std::string(toString(h.motion.units)) + ", scale (" + number(h.motion.scale.x) +
-           ", " + number(h.motion.scale.y) + ")\n";
+    out += "motion: " + std::string(toString(h.motion.units)) + ", scale (" +
+           number(static_cast<double>(h.motion.scale.x)) + ", " +
+           number(static_cast<double>(h.motion.scale.y)) + ")\n";
     const RoughnessSource& r = h.roughness;
     out += "roughness: " +
            (r.layer.empty()

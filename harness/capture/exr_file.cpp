@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <optional>
 #include <system_error>
@@ -45,9 +46,10 @@ void checkWindows(const Imf::Header& header, const std::filesystem::path& file, 
 
 // The file read at explicit offsets; a read that would pass the end of the file fails
 // instead of reading, so no size taken from the file is trusted before it is compared
-// with the bytes that are really there.
+// with the bytes that are really there. Small reads (the header walk reads names byte by
+// byte) are served from one cached block.
 class FileReader {
-public:
+  public:
     FileReader(const std::filesystem::path& file, std::uint64_t bytes) : bytes_(bytes) {
         in_.open(file, std::ios::binary);
         if (!in_) fail(file, "cannot open the file");
@@ -58,14 +60,17 @@ public:
 
     bool read(std::uint64_t offset, void* out, std::size_t n) {
         if (n > left(offset)) return false;
-        if (offset != position_) {
-            in_.clear();
-            in_.seekg(static_cast<std::streamoff>(offset));
+        if (n > kBlock / 2) return readFile(offset, out, n);
+        if (offset < blockStart_ || offset + n > blockStart_ + block_.size()) {
+            block_.resize(static_cast<std::size_t>(std::min<std::uint64_t>(kBlock, left(offset))));
+            if (!readFile(offset, block_.data(), block_.size())) {
+                block_.clear();
+                return false;
+            }
+            blockStart_ = offset;
         }
-        in_.read(static_cast<char*>(out), static_cast<std::streamsize>(n));
-        const bool ok = in_.gcount() == static_cast<std::streamsize>(n);
-        position_ = ok ? offset + n : ~std::uint64_t{0};
-        return ok;
+        std::memcpy(out, block_.data() + (offset - blockStart_), n);
+        return true;
     }
 
     // OpenEXR files are little-endian.
@@ -77,10 +82,20 @@ public:
         return static_cast<std::int32_t>(v);
     }
 
-private:
+  private:
+    static constexpr std::size_t kBlock = 4096;
+
+    bool readFile(std::uint64_t offset, void* out, std::size_t n) {
+        in_.clear();
+        in_.seekg(static_cast<std::streamoff>(offset));
+        in_.read(static_cast<char*>(out), static_cast<std::streamsize>(n));
+        return in_.gcount() == static_cast<std::streamsize>(n);
+    }
+
     std::ifstream in_;
     std::uint64_t bytes_ = 0;
-    std::uint64_t position_ = 0;
+    std::vector<char> block_;
+    std::uint64_t blockStart_ = 0;
 };
 
 std::uint64_t readUint64(const unsigned char* b) {
@@ -99,12 +114,14 @@ std::optional<std::int32_t> fixedValueSize(std::string_view type) {
         std::int32_t size;
     };
     static constexpr std::array<Fixed, 24> kFixed{{
-        {"box2f", 16},   {"box2i", 16},          {"chromaticities", 32}, {"compression", 1},
-        {"double", 8},   {"deepImageState", 1},  {"envmap", 1},          {"float", 4},
-        {"int", 4},      {"keycode", 28},        {"lineOrder", 1},       {"m33d", 72},
-        {"m33f", 36},    {"m44d", 128},          {"m44f", 64},           {"rational", 8},
-        {"tiledesc", 9}, {"timecode", 8},        {"v2d", 16},            {"v2f", 8},
-        {"v2i", 8},      {"v3d", 24},            {"v3f", 12},            {"v3i", 12},
+        {"box2f", 16},      {"box2i", 16},    {"chromaticities", 32},
+        {"compression", 1}, {"double", 8},    {"deepImageState", 1},
+        {"envmap", 1},      {"float", 4},     {"int", 4},
+        {"keycode", 28},    {"lineOrder", 1}, {"m33d", 72},
+        {"m33f", 36},       {"m44d", 128},    {"m44f", 64},
+        {"rational", 8},    {"tiledesc", 9},  {"timecode", 8},
+        {"v2d", 16},        {"v2f", 8},       {"v2i", 8},
+        {"v3d", 24},        {"v3f", 12},      {"v3i", 12},
     }};
     for (const Fixed& f : kFixed)
         if (f.type == type) return f.size;
@@ -120,16 +137,18 @@ struct HeaderWalk {
         fail(file, "file is truncated inside its header (" + where + ")");
     }
 
-    // A name as OpenEXR reads it: at most 255 characters and the terminating NUL.
-    std::string name(const std::string& what) {
+    // A name as OpenEXR reads it: at most 255 characters and the terminating NUL. `what`
+    // and `owner` say which name it is ("type of attribute 'x'"), for messages only.
+    std::string name(const char* what, const std::string& owner = {}) {
+        auto describe = [&] { return std::string(what) + (owner.empty() ? "" : " '" + owner + "'"); };
         std::string text;
         for (;;) {
             char c = 0;
-            if (!reader.read(at, &c, 1)) truncated(what);
+            if (!reader.read(at, &c, 1)) truncated(describe());
             ++at;
             if (c == '\0') return text;
             if (text.size() == 255)
-                fail(file, what + " '" + text.substr(0, 40) + "...' is longer than 255 characters");
+                fail(file, describe() + " '" + text.substr(0, 40) + "...' is longer than 255 characters");
             text.push_back(c);
         }
     }
@@ -138,8 +157,8 @@ struct HeaderWalk {
     // empty name. It reads until that end marker whatever the attribute's size says.
     std::uint64_t channelListBytes(const std::string& attribute) {
         const std::uint64_t start = at;
-        for (std::size_t count = 0;; ++count) {
-            const std::string channel = name("channel name in attribute '" + attribute + "'");
+        for (;;) {
+            const std::string channel = name("channel name in attribute", attribute);
             if (channel.empty()) break;
             if (reader.left(at) < 16) truncated("channel '" + channel + "'");
             at += 16;
@@ -154,26 +173,27 @@ struct HeaderWalk {
         for (;;) {
             const std::string attribute = name("attribute name");
             if (attribute.empty()) return at;
-            const std::string type = name("type of attribute '" + attribute + "'");
+            const std::string type = name("type of attribute", attribute);
             const std::optional<std::int32_t> size = reader.int32(at);
             if (!size) truncated("size of attribute '" + attribute + "'");
             at += 4;
-            const std::string what = "attribute '" + attribute + "' (" + type + ")";
-            if (*size < 0) fail(file, what + " has a negative size (" + std::to_string(*size) + ")");
+            auto what = [&] { return "attribute '" + attribute + "' (" + type + ")"; };
+            if (*size < 0) fail(file, what() + " has a negative size (" + std::to_string(*size) + ")");
             const auto bytes = static_cast<std::uint64_t>(*size);
             if (bytes > reader.left(at))
-                fail(file, what + " declares " + std::to_string(bytes) + " bytes but only " +
+                fail(file, what() + " declares " + std::to_string(bytes) + " bytes but only " +
                                std::to_string(reader.left(at)) + " remain in the file");
             if (type == "chlist") {
                 const std::uint64_t used = channelListBytes(attribute);
                 if (used != bytes)
-                    fail(file, what + " declares " + std::to_string(bytes) + " bytes but its channels take " +
-                                   std::to_string(used));
-            } else if (const std::optional<std::int32_t> fixed = fixedValueSize(type); fixed && *fixed != *size) {
-                fail(file, what + " has size " + std::to_string(bytes) + "; a " + type + " value takes " +
+                    fail(file, what() + " declares " + std::to_string(bytes) +
+                                   " bytes but its channels take " + std::to_string(used));
+            } else if (const std::optional<std::int32_t> fixed = fixedValueSize(type);
+                       fixed && *fixed != *size) {
+                fail(file, what() + " has size " + std::to_string(bytes) + "; a " + type + " value takes " +
                                std::to_string(*fixed) + " bytes");
             } else if (type == "floatvector" && bytes % 4 != 0) {
-                fail(file, what + " has size " + std::to_string(bytes) + ", not a whole number of floats");
+                fail(file, what() + " has size " + std::to_string(bytes) + ", not a whole number of floats");
             }
             at += bytes;
         }
@@ -318,11 +338,13 @@ struct PixelCheck {
         const auto bytes = static_cast<std::uint64_t>(*stored);
         if (bytes > reader.left(sizeAt + 4))
             fail(file, "file is truncated or incomplete: " + chunk + " declares " + std::to_string(bytes) +
-                           " bytes but only " + std::to_string(reader.left(sizeAt + 4)) + " remain in the file");
+                           " bytes but only " + std::to_string(reader.left(sizeAt + 4)) +
+                           " remain in the file");
         if (compression == Imf::NO_COMPRESSION) {
             if (bytes != raw)
                 fail(file, "uncompressed " + chunk + " stores " + std::to_string(bytes) + " bytes; its " +
-                               std::to_string(width) + "-pixel-wide data needs exactly " + std::to_string(raw));
+                               std::to_string(width) + "-pixel-wide data needs exactly " +
+                               std::to_string(raw));
             return;
         }
         const std::uint64_t ratio = maxCompressionRatio(compression);
@@ -334,13 +356,14 @@ struct PixelCheck {
 
     void scanlines() {
         const auto lines = static_cast<std::uint64_t>(linesPerChunk(compression));
-        if (lines == 0) fail(file, "unknown compression method " + std::to_string(static_cast<int>(compression)));
+        if (lines == 0)
+            fail(file, "unknown compression method " + std::to_string(static_cast<int>(compression)));
         const std::uint64_t count = (height + lines - 1) / lines;
         const std::vector<std::uint64_t> offsets = offsetTable(count, 8);
         for (std::uint64_t i = 0; i < count; ++i) {
             const std::uint64_t y0 = i * lines, y1 = std::min(height, y0 + lines) - 1;
-            const std::string chunk = chunkText(i, count) + " (scanlines " + std::to_string(y0) + "-" +
-                                      std::to_string(y1) + ")";
+            const std::string chunk =
+                chunkText(i, count) + " (scanlines " + std::to_string(y0) + "-" + std::to_string(y1) + ")";
             const std::uint64_t offset = offsets[static_cast<std::size_t>(i)];
             const std::optional<std::int32_t> y = reader.int32(offset);
             if (!y) fail(file, "file is truncated or incomplete: " + chunk + " is cut short");
@@ -495,8 +518,8 @@ Imf::Header readExrHeader(const std::filesystem::path& file, ExrSize& size, ExrL
         int readVersion = version;
         header.readFrom(stream, readVersion);
     });
-    translateErrors(file, "invalid OpenEXR header", [&] { header.sanityCheck(found.tiled); });
     checkWindows(header, file, size);
+    translateErrors(file, "invalid OpenEXR header", [&] { header.sanityCheck(found.tiled); });
     if (layout) *layout = found;
     return header;
 }

@@ -63,7 +63,7 @@ struct Reader {
 
     float real(const toml::table& t, const std::string& prefix, const char* key, float fallback,
                double lo = -1e30, double hi = 1e30) const {
-        return static_cast<float>(number(t, prefix, key, fallback, lo, hi));
+        return static_cast<float>(number(t, prefix, key, static_cast<double>(fallback), lo, hi));
     }
 
     std::uint32_t count(const toml::table& t, const std::string& prefix, const char* key,

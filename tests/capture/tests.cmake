@@ -1,6 +1,7 @@
 # Capture format v1 (harness/capture): one file per behaviour, all CPU-only.
 glint_add_test_suite(NAME capture LABELS unit
   SOURCES
+    capture/bounded_memory_test.cpp
     capture/capture_test_support.cpp
     capture/channel_map_test.cpp
     capture/describe_test.cpp

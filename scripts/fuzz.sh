@@ -1,0 +1,82 @@
+#!/usr/bin/env bash
+# Runs every libFuzzer target (tests/fuzz, docs/robustness.md) on its committed corpus for a
+# bounded time: installs what is missing (clang, libFuzzer), configures and builds the fuzz
+# preset, then runs each target with the limits below on a copy of its corpus, so that a run
+# never writes into the repository. Fails on any crash, sanitizer report, leak, timeout
+# (> 1 s for one input) or out-of-memory (> 512 MB RSS or one allocation > 512 MB); the
+# input that failed is kept under build/fuzz/artifacts/<target>/.
+#   scripts/fuzz.sh [seconds per target, default 60]
+# Environment:
+#   GLINT_FUZZ_TARGETS="frame scene ..."   run only these targets
+#   GLINT_FUZZ_RUNS=N                       also stop each target after N executions
+#   GLINT_FUZZ_KEEP_CORPUS=DIR              keep each target's grown corpus in DIR/<target>
+set -euo pipefail
+seconds=${1:-60}
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+targets=(${GLINT_FUZZ_TARGETS:-frame manifest scene gltf channel_map mapped_frame camera_file})
+
+"$root/scripts/setup.sh" fuzz
+bin="$root/build/fuzz/tests/fuzz"
+
+work=$(mktemp -d "${TMPDIR:-/tmp}/glint-fuzz-run.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+# Scratch files of the targets (each writes its input to a file) go to memory when it can.
+scratch="$work/tmp"
+if [ -d /dev/shm ] && [ -w /dev/shm ]; then scratch=$(mktemp -d /dev/shm/glint-fuzz-tmp.XXXXXX); fi
+mkdir -p "$scratch"
+trap 'rm -rf "$work" "$scratch"' EXIT
+
+# A smaller ASan quarantine keeps RSS meaningful against -rss_limit_mb (the default 256 MB
+# of freed memory held back would count as the target's own).
+export ASAN_OPTIONS="detect_leaks=1:quarantine_size_mb=64:symbolize=1"
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+# Leaks inside third-party libraries that glint cannot fix, each with its upstream issue.
+export LSAN_OPTIONS="suppressions=$root/tests/fuzz/lsan.supp:print_suppressions=0"
+if [ -x /usr/lib/llvm-14/bin/llvm-symbolizer ]; then export ASAN_SYMBOLIZER_PATH=/usr/lib/llvm-14/bin/llvm-symbolizer; fi
+
+failed=()
+summary=()
+for target in "${targets[@]}"; do
+  exe="$bin/glint_fuzz_$target"
+  [ -x "$exe" ] || { echo "fuzz: no target $target ($exe)" >&2; exit 2; }
+  corpus="$work/corpus/$target"
+  mkdir -p "$corpus"
+  cp -r "$root/tests/fuzz/corpus/$target/." "$corpus/"
+  if [ "$target" = gltf ] && [ -d /usr/share/assimp/models/glTF2 ]; then
+    # assimp's test models (package assimp-testmodels) as further seeds, not committed here.
+    find /usr/share/assimp/models/glTF2 -type f \( -name '*.gltf' -o -name '*.glb' \) -size -64k \
+      -exec sh -c 'for f; do cp "$f" "$0/assimp_$(echo "$f" | md5sum | cut -c1-12)_$(basename "$f")"; done' "$corpus" {} +
+  fi
+  artifacts="$root/build/fuzz/artifacts/$target"
+  mkdir -p "$artifacts"
+  log="$work/$target.log"
+  args=(-max_total_time="$seconds" -rss_limit_mb=512 -malloc_limit_mb=512 -timeout=1
+        -print_final_stats=1 -artifact_prefix="$artifacts/")
+  [ -n "${GLINT_FUZZ_RUNS:-}" ] && args+=(-runs="$GLINT_FUZZ_RUNS")
+  echo "fuzz: $target for ${seconds}s on $(ls "$corpus" | wc -l) seeds"
+  status=0
+  TMPDIR="$scratch" "$exe" "${args[@]}" "$corpus" >"$log" 2>&1 || status=$?
+  final=$(grep -E '^#[0-9]+[[:space:]]+(DONE|pulse|NEW|REDUCE|INITED)' "$log" | tail -1 || true)
+  execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
+  rss=$(sed -n 's/^stat::peak_rss_mb: *//p' "$log" | tail -1)
+  cov=$(sed -n 's/.* cov: \([0-9]*\) ft: \([0-9]*\).*/cov \1 ft \2/p' <<<"$final")
+  if [ "$status" -ne 0 ]; then
+    failed+=("$target")
+    summary+=("$target: FAILED (exit $status) after ${execs:-?} executions; log tail:")
+    echo "fuzz: $target FAILED (exit $status); artifacts in $artifacts" >&2
+    grep -E 'ERROR|SUMMARY|runtime error|Test unit written|libFuzzer:' "$log" | head -20 >&2 || true
+    tail -40 "$log" >&2
+  else
+    summary+=("$target: ${execs:-?} executions, ${cov:-no coverage line}, peak RSS ${rss:-?} MB")
+  fi
+  if [ -n "${GLINT_FUZZ_KEEP_CORPUS:-}" ]; then
+    mkdir -p "$GLINT_FUZZ_KEEP_CORPUS/$target"
+    cp -r "$corpus/." "$GLINT_FUZZ_KEEP_CORPUS/$target/"
+  fi
+done
+
+printf 'fuzz: %s\n' "${summary[@]}"
+if ((${#failed[@]})); then
+  echo "fuzz: failed: ${failed[*]}" >&2
+  exit 1
+fi
