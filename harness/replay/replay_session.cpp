@@ -215,7 +215,8 @@ FrameResult Session::run(const capture::Frame& frame, bool cut) {
         // The inputs as the effect read them (decoded normals, motion in convention A, roughness in
         // channel 0), so an import can be checked against what the capture meant.
         for (const InputDesc& input : descriptor.inputs) {
-            const vk::Image* image = input.kind == InputKind::Environment ? nullptr : inputs_->find(input.kind);
+            const vk::Image* image =
+                input.kind == InputKind::Environment ? nullptr : inputs_->find(input.kind);
             if (!image) continue;
             std::vector<float> texels = gpu::readbackImage(context_, *image);
             const auto channels = static_cast<std::uint32_t>(texels.size() / (std::size_t{width_} * height_));

@@ -68,8 +68,7 @@ struct SssrDesc {
     float environmentMaxLod = 7.0f;                                                   // its last level
 
     bool composite = false; // adds "composite": "color" + reflection x split-sum specular
-    bool denoise =
-        false; // planReflections (glint_reflections.h) adds the reflections denoiser's resources
+    bool denoise = false;   // planReflections (glint_reflections.h) adds the reflections denoiser's resources
     std::string compositeReflection = "sssr_radiance"; // the image the composite applies
 
     std::uint32_t frameIndex = 0;
