@@ -4,7 +4,8 @@
 # preset, then runs each target with the limits below on a copy of its corpus, so that a run
 # never writes into the repository. Fails on any crash, sanitizer report, leak, timeout
 # (> 1 s for one input) or out-of-memory (> 512 MB RSS or one allocation > 512 MB); the
-# input that failed is kept under build/fuzz/artifacts/<target>/.
+# input that failed is kept under build/fuzz/artifacts/<target>/, each target's libFuzzer
+# output in build/fuzz/logs/<target>.log.
 #   scripts/fuzz.sh [seconds per target, default 60]
 # Environment:
 #   GLINT_FUZZ_TARGETS="frame scene ..."   run only these targets
@@ -49,25 +50,28 @@ for target in "${targets[@]}"; do
   fi
   artifacts="$root/build/fuzz/artifacts/$target"
   mkdir -p "$artifacts"
-  log="$work/$target.log"
+  mkdir -p "$root/build/fuzz/logs"
+  log="$root/build/fuzz/logs/$target.log"
   args=(-max_total_time="$seconds" -rss_limit_mb=512 -malloc_limit_mb=512 -timeout=1
         -print_final_stats=1 -artifact_prefix="$artifacts/")
   [ -n "${GLINT_FUZZ_RUNS:-}" ] && args+=(-runs="$GLINT_FUZZ_RUNS")
   echo "fuzz: $target for ${seconds}s on $(ls "$corpus" | wc -l) seeds"
   status=0
+  start=$SECONDS
   TMPDIR="$scratch" "$exe" "${args[@]}" "$corpus" >"$log" 2>&1 || status=$?
+  elapsed=$((SECONDS - start))
   final=$(grep -E '^#[0-9]+[[:space:]]+(DONE|pulse|NEW|REDUCE|INITED)' "$log" | tail -1 || true)
   execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
   rss=$(sed -n 's/^stat::peak_rss_mb: *//p' "$log" | tail -1)
   cov=$(sed -n 's/.* cov: \([0-9]*\) ft: \([0-9]*\).*/cov \1 ft \2/p' <<<"$final")
   if [ "$status" -ne 0 ]; then
     failed+=("$target")
-    summary+=("$target: FAILED (exit $status) after ${execs:-?} executions; log tail:")
+    summary+=("$target: FAILED (exit $status) after ${execs:-?} executions in ${elapsed}s; see $log")
     echo "fuzz: $target FAILED (exit $status); artifacts in $artifacts" >&2
     grep -E 'ERROR|SUMMARY|runtime error|Test unit written|libFuzzer:' "$log" | head -20 >&2 || true
     tail -40 "$log" >&2
   else
-    summary+=("$target: ${execs:-?} executions, ${cov:-no coverage line}, peak RSS ${rss:-?} MB")
+    summary+=("$target: ${execs:-?} executions in ${elapsed}s, ${cov:-no coverage line}, peak RSS ${rss:-?} MB")
   fi
   if [ -n "${GLINT_FUZZ_KEEP_CORPUS:-}" ]; then
     mkdir -p "$GLINT_FUZZ_KEEP_CORPUS/$target"
