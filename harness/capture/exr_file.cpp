@@ -455,8 +455,9 @@ std::uint64_t maxCompressionRatio(Imf::Compression compression) {
     //   PIZ: Huffman codes of >= 1 bit, a run of <= 256 values in >= 10 bits.  ~410 -> 512
     //   PXR24: deflate over FLOAT samples cut to 3 bytes (4/3 of deflate's).   1376 -> 1400
     //   B44(A): a 4x4 block of HALF (32 bytes) in no fewer than 3 bytes.        10.7 -> 12
-    //   DWAA/DWAB: run-length then deflate (64 x 1032), DCT blocks of 64 samples
-    //   reduced to two deflated coefficients; measured up to 23000:1 at 4096 wide. 2^17
+    //   DWAA/DWAB: run-length then deflate (64 x 1032 = 66048); a DCT block of 64 FLOAT
+    //   samples (256 bytes) needs at least its deflated 2-byte DC value (132096) and
+    //   its Huffman-coded end-of-block mark.                                       2^18
     // Measured with all-zero chunks (the most compressible data) 4096 samples wide:
     // RLE 63.5, ZIP 946, PIZ 400, PXR24 1231, B44A 10.7, DWAB 23302.
     switch (compression) {
@@ -476,7 +477,7 @@ std::uint64_t maxCompressionRatio(Imf::Compression compression) {
         return 12;
     case Imf::DWAA_COMPRESSION:
     case Imf::DWAB_COMPRESSION:
-        return std::uint64_t{1} << 17;
+        return std::uint64_t{1} << 18;
     default:
         return 1;
     }
