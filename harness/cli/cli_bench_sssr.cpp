@@ -66,12 +66,7 @@ int runBenchSssr(const BenchOptions& options, const gpu::Context& context) {
     const SettingValues settings = replay::parseSettings(options.settings);
     // A static camera: every run is the first frame again, its histories carried.
     FrameInfo info = replay::frameInfo(frame, environment, 0, true);
-    for (std::size_t i = 0; i < 16; ++i) {
-        double sum = 0.0;
-        for (std::size_t k = 0; k < 4; ++k)
-            sum += info.projection[i / 4 * 4 + k] * info.viewFromWorld[k * 4 + i % 4];
-        info.previousClipFromWorld[i] = sum;
-    }
+    replay::holdCamera(info);
     EffectPlan plan;
     std::string error;
     if (effect.plan(info, settings, plan, &error) != Result::Ok) throw std::invalid_argument(error);

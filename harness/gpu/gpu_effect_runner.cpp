@@ -182,9 +182,10 @@ std::vector<DecodedOutput> EffectRunner::readOutputs(const EffectPlan& plan, boo
     std::vector<DecodedOutput> outputs;
     const std::uint32_t w = size_.width, h = size_.height;
     const std::size_t pixels = std::size_t{w} * h;
+    std::vector<std::pair<std::string, double>> counters; // read once, when a list needs them
     for (const OutputDesc& output : plan.outputs) {
         if (output.intermediate && !intermediates) continue;
-        DecodedOutput decoded{output.name, output.pass, w, h, 1, {}};
+        DecodedOutput decoded{output.name, output.pass, w, h, 1, {}, output.intermediate};
         switch (output.decoder) {
         case OutputDecoder::Channels: {
             const vk::Image& source = outputImage(output);
@@ -205,14 +206,16 @@ std::vector<DecodedOutput> EffectRunner::readOutputs(const EffectPlan& plan, boo
                 const std::size_t count = std::size_t{lw} * lh;
                 const auto stride = static_cast<std::uint32_t>(texels.size() / count);
                 outputs.push_back({output.name + std::to_string(level), output.pass, lw, lh, 1,
-                                   channelsOf(texels, count, stride, output.firstChannel, 1)});
+                                   channelsOf(texels, count, stride, output.firstChannel, 1),
+                                   output.intermediate});
             }
             continue;
         }
         case OutputDecoder::RayList:
         case OutputDecoder::TileList: {
+            if (counters.empty()) counters = readCounters(plan);
             std::size_t count = 0;
-            for (const auto& [name, value] : readCounters(plan))
+            for (const auto& [name, value] : counters)
                 if (name == output.count) count = static_cast<std::size_t>(value);
             decoded.pixels.assign(pixels, 0.0f);
             for (std::uint32_t entry : readWords(output.resource, count)) {

@@ -22,6 +22,7 @@ struct DecodedOutput {
     std::string pass; // the pass that wrote it
     std::uint32_t width = 0, height = 0, channels = 0;
     std::vector<float> pixels;
+    bool intermediate = false;
 };
 
 struct FrameRun {

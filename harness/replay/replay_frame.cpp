@@ -144,6 +144,16 @@ std::vector<float> environmentTexels(const capture::Environment& environment) {
     return rgba;
 }
 
+void holdCamera(FrameInfo& info) {
+    for (std::size_t row = 0; row < 4; ++row)
+        for (std::size_t col = 0; col < 4; ++col) {
+            double sum = 0.0;
+            for (std::size_t k = 0; k < 4; ++k)
+                sum += info.projection[row * 4 + k] * info.viewFromWorld[k * 4 + col];
+            info.previousClipFromWorld[row * 4 + col] = sum;
+        }
+}
+
 FrameInfo frameInfo(const capture::Frame& frame, const capture::Environment& environment, std::uint32_t index,
                     bool reset) {
     const capture::Camera& camera = frame.camera;

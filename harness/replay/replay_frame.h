@@ -20,6 +20,10 @@ namespace glint::replay {
 FrameInfo frameInfo(const capture::Frame& frame, const capture::Environment& environment, std::uint32_t index,
                     bool reset);
 
+// A static camera: last frame's view-projection becomes this frame's (benchmarks that repeat a
+// frame).
+void holdCamera(FrameInfo& info);
+
 // The texels of `kind` (not Environment or PreviousDepth), `channels` floats each. Throws
 // std::runtime_error naming the missing layer.
 std::vector<float> inputTexels(const capture::Frame& frame, InputKind kind, std::uint32_t& channels);

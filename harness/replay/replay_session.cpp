@@ -165,14 +165,7 @@ FrameResult Session::repeat() {
     FrameInfo info = last_;
     info.frameIndex = frame_;
     info.resetHistory = false;
-    // A static camera: last frame's view-projection is this frame's.
-    for (std::size_t row = 0; row < 4; ++row)
-        for (std::size_t col = 0; col < 4; ++col) {
-            double sum = 0.0;
-            for (std::size_t k = 0; k < 4; ++k)
-                sum += info.projection[row * 4 + k] * info.viewFromWorld[k * 4 + col];
-            info.previousClipFromWorld[row * 4 + col] = sum;
-        }
+    holdCamera(info);
     for (const auto& running : running_) dispatch(*running, info, result);
     last_ = info;
     ++frame_;
@@ -204,10 +197,16 @@ FrameResult Session::run(const capture::Frame& frame, bool cut) {
             if (auto image = layerImage(frame, inputLayer(frame, input.kind), 3))
                 result.images.push_back({name + "/" + input.shownAs, name + "/input", *image});
         }
-        const std::vector<gpu::DecodedOutput> outputs = running->runner->readOutputs(running->plan, false);
-        for (const gpu::DecodedOutput& out : outputs)
-            result.images.push_back({name + "/" + out.name, name + "/" + out.pass,
-                                     report::Image{out.width, out.height, out.channels, out.pixels}});
+        // Final outputs first, then (for dump) the inputs and the intermediates.
+        std::vector<gpu::DecodedOutput> outputs =
+            running->runner->readOutputs(running->plan, options_.intermediates);
+        const auto add = [&](gpu::DecodedOutput& out) {
+            result.images.push_back(
+                {name + "/" + out.name, name + "/" + out.pass,
+                 report::Image{out.width, out.height, out.channels, std::move(out.pixels)}});
+        };
+        for (gpu::DecodedOutput& out : outputs)
+            if (!out.intermediate) add(out);
         if (!descriptor.reference.empty())
             if (auto reference = layerImage(frame, "reference." + descriptor.reference, 3))
                 result.images.push_back({name + "/reference", name + "/input", *reference});
@@ -223,14 +222,8 @@ FrameResult Session::run(const capture::Frame& frame, bool cut) {
             result.images.push_back({name + "/input_" + input.resource, name + "/input",
                                      report::Image{width_, height_, channels, std::move(texels)}});
         }
-        for (const OutputDesc& output : running->plan.outputs) {
-            if (!output.intermediate) continue;
-            EffectPlan one = running->plan;
-            one.outputs = {output};
-            for (const gpu::DecodedOutput& out : running->runner->readOutputs(one, true))
-                result.images.push_back({name + "/" + out.name, name + "/" + out.pass,
-                                         report::Image{out.width, out.height, out.channels, out.pixels}});
-        }
+        for (gpu::DecodedOutput& out : outputs)
+            if (out.intermediate) add(out);
     }
     last_ = info;
     ++frame_;
