@@ -9,6 +9,12 @@ endif()
 find_program(GLINT_GLSLANG NAMES glslangValidator glslang REQUIRED)
 find_program(GLINT_SPIRV_VAL NAMES spirv-val REQUIRED)
 find_program(GLINT_SPIRV_OPT NAMES spirv-opt)
+# SPIRV-Cross's command-line tool writes the installed reflection files and GLSL 450
+# translations of the library's modules; without it the package ships SPIR-V only.
+find_program(GLINT_SPIRV_CROSS_CLI NAMES spirv-cross)
+if(NOT GLINT_SPIRV_CROSS_CLI)
+  message(STATUS "glint: spirv-cross not found; no reflection files or GLSL 450 translations")
+endif()
 if(NOT GLINT_DXC)
   find_program(GLINT_DXC_FOUND NAMES dxc)
   if(GLINT_DXC_FOUND)

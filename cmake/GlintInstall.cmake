@@ -4,8 +4,9 @@
 #   glint::core    the Vulkan-free plans (static), needs no Vulkan or SPIRV-Cross
 #   glint::vulkan  the backend (static): create / dispatch / destroy of any effect's plan
 # Each component has its own export file, so a package built without the Vulkan backend says
-# which component is missing. The compiled SPIR-V of every module goes to share/glint/spirv, the
-# SSSR tables as data files and a C++ header to share/glint/tables.
+# which component is missing. The compiled SPIR-V of every module goes to share/glint/spirv with
+# its reflection file (<module>.json), its GLSL 450 translation to share/glint/glsl, the SSSR
+# tables as data files and a C++ header to share/glint/tables.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
@@ -35,7 +36,10 @@ endif()
 install(FILES ${GLINT_TABLE_FILES} DESTINATION "${CMAKE_INSTALL_DATADIR}/glint/tables")
 
 get_property(glint_spirv GLOBAL PROPERTY GLINT_SHADER_FILES_glint)
-install(FILES ${glint_spirv} DESTINATION "${CMAKE_INSTALL_DATADIR}/glint/spirv")
+get_property(glint_reflection GLOBAL PROPERTY GLINT_SHADER_REFLECTION_FILES)
+get_property(glint_glsl GLOBAL PROPERTY GLINT_SHADER_GLSL_FILES)
+install(FILES ${glint_spirv} ${glint_reflection} DESTINATION "${CMAKE_INSTALL_DATADIR}/glint/spirv")
+install(FILES ${glint_glsl} DESTINATION "${CMAKE_INSTALL_DATADIR}/glint/glsl")
 
 # The compilers this build used, so a consumer compiles its own entry files the same way.
 set(GLINT_PACKAGE_GLSLANG "${GLINT_GLSLANG}")

@@ -18,6 +18,7 @@
 
 set(GLINT_HLSL_ROOT "${PROJECT_SOURCE_DIR}/hlsl")
 set(GLINT_SPIRV_DIR "${PROJECT_BINARY_DIR}/spirv")
+set(GLINT_GLSL_DIR "${PROJECT_BINARY_DIR}/glsl")
 set(GLINT_SPIRV_TARGET_ENV vulkan1.1)
 
 # The compile command line for one module, for whichever compiler is in use.
@@ -38,6 +39,32 @@ function(_glint_hlsl_command out_var input output depfile defines)
   set(${out_var} "${cmd}" PARENT_SCOPE)
 endfunction()
 
+# The reflection file and GLSL 450 translation installed next to a library module
+# (cmake/GlintShaderData.cmake says what they hold).
+function(_glint_shader_data name input spirv defines)
+  set(json "${GLINT_SPIRV_DIR}/${name}.json")
+  set(glsl "${GLINT_GLSL_DIR}/${name}.comp")
+  cmake_path(RELATIVE_PATH input BASE_DIRECTORY "${GLINT_HLSL_ROOT}" OUTPUT_VARIABLE source)
+  if(GLINT_DXC)
+    set(compiler dxc)
+  else()
+    set(compiler glslang)
+  endif()
+  add_custom_command(
+    OUTPUT "${json}" "${glsl}"
+    COMMAND "${CMAKE_COMMAND}" -E make_directory "${GLINT_GLSL_DIR}"
+    COMMAND "${CMAKE_COMMAND}" "-DSPIRV=${spirv}" "-DNAME=${name}" "-DSOURCE=${source}"
+            "-DDEFINES=${defines}" "-DCOMPILER=${compiler}" "-DSPIRV_CROSS=${GLINT_SPIRV_CROSS_CLI}"
+            "-DGLSLANG=${GLINT_GLSLANG}" "-DJSON_OUT=${json}" "-DGLSL_OUT=${glsl}"
+            -P "${PROJECT_SOURCE_DIR}/cmake/GlintShaderData.cmake"
+    DEPENDS "${spirv}" "${PROJECT_SOURCE_DIR}/cmake/GlintShaderData.cmake"
+    COMMENT "Reflection and GLSL 450 of ${name}"
+    VERBATIM)
+  set_property(GLOBAL APPEND PROPERTY GLINT_SHADER_DATA_FILES "${json}" "${glsl}")
+  set_property(GLOBAL APPEND PROPERTY GLINT_SHADER_REFLECTION_FILES "${json}")
+  set_property(GLOBAL APPEND PROPERTY GLINT_SHADER_GLSL_FILES "${glsl}")
+endfunction()
+
 function(_glint_compile_module name input defines group)
   set(output "${GLINT_SPIRV_DIR}/${name}.spv")
   set(depfile "${GLINT_SPIRV_DIR}/${name}.d")
@@ -55,6 +82,9 @@ function(_glint_compile_module name input defines group)
     ${extra}
     COMMENT "HLSL -> SPIR-V ${name}"
     VERBATIM)
+  if(group STREQUAL "glint" AND GLINT_SPIRV_CROSS_CLI)
+    _glint_shader_data("${name}" "${input}" "${output}" "${defines}")
+  endif()
   set_property(GLOBAL APPEND PROPERTY GLINT_SHADER_NAMES_${group} "${name}")
   set_property(GLOBAL APPEND PROPERTY GLINT_SHADER_FILES_${group} "${output}")
   set_property(GLOBAL APPEND PROPERTY GLINT_SHADER_FILES "${output}")
@@ -79,7 +109,8 @@ function(glint_add_hlsl_shader)
     math(EXPR start "${colon} + 1")
     string(SUBSTRING "${perm}" ${start} -1 perm_defs)
     string(REPLACE "," ";" perm_defs "${perm_defs}")
-    _glint_compile_module("${ARG_NAME}.${suffix}" "${ARG_ENTRY}" "${ARG_DEFINES};${perm_defs}" "${ARG_GROUP}")
+    set(all_defs ${ARG_DEFINES} ${perm_defs})
+    _glint_compile_module("${ARG_NAME}.${suffix}" "${ARG_ENTRY}" "${all_defs}" "${ARG_GROUP}")
   endforeach()
 endfunction()
 

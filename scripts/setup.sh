@@ -10,7 +10,7 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 packages=(
   cmake ninja-build g++ pkg-config git clang-format
   libvulkan-dev vulkan-validationlayers mesa-vulkan-drivers vulkan-tools
-  glslang-tools spirv-tools libspirv-cross-c-shared-dev
+  glslang-tools spirv-tools spirv-cross libspirv-cross-c-shared-dev
   libopenexr-dev libimath-dev libpng-dev catch2 libcli11-dev nlohmann-json3-dev libtomlplusplus-dev
   libassimp-dev assimp-testmodels
 )

@@ -9,4 +9,10 @@ glint_add_test_suite(NAME core LABELS unit
     core/settings_test.cpp
     core/effect_registry_test.cpp
     core/view_depth_test.cpp
-  LIBS glint_vulkan glint_internal)
+    core/shader_reflection_file_test.cpp
+  LIBS glint_vulkan glint_internal nlohmann_json::nlohmann_json)
+# The reflection files and GLSL translations are build outputs of the library's modules.
+target_compile_definitions(glint_tests_core PRIVATE
+  GLINT_TEST_SPIRV_DIR="${GLINT_SPIRV_DIR}" GLINT_TEST_GLSL_DIR="${GLINT_GLSL_DIR}"
+  GLINT_TEST_HLSL_ROOT="${GLINT_HLSL_ROOT}")
+add_dependencies(glint_tests_core glint_shaders)
