@@ -133,6 +133,22 @@ struct MapReader {
         }
         return map;
     }
+
+    // One signed axis name: "x", "-y", "+z".
+    AxisDirection direction(const toml::table& t, const std::string& prefix, const char* key,
+                            AxisDirection fallback) const {
+        if (!t.get(key)) return fallback;
+        const std::string value = text(t, prefix, key, true);
+        std::string_view name = value;
+        AxisDirection d;
+        if (name[0] == '-' || name[0] == '+') {
+            d.sign = name[0] == '-' ? -1.0 : 1.0;
+            name.remove_prefix(1);
+        }
+        d.axis = name == "x" ? 0 : name == "y" ? 1 : name == "z" ? 2 : -1;
+        if (d.axis < 0) fail(t.get(key), join(prefix, key), "expected an axis name such as \"x\" or \"-y\"");
+        return d;
+    }
 };
 
 DepthConvention depthConventionOf(std::size_t i) {
@@ -205,6 +221,35 @@ void readMotion(const MapReader& r, const toml::table& t, MotionMapping& m) {
                "not for units = \"ndc\" (its y direction is camera.ndc_y_down)");
     m.background = r.choice(t, p, "background", {"keep", "camera"}, 0) == 0 ? BackgroundMotion::Keep
                                                                             : BackgroundMotion::Camera;
+}
+
+// The source direction that [world] axes turns into glint's axis `i` (glint i = sign · source).
+AxisDirection sourceAxisOf(const AxisMap& world, std::size_t i) {
+    return {world.axis[i], world.sign[i]};
+}
+
+// `environment = "sky.exr"` (a glint environment map in glint's axes) or an [environment] table.
+void readEnvironmentMapping(const MapReader& r, const toml::table& root, ChannelMap& map) {
+    EnvironmentMapping& e = map.environment;
+    e.center = sourceAxisOf(map.worldAxes, 2);
+    e.up = sourceAxisOf(map.worldAxes, 1);
+    const toml::node* node = root.get("environment");
+    if (!node) return;
+    if (!node->is_table()) {
+        e.file = r.text(root, "", "environment", true);
+        return;
+    }
+    const toml::table& t = *node->as_table();
+    const std::string p = "environment";
+    r.onlyKeys(t, p, {"file", "optional", "center"});
+    e.file = r.text(t, p, "file", true);
+    e.optional = r.flag(t, p, "optional", false);
+    e.center = r.direction(t, p, "center", e.center);
+    // The file's top row is the source's up, the axis that becomes glint's +y.
+    if (e.center.axis == e.up.axis)
+        r.fail(
+            t.get("center"), "environment.center",
+            "must be horizontal: perpendicular to the source axis that [world] axes turns into glint's +y");
 }
 
 // Which map sections each effect needs (the layers of docs/capture-format.md, "Required layers").
@@ -285,11 +330,11 @@ ChannelMap parseMap(const toml::table& root, const std::string& file) {
             r.fail(root.get("effects"), "effects", "effect '" + effect + "' is listed twice");
     }
     map.flipVertical = r.flag(root, "", "flip_vertical", false);
-    map.environment = r.text(root, "", "environment", false);
     if (const toml::table* t = r.table(root, "", "world")) {
         r.onlyKeys(*t, "world", {"axes"});
         map.worldAxes = r.axes(*t, "world", "axes");
     }
+    readEnvironmentMapping(r, root, map);
     if (const toml::table* t = r.table(root, "", "color")) {
         r.onlyKeys(*t, "color", {"channels"});
         map.color = r.texts(*t, "color", "channels", 3, 4);
@@ -341,9 +386,10 @@ ChannelMap parseMap(const toml::table& root, const std::string& file) {
         }
     }
     if (const toml::table* t = r.table(root, "", "material")) {
-        r.onlyKeys(*t, "material", {"base_color", "metallic"});
+        r.onlyKeys(*t, "material", {"base_color", "metallic", "optional"});
         map.baseColor = r.texts(*t, "material", "base_color", 3, 3);
         map.metallic = r.text(*t, "material", "metallic", false);
+        map.materialOptional = r.flag(*t, "material", "optional", false);
     }
     const toml::table* camera = r.table(root, "", "camera");
     if (!camera) r.fail(&root, "camera", "missing [camera] section (required)");
@@ -443,7 +489,7 @@ std::vector<std::string> mappedSequenceFiles(const std::string& dirOrFile, const
     }
     const std::filesystem::path folder(mappedCaptureFolder(dirOrFile, map));
     std::filesystem::path environment;
-    if (!map.environment.empty()) environment = resolveIn(folder, map.environment);
+    if (!map.environment.file.empty()) environment = resolveIn(folder, map.environment.file);
     std::vector<std::string> names;
     for (const auto& entry : std::filesystem::directory_iterator(p, ec)) {
         const bool frame = map.framesAreFolders ? entry.is_directory(ec)
@@ -466,9 +512,9 @@ std::string mappedCaptureFolder(const std::string& dirOrFile, const ChannelMap& 
     return p.has_parent_path() ? p.parent_path().string() : std::string(".");
 }
 
-std::optional<Environment> loadMappedEnvironment(const ChannelMap& map, const std::string& dirOrFile) {
-    if (map.environment.empty()) return std::nullopt;
-    return readEnvironment(resolveIn(mappedCaptureFolder(dirOrFile, map), map.environment));
+std::filesystem::path mappedEnvironmentFile(const ChannelMap& map, const std::string& dirOrFile) {
+    if (map.environment.file.empty()) return {};
+    return resolveIn(mappedCaptureFolder(dirOrFile, map), map.environment.file);
 }
 
 } // namespace glint::capture

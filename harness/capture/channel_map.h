@@ -18,6 +18,7 @@
 
 #include <array>
 #include <cstdint>
+#include <filesystem>
 #include <limits>
 #include <optional>
 #include <string>
@@ -40,6 +41,12 @@ ChannelRef splitChannelRef(const std::string& ref);
 struct AxisMap {
     std::array<int, 3> axis{0, 1, 2};
     std::array<double, 3> sign{1.0, 1.0, 1.0};
+};
+
+// One signed axis ("-y": axis 1, sign -1).
+struct AxisDirection {
+    int axis = 0;
+    double sign = 1.0;
 };
 
 enum class DepthKind {
@@ -107,6 +114,17 @@ struct CameraMapping {
     bool ndcYDown = false;
 };
 
+// The environment map of a mapped capture (docs/replay.md, "[environment]").
+struct EnvironmentMapping {
+    std::string file;      // relative to the capture folder; empty: no environment
+    bool optional = false; // a missing file means no environment rather than an error
+    // A lat-long file's orientation in the source world, as signed source axes: the direction
+    // at the image centre (`center`, from the map, horizontal) and at its top row (`up`, always
+    // the source axis that [world] axes turns into glint's +y). The default centre is the one
+    // that becomes glint's +z: the file is then a glint environment map.
+    AxisDirection center{2, 1.0}, up{1, 1.0};
+};
+
 struct ChannelMap {
     std::string path; // the map file, for messages
     std::vector<std::string> effects;
@@ -123,8 +141,9 @@ struct ChannelMap {
     std::string referenceShadow;                  // -> reference.shadow.Y
     std::vector<std::string> baseColor;           // -> material.R,G,B
     std::string metallic;                         // -> material.A
+    bool materialOptional = false;                // frames may lack the material channels
     CameraMapping camera;
-    std::string environment; // lat-long glint environment EXR, relative to the capture folder
+    EnvironmentMapping environment;
 };
 
 // Reads and checks a map file: unknown keys, missing fields, bad values and layers the
@@ -153,8 +172,14 @@ Camera mappedCamera(const std::string& framePath, const ChannelMap& map, std::ui
 // returns it with frame index `frameIndex`.
 Frame readMappedFrame(const std::string& framePath, const ChannelMap& map, std::uint32_t frameIndex);
 
-// The environment the map names, read from the capture folder of `dirOrFile` (a sequence
-// folder or one of its frames); empty when the map names none.
+// The environment file the map names, resolved in the capture folder of `dirOrFile` (a
+// sequence folder or one of its frames); empty when the map names none.
+std::filesystem::path mappedEnvironmentFile(const ChannelMap& map, const std::string& dirOrFile);
+
+// The environment the map names, read from the capture folder of `dirOrFile` and turned into
+// glint's world axes (a lat-long file in another orientation is re-indexed, texel for texel);
+// empty when the map names none, or names an optional one that is not there. A file without
+// OpenEXR's `envmap` attribute (as other tools write them) is read as lat-long.
 std::optional<Environment> loadMappedEnvironment(const ChannelMap& map, const std::string& dirOrFile);
 
 } // namespace glint::capture

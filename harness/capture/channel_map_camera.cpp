@@ -191,7 +191,21 @@ struct SideFileReader {
             s.prevViewProjection = matrix(entry.at("prev_view_projection"), prefix + ".prev_view_projection");
         return s;
     }
+
+    // "previous": the camera of the frame before the first, an entry without "file".
+    SourceCamera previousCamera(const Json& entry, const CameraMapping& mapping) const {
+        for (const char* key : {"file", "prev_view_projection"})
+            if (entry.is_object() && entry.contains(key))
+                fail(std::string("previous.") + key, "not for the camera of the frame before the first");
+        return camera(entry, "previous", mapping);
+    }
 };
+
+// Whether the frame matched to frames[0] is the capture's first: always, except for a single
+// static entry without "file", which serves every frame of the folder.
+bool isFirstFrame(const std::string& framePath, const ChannelMap& map, std::size_t entries, bool named) {
+    return named || entries > 1 || positionInSequence(framePath, map) == 0;
+}
 
 Json parseJsonFile(const std::filesystem::path& file) {
     std::error_code ec;
@@ -216,7 +230,7 @@ Camera sideFileCamera(const std::string& framePath, const ChannelMap& map, std::
         if (key == "version" && value != 1) r.fail("version", "unsupported (this reader knows version 1)");
         if (key == "vectors" && value != "column" && value != "row")
             r.fail("vectors", "expected \"column\" (M·p) or \"row\" (p·M)");
-        if (key != "format" && key != "version" && key != "vectors" && key != "frames")
+        if (key != "format" && key != "version" && key != "vectors" && key != "frames" && key != "previous")
             r.fail(key, "unknown key");
     }
     r.rowVectors = root.contains("vectors") && root.at("vectors") == "row";
@@ -249,6 +263,8 @@ Camera sideFileCamera(const std::string& framePath, const ChannelMap& map, std::
     std::optional<SourceCamera> previous;
     if (index > 0)
         previous = r.camera(frames[index - 1], "frames[" + std::to_string(index - 1) + "]", map.camera);
+    else if (root.contains("previous") && isFirstFrame(framePath, map, frames.size(), named != 0))
+        previous = r.previousCamera(root.at("previous"), map.camera);
     return toGlint(current, previous ? &*previous : nullptr, map, width, height,
                    file.string() + ": " + prefix);
 }

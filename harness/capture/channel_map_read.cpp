@@ -26,8 +26,9 @@ struct Plane {
 };
 
 struct Request {
-    std::string ref; // as written in the map
-    std::string key; // the map key naming it, for messages
+    std::string ref;       // as written in the map
+    std::string key;       // the map key naming it, for messages
+    bool optional = false; // a file without it is not an error; the plane is then left out
 };
 
 struct Location {
@@ -63,6 +64,10 @@ std::map<std::string, Plane> readPlanes(const std::string& framePath, const Chan
         // (clang before 16 cannot capture structured bindings).
         const std::filesystem::path& file = entry.first;
         const std::vector<const Request*>& wanted = entry.second;
+        const bool allOptional =
+            std::all_of(wanted.begin(), wanted.end(), [](const Request* r) { return r->optional; });
+        std::error_code ec;
+        if (allOptional && !std::filesystem::exists(file, ec)) continue; // a texture not exported
         ExrSize fileSize;
         ExrLayout layout;
         const Imf::Header header = readExrHeader(file, fileSize, &layout);
@@ -74,14 +79,17 @@ std::map<std::string, Plane> readPlanes(const std::string& framePath, const Chan
                            " differs from " + first.filename().string() + "'s " + std::to_string(size.width) +
                            "x" + std::to_string(size.height));
         }
+        std::vector<const Request*> present;
         for (const Request* r : wanted) {
             const std::string channel = locate(framePath, r->ref, map.framesAreFolders).channel;
             const Imf::Channel* c = header.channels().findChannel(channel);
+            if (!c && r->optional) continue;
             if (!c)
                 fail(file, "missing channel '" + channel + "' (" + r->key + " in " + map.path +
                                "); the file has " + channelList(header.channels()));
             if (c->xSampling != 1 || c->ySampling != 1) fail(file, "channel '" + channel + "' is subsampled");
             planes[r->ref].half = c->type == Imf::HALF;
+            present.push_back(r);
         }
         checkPixelData(file, header, layout); // before the planes are allocated
         const std::size_t pixels = std::size_t{size.width} * size.height;
@@ -94,7 +102,7 @@ std::map<std::string, Plane> readPlanes(const std::string& framePath, const Chan
             if (!input.isComplete())
                 fail(file, "file is truncated or incomplete (some scanlines are missing)");
             Imf::FrameBuffer buffer;
-            for (const Request* r : wanted) {
+            for (const Request* r : present) {
                 Plane& plane = planes[r->ref];
                 if (!plane.samples.empty()) continue; // the same channel named by two keys
                 plane.samples.resize(pixels);
@@ -298,8 +306,8 @@ Layer motionConventionA(const Builder& b, const MotionMapping& mapping, const La
 
 std::vector<Request> requestsOf(const ChannelMap& map) {
     std::vector<Request> out;
-    auto add = [&](const std::vector<std::string>& refs, const std::string& key) {
-        for (const std::string& ref : refs) out.push_back({ref, key});
+    auto add = [&](const std::vector<std::string>& refs, const std::string& key, bool optional = false) {
+        for (const std::string& ref : refs) out.push_back({ref, key, optional});
     };
     add(map.color, "color.channels");
     if (map.depth) add({map.depth->channel}, "depth.channel");
@@ -309,8 +317,8 @@ std::vector<Request> requestsOf(const ChannelMap& map) {
     if (!map.shadow.empty()) add({map.shadow}, "shadow.channel");
     add(map.referenceReflection, "reference.reflection.channels");
     if (!map.referenceShadow.empty()) add({map.referenceShadow}, "reference.shadow.channel");
-    add(map.baseColor, "material.base_color");
-    if (!map.metallic.empty()) add({map.metallic}, "material.metallic");
+    add(map.baseColor, "material.base_color", map.materialOptional);
+    if (!map.metallic.empty()) add({map.metallic}, "material.metallic", map.materialOptional);
     return out;
 }
 } // namespace
@@ -343,10 +351,13 @@ Frame readMappedFrame(const std::string& framePath, const ChannelMap& map, std::
         frame.layers.push_back(b.copied("roughness", {"Y"}, {map.roughness->channel}));
         frame.roughness = {"roughness", "Y", map.roughness->perceptual};
     }
-    if (!map.baseColor.empty()) {
+    // An optional material whose base colour the file lacks is left out (only composite needs it).
+    const bool hasBaseColor = std::all_of(map.baseColor.begin(), map.baseColor.end(),
+                                          [&](const std::string& ref) { return planes.contains(ref); });
+    if (!map.baseColor.empty() && hasBaseColor) {
         std::vector<std::string> refs = map.baseColor;
         std::vector<std::string> names{"R", "G", "B"};
-        if (!map.metallic.empty()) {
+        if (!map.metallic.empty() && planes.contains(map.metallic)) {
             refs.push_back(map.metallic);
             names.push_back("A");
         }

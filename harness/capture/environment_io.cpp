@@ -43,20 +43,24 @@ std::optional<std::string> checkEnvironment(const Environment& env) {
 }
 } // namespace
 
-Environment readEnvironment(const std::filesystem::path& file) {
+Environment readEnvironment(const std::filesystem::path& file, std::optional<EnvironmentLayout> unmarked) {
     ExrSize size;
     ExrLayout exrLayout;
     const Imf::Header exr = readExrHeader(file, size, &exrLayout);
     if (const auto* version = exr.findTypedAttribute<Imf::IntAttribute>("glint.formatVersion");
         version && version->value() != static_cast<int>(kFormatVersion))
         fail(file, "unsupported format version " + std::to_string(version->value()));
-    if (!Imf::hasEnvmap(exr))
-        fail(file, "missing attribute 'envmap' (lat-long or cube) of an environment map");
     Environment env;
-    const Imf::Envmap layout = Imf::envmap(exr);
-    if (layout != Imf::ENVMAP_LATLONG && layout != Imf::ENVMAP_CUBE)
-        fail(file, "attribute 'envmap' has unknown value " + std::to_string(static_cast<int>(layout)));
-    env.layout = layout == Imf::ENVMAP_CUBE ? EnvironmentLayout::Cube : EnvironmentLayout::LatLong;
+    if (Imf::hasEnvmap(exr)) {
+        const Imf::Envmap layout = Imf::envmap(exr);
+        if (layout != Imf::ENVMAP_LATLONG && layout != Imf::ENVMAP_CUBE)
+            fail(file, "attribute 'envmap' has unknown value " + std::to_string(static_cast<int>(layout)));
+        env.layout = layout == Imf::ENVMAP_CUBE ? EnvironmentLayout::Cube : EnvironmentLayout::LatLong;
+    } else if (unmarked) {
+        env.layout = *unmarked;
+    } else {
+        fail(file, "missing attribute 'envmap' (lat-long or cube) of an environment map");
+    }
     for (const char* name : kChannels) {
         const Imf::Channel* ch = exr.channels().findChannel(name);
         if (!ch) fail(file, std::string("environment map lacks channel '") + name + "'");

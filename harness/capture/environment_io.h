@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <vector>
 
 namespace glint::capture {
@@ -22,8 +23,11 @@ struct Environment {
     std::size_t nonFinite = 0; // counted on read
 };
 
-// Reads R, G, B (HALF or FLOAT) of an environment map; other channels are ignored.
-Environment readEnvironment(const std::filesystem::path& file);
+// Reads R, G, B (HALF or FLOAT) of an environment map; other channels are ignored. A file
+// without the `envmap` attribute is an error, or, when `unmarked` is given, of that layout
+// (renders of other tools, which do not write the attribute).
+Environment readEnvironment(const std::filesystem::path& file,
+                            std::optional<EnvironmentLayout> unmarked = std::nullopt);
 // Writes R, G, B as FLOAT (environment radiance easily exceeds the HALF range), ZIP.
 void writeEnvironment(const std::filesystem::path& file, const Environment& environment);
 

@@ -6,17 +6,54 @@
 #include "capture/frame_io.h"
 #include "capture/sequence_io.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <optional>
+#include <set>
 #include <stdexcept>
 
 namespace glint::cli {
+
+namespace {
+
+// The digits that end a frame's name, without ".exr": "0001.exr" -> 1, "frame_0000.exr" -> 0.
+std::optional<std::size_t> trailingNumber(const std::string& path) {
+    std::string name = std::filesystem::path(path).filename().string();
+    std::string lower = name;
+    std::transform(lower.begin(), lower.end(), lower.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (lower.ends_with(".exr")) name.resize(name.size() - 4);
+    std::size_t start = name.size();
+    while (start > 0 && std::isdigit(static_cast<unsigned char>(name[start - 1]))) --start;
+    if (start == name.size() || name.size() - start > 9) return std::nullopt;
+    return static_cast<std::size_t>(std::stoul(name.substr(start)));
+}
+
+// Frame numbers from the names when every name ends in a distinct one, else positions.
+std::vector<std::size_t> frameNumbers(const std::vector<std::string>& paths) {
+    std::vector<std::size_t> numbers;
+    std::set<std::size_t> seen;
+    for (const std::string& path : paths) {
+        const std::optional<std::size_t> number = trailingNumber(path);
+        if (!number || !seen.insert(*number).second) break;
+        numbers.push_back(*number);
+    }
+    if (numbers.size() == paths.size()) return numbers;
+    numbers.resize(paths.size());
+    for (std::size_t i = 0; i < numbers.size(); ++i) numbers[i] = i;
+    return numbers;
+}
+
+} // namespace
 
 struct CaptureSource::Impl {
     std::optional<capture::Sequence> sequence;
     std::filesystem::path single; // one glint frame file
     std::optional<capture::ChannelMap> map;
     std::vector<std::string> mappedFiles; // foreign frames, in order
+    std::vector<std::string> paths;       // every frame's file, in order
+    std::vector<std::size_t> numbers;     // frameNumber()
 };
 
 CaptureSource::CaptureSource(const std::string& path, const std::string& mapPath) : impl_(new Impl) {
@@ -28,19 +65,33 @@ CaptureSource::CaptureSource(const std::string& path, const std::string& mapPath
             impl_->mappedFiles = capture::mappedSequenceFiles(path, *impl_->map);
             if (impl_->mappedFiles.empty())
                 throw std::invalid_argument(path + ": no frames to read through " + mapPath);
-            if (auto environment = capture::loadMappedEnvironment(*impl_->map, path))
+            if (auto environment = capture::loadMappedEnvironment(*impl_->map, path)) {
                 environment_ = std::move(*environment);
+                environmentName_ = capture::mappedEnvironmentFile(*impl_->map, path).string();
+            } else if (!impl_->map->environment.file.empty()) {
+                environmentName_ = "none (the optional " +
+                                   capture::mappedEnvironmentFile(*impl_->map, path).string() +
+                                   " is not there)";
+            }
+            impl_->paths = impl_->mappedFiles;
             description_ =
                 path + " through " + mapPath + " (" + std::to_string(impl_->mappedFiles.size()) + " frames)";
         } else if (std::filesystem::is_directory(p) || p.filename() == capture::kManifestName) {
+            if (std::filesystem::is_directory(p)) requireManifest(p);
             impl_->sequence = capture::readSequence(p);
-            if (auto environment = capture::loadEnvironment(*impl_->sequence))
+            if (auto environment = capture::loadEnvironment(*impl_->sequence)) {
                 environment_ = std::move(*environment);
+                environmentName_ = (impl_->sequence->directory / impl_->sequence->environment).string();
+            }
+            for (const std::string& name : impl_->sequence->frameFiles)
+                impl_->paths.push_back((impl_->sequence->directory / name).string());
             description_ = path + " (" + std::to_string(impl_->sequence->frameFiles.size()) + " frames)";
         } else {
             impl_->single = p;
+            impl_->paths.push_back(path);
             description_ = path;
         }
+        impl_->numbers = frameNumbers(impl_->paths);
     } catch (...) {
         delete impl_;
         throw;
@@ -53,8 +104,7 @@ CaptureSource::~CaptureSource() {
 }
 
 std::size_t CaptureSource::frameCount() const {
-    if (impl_->map) return impl_->mappedFiles.size();
-    return impl_->sequence ? impl_->sequence->frameFiles.size() : 1;
+    return impl_->paths.size();
 }
 
 capture::Frame CaptureSource::frame(std::size_t index) const {
@@ -63,6 +113,58 @@ capture::Frame CaptureSource::frame(std::size_t index) const {
                                         static_cast<std::uint32_t>(index));
     if (impl_->sequence) return capture::loadFrame(*impl_->sequence, index);
     return capture::readFrame(impl_->single);
+}
+
+std::string CaptureSource::framePath(std::size_t index) const {
+    return impl_->paths.at(index);
+}
+
+std::size_t CaptureSource::frameNumber(std::size_t index) const {
+    return impl_->numbers.at(index);
+}
+
+std::vector<std::string> CaptureSource::checkEffects(const capture::Frame& frame, std::size_t index,
+                                                     const replay::SessionOptions& options) const {
+    const std::vector<std::string>& wanted = options.effects.empty() ? frame.effects : options.effects;
+    const std::vector<std::string> known = replay::knownEffects();
+    const bool allKnown =
+        !wanted.empty() && std::all_of(wanted.begin(), wanted.end(), [&](const std::string& e) {
+            return std::find(known.begin(), known.end(), e) != known.end();
+        });
+    const std::optional<replay::MissingLayer> missing =
+        allKnown ? replay::missingLayer(frame, wanted, options.settings) : std::nullopt;
+    if (!missing) return replay::effectsToRun(frame, options.effects, options.settings);
+    std::string message = framePath(index) + ": " + replay::missingLayerMessage(*missing);
+    const std::string off = missing->setting.empty() ? "" : ", or leave " + missing->setting + " off";
+    if (missing->layer == "material" && !impl_->map) {
+        message += "; give the capture a 'material' layer with the base colour in R, G, B" + off;
+    } else if (missing->layer == "material" && impl_->map->baseColor.empty()) {
+        message += "; map the base colour with [material] base_color in " + impl_->map->path +
+                   " (docs/replay.md)" + off;
+    } else if (missing->layer == "material") {
+        std::string channels;
+        for (const std::string& channel : impl_->map->baseColor)
+            channels += (channels.empty() ? "" : ", ") + channel;
+        message += "; the file lacks " + channels + " (material.base_color in " + impl_->map->path +
+                   "): render that pass (Blender: Diffuse Color, docs/replay.md)" + off;
+    } else if (!off.empty()) {
+        message += "; " + off.substr(2);
+    }
+    throw std::invalid_argument(message);
+}
+
+std::string frameFolderName(std::size_t number) {
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%04zu", number);
+    return name;
+}
+
+void requireManifest(const std::filesystem::path& folder) {
+    std::error_code ec;
+    if (std::filesystem::exists(folder / capture::kManifestName, ec)) return;
+    throw std::invalid_argument(folder.string() + ": no " + capture::kManifestName +
+                                "; for a folder of foreign EXR renders pass --map FILE "
+                                "(harness/maps/blender.toml for Blender)");
 }
 
 capture::Environment blackEnvironment() {
@@ -133,6 +235,7 @@ replay::FrameResult replayUntil(const gpu::Context& context, const CaptureSource
     if (frameIndex) *frameIndex = last;
     options.intermediates = true;
     const capture::Frame first = source.frame(0);
+    source.checkEffects(first, 0, options);
     replay::Session session(context, first, source.environment(), options);
     replay::FrameResult result;
     for (std::size_t index = 0; index <= last; ++index) {

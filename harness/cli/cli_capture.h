@@ -27,17 +27,37 @@ class CaptureSource {
 
     std::size_t frameCount() const;
     capture::Frame frame(std::size_t index) const;
+    // The file (or, for folder frames, the folder) of frame `index`.
+    std::string framePath(std::size_t index) const;
+    // The number output folders carry for frame `index` (frame_NNNN): the number that ends its
+    // file name (Blender's 0001.exr is 1, glint's frame_0000.exr 0) when every frame's name
+    // ends in a distinct one, else its position.
+    std::size_t frameNumber(std::size_t index) const;
     // The capture's environment, or a black 16x8 lat-long one when it has none (reflection rays
     // that miss then return black, a defined result).
     const capture::Environment& environment() const { return environment_; }
+    // The environment file as given, or "none" (with why, for an optional one that is missing).
+    const std::string& environmentName() const { return environmentName_; }
     const std::string& description() const { return description_; }
+
+    // The effects to run (replay::effectsToRun) on frame `index`, read as `frame`; a layer the
+    // capture lacks is a one-line error naming the frame's file, the layer and what to do.
+    std::vector<std::string> checkEffects(const capture::Frame& frame, std::size_t index,
+                                          const replay::SessionOptions& options) const;
 
   private:
     struct Impl;
     Impl* impl_ = nullptr;
     capture::Environment environment_;
+    std::string environmentName_ = "none";
     std::string description_;
 };
+
+// "frame_0001": the output folder of a frame number.
+std::string frameFolderName(std::size_t number);
+
+// A folder without manifest.json is a foreign capture or a mistake: one line saying what to do.
+void requireManifest(const std::filesystem::path& folder);
 
 // A black 16x8 lat-long environment, for captures and scenes without one.
 capture::Environment blackEnvironment();

@@ -99,6 +99,8 @@ int runDump(const ReplayOptions& options);
 int runCheck(const ReplayOptions& options);
 int runSimulate(const SimulateOptions& options);
 int runBench(const BenchOptions& options);
-int runInfo(const std::string& path, bool loadPixels);
+// glint info: a glint capture, or with `mapPath` the frames of a foreign one as read through
+// that channel map.
+int runInfo(const std::string& path, bool loadPixels, const std::string& mapPath = {});
 
 } // namespace glint::cli

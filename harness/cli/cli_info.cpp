@@ -1,5 +1,7 @@
 // glint info: what a capture holds — layers, sizes, camera, conventions, effects and
-// non-finite pixel counts — for one frame file or every frame of a sequence folder.
+// non-finite pixel counts — for one frame file or every frame of a sequence folder; with
+// --map, the frames of a foreign capture as the channel map turns them into glint frames.
+#include "cli_capture.h"
 #include "cli_commands.h"
 
 #include <capture/describe.h>
@@ -20,14 +22,33 @@ void printFrame(const std::filesystem::path& file, bool loadPixels) {
     std::printf("%s:\n%s", file.string().c_str(), text.c_str());
 }
 
+// A mapped frame exists only once converted, so its pixels are always read; --header-only
+// leaves out the non-finite counts.
+int printMapped(const std::string& path, const std::string& mapPath, bool loadPixels) {
+    const CaptureSource source(path, mapPath);
+    const capture::Frame first = source.frame(0);
+    std::printf("mapped capture %s through %s: %zu frames, %ux%u, environment %s\n", path.c_str(),
+                mapPath.c_str(), source.frameCount(), first.width, first.height,
+                source.environmentName().c_str());
+    for (std::size_t index = 0; index < source.frameCount(); ++index) {
+        const capture::Frame frame = index == 0 ? first : source.frame(index);
+        const std::string text =
+            loadPixels ? capture::describe(frame) : capture::describe(capture::headerOf(frame));
+        std::printf("%s:\n%s", source.framePath(index).c_str(), text.c_str());
+    }
+    return kExitOk;
+}
+
 } // namespace
 
-int runInfo(const std::string& path, bool loadPixels) {
+int runInfo(const std::string& path, bool loadPixels, const std::string& mapPath) {
+    if (!mapPath.empty()) return printMapped(path, mapPath, loadPixels);
     const std::filesystem::path target(path);
     if (!std::filesystem::is_directory(target) && target.filename() != capture::kManifestName) {
         printFrame(target, loadPixels);
         return kExitOk;
     }
+    if (std::filesystem::is_directory(target)) requireManifest(target);
     const capture::Sequence sequence = capture::readSequence(target);
     std::printf("sequence %s: %zu frames at %.6g fps, %ux%u, environment %s\n",
                 sequence.directory.string().c_str(), sequence.frameFiles.size(), sequence.frameRate,

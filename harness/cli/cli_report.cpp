@@ -54,10 +54,15 @@ report::Section runSection(const std::filesystem::path& dir, const nlohmann::jso
     const nlohmann::json& frames = summary.at("frames");
     if (frames.empty()) return section;
     const nlohmann::json& last = frames.back();
-    char frameName[32];
-    std::snprintf(frameName, sizeof frameName, "frame_%04zu", last.at("frame").get<std::size_t>());
+    // "folder" names the frame's output folder; summaries written before it had only "frame".
+    const std::string frameName = last.contains("folder")
+                                      ? last.at("folder").get<std::string>()
+                                      : frameFolderName(last.at("frame").get<std::size_t>());
+    if (frameName.empty() || frameName == ".." || frameName.find_first_of("/\\") != std::string::npos)
+        throw std::invalid_argument("report: " + (dir / "summary.json").string() + ": frame folder '" +
+                                    frameName + "' is not a folder name");
     const std::filesystem::path frameDir = dir / frameName;
-    section.text += std::string("\nImages of the last frame (") + frameName + ").";
+    section.text += "\nImages of the last frame (" + frameName + ").";
     for (const auto& effect : summary.at("effects")) {
         const std::string name = effect.get<std::string>();
         for (const char* image : {"input", "noisy", "denoised", "composite", "reference", "error", "mip1"}) {

@@ -47,8 +47,10 @@ int runRun(const ReplayOptions& options) {
     sessionOptions.settings = replay::parseSettings(options.settings);
     const std::filesystem::path out(options.outDir);
 
+    const capture::Frame first = source.frame(range.first);
+    source.checkEffects(first, range.first, sessionOptions);
+
     return withContext(options.validate, [&](const gpu::Context& context) {
-        const capture::Frame first = source.frame(range.first);
         replay::Session session(context, first, source.environment(), sessionOptions);
         nlohmann::json summary;
         summary["capture"] = source.description();
@@ -68,10 +70,14 @@ int runRun(const ReplayOptions& options) {
         for (std::size_t index = range.first; index <= range.last; ++index) {
             const capture::Frame frame = index == range.first ? first : source.frame(index);
             const replay::FrameResult result = session.run(frame);
-            char name[32];
-            std::snprintf(name, sizeof name, "frame_%04zu", index);
-            const std::filesystem::path dir = out / name;
-            nlohmann::json record{{"frame", index}, {"images", nlohmann::json::array()}};
+            // Named by the input's own frame number (Blender's 0001.exr -> frame_0001).
+            const std::string folder = frameFolderName(source.frameNumber(index));
+            const std::filesystem::path dir = out / folder;
+            nlohmann::json record{{"frame", index},
+                                  {"number", source.frameNumber(index)},
+                                  {"folder", folder},
+                                  {"input", source.framePath(index)},
+                                  {"images", nlohmann::json::array()}};
             for (const replay::NamedImage& image : result.images) {
                 writeImageFiles(dir, fileStem(image.name), image.name, image.image, true);
                 record["images"].push_back(image.name);

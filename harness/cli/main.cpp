@@ -26,10 +26,12 @@ int main(int argc, char** argv) {
     bool settingsMarkdown = false;
     settings->add_flag("--markdown", settingsMarkdown, "as the Markdown tables of docs/settings.md");
 
-    std::string infoPath;
+    std::string infoPath, infoMap;
     bool headerOnly = false;
     CLI::App* info = app.add_subcommand("info", "Describe a frame capture (.exr) or a sequence folder");
-    info->add_option("capture", infoPath, "frame file or sequence folder")->required();
+    info->add_option("capture", infoPath, "frame file, sequence folder, or foreign EXR(s) with --map")
+        ->required();
+    info->add_option("--map", infoMap, "channel map of a foreign capture (docs/replay.md)");
     info->add_flag("--header-only", headerOnly, "read headers only; skip pixels and non-finite counts");
 
     glint::cli::BenchOptions bench;
@@ -149,7 +151,7 @@ int main(int argc, char** argv) {
     try {
         if (*devices) return glint::cli::runDevices(validate);
         if (*settings) return glint::cli::runSettings(settingsEffect, settingsMarkdown);
-        if (*info) return glint::cli::runInfo(infoPath, !headerOnly);
+        if (*info) return glint::cli::runInfo(infoPath, !headerOnly, infoMap);
         if (*simulateCommand) {
             if (!simulateSize.empty() &&
                 std::sscanf(simulateSize.c_str(), "%ux%u", &simulate.width, &simulate.height) != 2)

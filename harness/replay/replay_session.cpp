@@ -64,6 +64,31 @@ std::vector<std::string> knownEffects() {
     return names;
 }
 
+std::optional<MissingLayer> missingLayer(const capture::Frame& frame, const std::vector<std::string>& effects,
+                                         const SettingValues& settings) {
+    for (const EffectDescriptor* effect : effectRegistry()) {
+        if (std::find(effects.begin(), effects.end(), effect->name) == effects.end()) continue;
+        for (const InputDesc& input : effect->inputs) {
+            if (!inputUsed(input, settings) || input.kind == InputKind::Environment ||
+                input.kind == InputKind::PreviousDepth)
+                continue;
+            const std::string layer = inputLayer(frame, input.kind);
+            if (input.kind == InputKind::Material && !hasLayer(frame, layer))
+                return MissingLayer{effect->name, "", input.setting};
+            if (!hasLayer(frame, layer)) return MissingLayer{effect->name, layer, input.setting};
+        }
+    }
+    return std::nullopt;
+}
+
+std::string missingLayerMessage(const MissingLayer& missing) {
+    if (missing.layer.empty())
+        return "effect '" + missing.effect + "' needs a roughness source, which this capture does not have";
+    return "effect '" + missing.effect + "' needs the capture layer '" + missing.layer + "'" +
+           (missing.setting.empty() ? "" : " (for " + missing.setting + ")") +
+           ", which this capture does not have";
+}
+
 std::vector<std::string> effectsToRun(const capture::Frame& frame, const std::vector<std::string>& requested,
                                       const SettingValues& settings) {
     const std::vector<std::string>& wanted = requested.empty() ? frame.effects : requested;
@@ -72,25 +97,12 @@ std::vector<std::string> effectsToRun(const capture::Frame& frame, const std::ve
     for (const std::string& name : wanted)
         if (!findEffect(name))
             throw std::invalid_argument("unknown effect '" + name + "' (" + joinedEffectNames() + ")");
+    if (const std::optional<MissingLayer> missing = missingLayer(frame, wanted, settings))
+        throw std::invalid_argument(missingLayerMessage(*missing));
     std::vector<std::string> effects;
-    for (const EffectDescriptor* effect : effectRegistry()) {
-        if (std::find(wanted.begin(), wanted.end(), effect->name) == wanted.end()) continue;
-        for (const InputDesc& input : effect->inputs) {
-            if (!inputUsed(input, settings) || input.kind == InputKind::Environment ||
-                input.kind == InputKind::PreviousDepth)
-                continue;
-            const std::string layer = inputLayer(frame, input.kind);
-            if (input.kind == InputKind::Material && !hasLayer(frame, layer))
-                throw std::invalid_argument("effect '" + effect->name +
-                                            "' needs a roughness source, which this capture does not have");
-            if (!hasLayer(frame, layer))
-                throw std::invalid_argument("effect '" + effect->name + "' needs the capture layer '" +
-                                            layer + "'" +
-                                            (input.setting.empty() ? "" : " (for " + input.setting + ")") +
-                                            ", which this capture does not have");
-        }
-        effects.push_back(effect->name);
-    }
+    for (const EffectDescriptor* effect : effectRegistry())
+        if (std::find(wanted.begin(), wanted.end(), effect->name) != wanted.end())
+            effects.push_back(effect->name);
     return effects;
 }
 

@@ -22,6 +22,7 @@
 
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,19 @@ std::vector<std::string> knownEffects();
 // A setting gates an input (composite needs the base colour), so the check sees the settings.
 std::vector<std::string> effectsToRun(const capture::Frame& frame, const std::vector<std::string>& requested,
                                       const SettingValues& settings = defaultSettings(effectRegistry()));
+
+// The first capture layer that one of `effects` (known names) reads with these settings and
+// `frame` lacks; what effectsToRun reports.
+struct MissingLayer {
+    std::string effect;  // "reflections"
+    std::string layer;   // "material"; empty: the roughness source
+    std::string setting; // the setting that asks for it ("composite"), or empty
+};
+std::optional<MissingLayer> missingLayer(const capture::Frame& frame, const std::vector<std::string>& effects,
+                                         const SettingValues& settings);
+// "effect 'reflections' needs the capture layer 'material' (for composite), which this capture
+// does not have".
+std::string missingLayerMessage(const MissingLayer& missing);
 
 struct NamedImage {
     std::string name; // "reflections/denoised"

@@ -3,6 +3,7 @@
 // folder of textures), read back through a map, and compared with the original G-buffer.
 // Every expected value is computed here from the sample frame, independently of the
 // converter.
+#include "capture/blender_capture.h"
 #include "capture/capture_test_support.h"
 
 #include <capture/capture_error.h>
@@ -29,40 +30,20 @@ using namespace glint::capture;
 namespace fs = std::filesystem;
 
 namespace {
-constexpr std::uint32_t kWidth = 64, kHeight = 48;
+constexpr std::uint32_t kWidth = test::kForeignWidth, kHeight = test::kForeignHeight;
 constexpr std::size_t kPixels = std::size_t{kWidth} * kHeight;
+
+using test::blenderCameras;
+using test::blenderView;
+using test::ExrChannel;
+using test::isSky;
+using test::openGlProjection;
+using test::viewDepth;
+using test::writeBlenderFrame;
+using test::writeForeignExr;
 
 std::string blenderMapPath() {
     return std::string(GLINT_SOURCE_DIR) + "/harness/maps/blender.toml";
-}
-
-struct ExrChannel {
-    std::string name;
-    std::vector<float> samples;
-    bool half = false;
-};
-
-// A plain single-part file with arbitrary channel names, as other tools write them.
-void writeForeignExr(const fs::path& file, std::vector<ExrChannel> channels) {
-    Imf::Header header(static_cast<int>(kWidth), static_cast<int>(kHeight));
-    header.compression() = Imf::ZIP_COMPRESSION;
-    Imf::FrameBuffer buffer;
-    std::vector<std::vector<Imath::half>> halves;
-    halves.reserve(channels.size());
-    for (ExrChannel& c : channels) {
-        header.channels().insert(c.name, Imf::Channel(c.half ? Imf::HALF : Imf::FLOAT));
-        if (c.half) {
-            halves.emplace_back(c.samples.begin(), c.samples.end());
-            buffer.insert(c.name, Imf::Slice(Imf::HALF, reinterpret_cast<char*>(halves.back().data()),
-                                             sizeof(Imath::half), sizeof(Imath::half) * kWidth));
-        } else {
-            buffer.insert(c.name, Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(c.samples.data()),
-                                             sizeof(float), sizeof(float) * kWidth));
-        }
-    }
-    Imf::OutputFile out(file.c_str(), header);
-    out.setFrameBuffer(buffer);
-    out.writePixels(static_cast<int>(kHeight));
 }
 
 void writeText(const fs::path& file, const std::string& text) {
@@ -75,45 +56,12 @@ std::string readText(const fs::path& file) {
 }
 
 nlohmann::json rows(const Mat4& m) {
-    nlohmann::json out = nlohmann::json::array();
-    for (std::size_t r = 0; r < 4; ++r)
-        out.push_back({m.m[r * 4], m.m[r * 4 + 1], m.m[r * 4 + 2], m.m[r * 4 + 3]});
-    return out;
+    return test::jsonRows(m);
 }
 
 const std::vector<float>& samples(const Frame& f, const char* layer) {
-    const Layer* l = findLayer(f, layer);
-    REQUIRE(l != nullptr);
-    return l->pixels;
-}
-
-bool isSky(const Frame& sample, std::size_t i) {
-    return samples(sample, "depth")[i] >= 1.0f;
-}
-
-// Blender's world is Z-up: Blender (x, y, z) = glint (x, -z, y).
-std::array<double, 3> toBlender(double x, double y, double z) {
-    return {x, -z, y};
-}
-
-// The view matrix over Blender's world axes: V_b · p_b = V · p for p = (p_b.x, p_b.z, -p_b.y).
-Mat4 blenderView(const Mat4& v) {
-    Mat4 b = v;
-    for (std::size_t r = 0; r < 4; ++r) {
-        b.m[r * 4 + 1] = -v.m[r * 4 + 2];
-        b.m[r * 4 + 2] = v.m[r * 4 + 1];
-    }
-    return b;
-}
-
-// The sample's projection as OpenGL writes it (and Blender's calc_matrix_camera returns it):
-// depth row mapping [-near, -far] to NDC z in [-1, 1].
-Mat4 openGlProjection(const Camera& c) {
-    Mat4 p = c.projection;
-    const double n = c.nearZ, f = c.farZ;
-    p.m[10] = -(f + n) / (f - n);
-    p.m[11] = -2.0 * f * n / (f - n);
-    return p;
+    REQUIRE(findLayer(f, layer) != nullptr);
+    return test::layerSamples(f, layer);
 }
 
 // The glint projection with reversed depth (docs/conventions.md §2): d = n (f - z) / (z (f - n)).
@@ -125,73 +73,9 @@ Mat4 reversedProjection(const Camera& c) {
     return p;
 }
 
-// View depth of a standard device depth, docs/conventions.md §2.
-double viewDepth(double d, double n, double f) {
-    return n * f / (f - d * (f - n));
-}
-
-// Writes sample frame `index` as Cycles would write it, as `name` in `dir`.
-void writeBlenderFrame(const fs::path& dir, const std::string& name, std::uint32_t index,
-                       bool withRoughness = true) {
-    const Frame s = makeSampleFrame(kWidth, kHeight, index);
-    const std::vector<float>& color = samples(s, "color");
-    const std::vector<float>& depth = samples(s, "depth");
-    const std::vector<float>& normal = samples(s, "normal");
-    const std::vector<float>& material = samples(s, "material");
-    const std::vector<float>& motion = samples(s, "motion");
-    std::vector<ExrChannel> ch;
-    for (const char* c : {"R", "G", "B", "A"}) ch.push_back({std::string("ViewLayer.Combined.") + c, {}});
-    for (const char* c : {"X", "Y", "Z"}) ch.push_back({std::string("ViewLayer.Normal.") + c, {}});
-    for (const char* c : {"X", "Y", "Z", "W"}) ch.push_back({std::string("ViewLayer.Vector.") + c, {}});
-    ch.push_back({"ViewLayer.Depth.Z", {}});
-    for (std::size_t i = 0; i < kPixels; ++i) {
-        const bool sky = isSky(s, i);
-        for (std::size_t c = 0; c < 3; ++c) ch[c].samples.push_back(color[i * 3 + c]);
-        ch[3].samples.push_back(1.0f);
-        // Cycles writes zero normals and zero motion where nothing was hit, and depth 1e10.
-        const std::array<double, 3> n = sky ? std::array<double, 3>{0.0, 0.0, 0.0}
-                                            : toBlender(normal[i * 3], normal[i * 3 + 1], normal[i * 3 + 2]);
-        for (std::size_t c = 0; c < 3; ++c) ch[4 + c].samples.push_back(static_cast<float>(n[c]));
-        // Vector.xy: pixels towards the previous frame, +y up; .zw (towards the next frame)
-        // must be ignored, so it holds junk.
-        ch[7].samples.push_back(sky ? 0.0f : motion[i * 2] * static_cast<float>(kWidth));
-        ch[8].samples.push_back(sky ? 0.0f : -motion[i * 2 + 1] * static_cast<float>(kHeight));
-        ch[9].samples.push_back(123.0f);
-        ch[10].samples.push_back(-45.0f);
-        ch[11].samples.push_back(
-            sky ? 1e10f : static_cast<float>(viewDepth(depth[i], s.camera.nearZ, s.camera.farZ)));
-    }
-    if (withRoughness) {
-        ch.push_back({"ViewLayer.roughness.X", {}, true});
-        for (std::size_t i = 0; i < kPixels; ++i) ch.back().samples.push_back(material[i * 2 + 1]);
-    }
-    writeForeignExr(dir / name, std::move(ch));
-}
-
-// camera.json for Blender frames 0001.exr (sample frame 0, field of view) and 0002.exr
-// (sample frame 1, OpenGL projection matrix), as the export script in docs/replay.md writes.
-nlohmann::json blenderCameras() {
-    const Camera c0 = sampleCamera(kWidth, kHeight, 0);
-    const Camera c1 = sampleCamera(kWidth, kHeight, 1);
-    nlohmann::json frames = nlohmann::json::array();
-    frames.push_back({{"file", "0001.exr"},
-                      {"view", rows(blenderView(c0.view))},
-                      {"fov_y_degrees", 50.0},
-                      {"near", c0.nearZ},
-                      {"far", c0.farZ}});
-    frames.push_back({{"file", "0002.exr"},
-                      {"view", rows(blenderView(c1.view))},
-                      {"projection_gl", rows(openGlProjection(c1))},
-                      {"near", c1.nearZ},
-                      {"far", c1.farZ}});
-    return {{"format", "glint-camera"}, {"version", 1}, {"frames", frames}};
-}
-
 fs::path writeBlenderCapture(const std::string& testName) {
     const fs::path dir = test::freshTestDir(testName);
-    writeBlenderFrame(dir, "0001.exr", 0);
-    writeBlenderFrame(dir, "0002.exr", 1);
-    writeText(dir / "camera.json", blenderCameras().dump(1));
+    test::writeBlenderCapture(dir);
     return dir;
 }
 
@@ -482,7 +366,7 @@ TEST_CASE("channel map errors are one line naming the map, the line and the key"
 TEST_CASE("a channel the map names but the file lacks is a one-line error naming both",
           "[capture][channel_map]") {
     const fs::path dir = writeBlenderCapture("channel_map_missing_channel");
-    writeBlenderFrame(dir, "0002.exr", 1, false); // no roughness AOV
+    writeBlenderFrame(dir, "0002.exr", 1, {.roughness = false}); // no roughness AOV
     const ChannelMap map = loadChannelMap(blenderMapPath());
     const std::string message = errorOf([&] { readMappedFrame((dir / "0002.exr").string(), map, 1); });
     CHECK(test::isOneLine(message));

@@ -1,9 +1,14 @@
-# Script mode: writes the sample sequence with glint_make_sample, then malformed files.
+# Script mode: writes the sample sequence with glint_make_sample, Blender-style renders with
+# glint_make_blender_sample, then malformed files.
 file(REMOVE_RECURSE "${DIR}")
 file(MAKE_DIRECTORY "${DIR}")
 execute_process(COMMAND "${MAKE_SAMPLE}" "${DIR}" RESULT_VARIABLE status)
 if(NOT status EQUAL 0)
   message(FATAL_ERROR "glint_make_sample failed: ${status}")
+endif()
+execute_process(COMMAND "${MAKE_BLENDER}" "${DIR}" RESULT_VARIABLE status)
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "glint_make_blender_sample failed: ${status}")
 endif()
 # A truncated copy: the header survives, most of the pixel data does not.
 file(SIZE "${DIR}/sample/frame_0000.exr" size)

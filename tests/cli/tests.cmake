@@ -10,9 +10,16 @@ function(glint_cli_test)
   set_tests_properties("cli: ${ARG_NAME}" PROPERTIES LABELS "${ARG_LABELS}" FIXTURES_REQUIRED cli_samples)
 endfunction()
 
-# Fixture: the bundled sample sequence plus malformed files made from it.
+# Blender-style renders of the sample frames (tests/capture/blender_capture.h).
+add_executable(glint_make_blender_sample cli/make_blender_sample.cpp capture/blender_capture.cpp)
+target_link_libraries(glint_make_blender_sample PRIVATE glint_capture)
+target_include_directories(glint_make_blender_sample PRIVATE "${CMAKE_CURRENT_SOURCE_DIR}")
+glint_target_defaults(glint_make_blender_sample)
+
+# Fixture: the bundled sample sequence plus malformed files made from it, and Blender renders.
 add_test(NAME "cli: make samples"
-  COMMAND "${CMAKE_COMMAND}" "-DMAKE_SAMPLE=$<TARGET_FILE:glint_make_sample>" "-DDIR=${GLINT_CLI_SAMPLE_DIR}"
+  COMMAND "${CMAKE_COMMAND}" "-DMAKE_SAMPLE=$<TARGET_FILE:glint_make_sample>"
+          "-DMAKE_BLENDER=$<TARGET_FILE:glint_make_blender_sample>" "-DDIR=${GLINT_CLI_SAMPLE_DIR}"
           -P "${CMAKE_CURRENT_SOURCE_DIR}/cli/make_cli_samples.cmake")
 set_tests_properties("cli: make samples" PROPERTIES FIXTURES_SETUP cli_samples LABELS "unit")
 
