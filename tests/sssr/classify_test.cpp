@@ -2,6 +2,7 @@
 // set, the GPU's order is arbitrary), the tile list, the counters and the indirect arguments,
 // the extracted roughness, and a frame with nothing to trace.
 #include "reference/sssr_reference.h"
+#include "sssr/sssr_classify_view.h"
 #include "sssr/sssr_test_scene.h"
 #include "support/gpu_test_context.h"
 
@@ -14,54 +15,6 @@
 using namespace glint;
 
 namespace {
-
-struct Rng {
-    std::uint32_t state;
-    float next() {
-        state = state * 1664525u + 1013904223u;
-        return static_cast<float>(state >> 8) / 16777216.0f;
-    }
-};
-
-// Random G-buffer: sky, NaN depth, zero and NaN normals, roughness (perceptual, channel 1)
-// spread over both sides of the threshold with exact mirrors and NaN.
-test::SssrTestView randomView(std::uint32_t width, std::uint32_t height, bool reversed, std::uint32_t seed) {
-    test::SssrTestView view = test::makeSssrTestView(width, height, reversed);
-    view.desc.materialChannel = 1;
-    view.desc.roughnessIsPerceptual = true;
-    Rng rng{seed};
-    const float nan = std::numeric_limits<float>::quiet_NaN();
-    for (std::size_t i = 0; i < std::size_t{width} * height; ++i) {
-        const float kind = rng.next();
-        test::setViewDepth(view, static_cast<std::uint32_t>(i % width), static_cast<std::uint32_t>(i / width),
-                           2.0 + 10.0 * static_cast<double>(rng.next()));
-        if (kind < 0.05f) view.inputs.depth[i] = reversed ? 0.0f : 1.0f;
-        if (kind >= 0.05f && kind < 0.07f) view.inputs.depth[i] = nan;
-        const float r = rng.next();
-        view.inputs.material[4 * i + 1] = r < 0.1f ? 0.0f : r < 0.12f ? nan : 0.6f * rng.next();
-        if (rng.next() < 0.03f) view.inputs.normals[4 * i + 2] = rng.next() < 0.5f ? 0.0f : nan;
-    }
-    return view;
-}
-
-reference::SssrClassifyInputs referenceInputs(const test::SssrTestView& view) {
-    reference::SssrClassifyInputs in;
-    in.width = view.desc.size.width;
-    in.height = view.desc.size.height;
-    in.depth = view.inputs.depth;
-    in.reversedDepth = view.desc.depth == DepthConvention::Reversed;
-    in.roughnessThreshold = view.desc.roughnessThreshold;
-    in.mirrorThreshold = view.desc.mirrorThreshold;
-    in.samplesPerQuad = view.desc.samplesPerQuad;
-    const std::size_t count = std::size_t{in.width} * in.height;
-    for (std::size_t i = 0; i < count; ++i) {
-        const float r = view.inputs.material[4 * i + view.desc.materialChannel];
-        // The documented conversion: alpha = r^2 for a perceptual input, clamped to [0, 1].
-        in.alpha.push_back(std::isfinite(r) ? std::clamp(r, 0.0f, 1.0f) * std::clamp(r, 0.0f, 1.0f) : 1.0f);
-        for (std::size_t c = 0; c < 3; ++c) in.normals.push_back(view.inputs.normals[4 * i + c]);
-    }
-    return in;
-}
 
 std::vector<std::uint32_t> sorted(std::vector<std::uint32_t> values) {
     std::sort(values.begin(), values.end());
@@ -78,13 +31,14 @@ TEST_CASE("classification matches the CPU classification for 1, 2 and 4 samples 
                 INFO("reversed " << reversed << ", samples per quad " << samples << ", " << size.first << "x"
                                  << size.second);
                 test::SssrTestView view =
-                    randomView(size.first, size.second, reversed, samples * 31u + size.first);
+                    test::randomClassifyView(size.first, size.second, reversed, samples * 31u + size.first);
                 view.desc.samplesPerQuad = samples;
                 gpu::SssrRunner runner(test::testContext(), view.desc);
                 runner.upload(view.inputs);
                 runner.run(view.desc);
                 const gpu::SssrFrameOutputs out = runner.readback();
-                const reference::SssrClassification expected = reference::sssrClassify(referenceInputs(view));
+                const reference::SssrClassification expected =
+                    reference::sssrClassify(test::classifyReferenceInputs(view));
                 REQUIRE(expected.rayCount > 0);
                 CHECK(out.counters[0] == 0); // reset by the arguments pass
                 CHECK(out.counters[2] == 0);
@@ -96,7 +50,7 @@ TEST_CASE("classification matches the CPU classification for 1, 2 and 4 samples 
                 CHECK(out.arguments[0] * out.arguments[1] >= groups);
                 CHECK(out.arguments[0] == std::min(groups, 1024u));
                 CHECK(out.arguments[3] == expected.tileCount);
-                const auto inputs = referenceInputs(view);
+                const auto inputs = test::classifyReferenceInputs(view);
                 for (std::size_t i = 0; i < inputs.alpha.size(); ++i) {
                     INFO("pixel " << i);
                     // Background pixels read no material and store alpha 1 (docs/sssr.md).
@@ -114,12 +68,12 @@ TEST_CASE("classification matches the CPU classification on odd tile grids and a
     // grouping of several tiles a group, where such grids leave blocks outside the image.)
     for (const auto& size : {std::pair{200u, 72u}, std::pair{8u, 8u}}) {
         INFO(size.first << "x" << size.second);
-        test::SssrTestView view = randomView(size.first, size.second, false, 5u + size.first);
+        test::SssrTestView view = test::randomClassifyView(size.first, size.second, false, 5u + size.first);
         gpu::SssrRunner runner(test::testContext(), view.desc);
         runner.upload(view.inputs);
         runner.run(view.desc);
         const gpu::SssrFrameOutputs out = runner.readback();
-        const auto inputs = referenceInputs(view);
+        const auto inputs = test::classifyReferenceInputs(view);
         const reference::SssrClassification expected = reference::sssrClassify(inputs);
         REQUIRE(expected.tileCount > 0);
         CHECK(out.counters[1] == expected.rayCount);
@@ -137,19 +91,20 @@ TEST_CASE("classification matches the CPU classification on odd tile grids and a
 
 TEST_CASE("variance-guided tracing adds rays where the reprojected variance history is high",
           "[sssr][classify]") {
-    test::SssrTestView view = randomView(40, 24, false, 7);
+    test::SssrTestView view = test::randomClassifyView(40, 24, false, 7);
     view.desc.varianceGuided = true;
     view.desc.varianceThreshold = -1.0f; // the (zero) history is above it everywhere
     gpu::SssrRunner runner(test::testContext(), view.desc);
     runner.upload(view.inputs);
     runner.run(view.desc);
     const gpu::SssrFrameOutputs out = runner.readback();
-    reference::SssrClassifyInputs in = referenceInputs(view);
+    reference::SssrClassifyInputs in = test::classifyReferenceInputs(view);
     in.varianceGuided = true;
     in.varianceThreshold = -1.0f;
     in.variance.assign(in.alpha.size(), 0.0f);
     const reference::SssrClassification expected = reference::sssrClassify(in);
-    const reference::SssrClassification unguided = reference::sssrClassify(referenceInputs(view));
+    const reference::SssrClassification unguided =
+        reference::sssrClassify(test::classifyReferenceInputs(view));
     CHECK(expected.rayCount > unguided.rayCount);
     CHECK(sorted(out.rayList) == expected.rays);
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();

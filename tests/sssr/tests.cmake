@@ -13,6 +13,7 @@ glint_add_test_suite(NAME sssr LABELS gpu
     sssr/composite_test.cpp
     sssr/previous_frame_test.cpp
     sssr/sssr_test_scene.cpp
+    sssr/sssr_classify_view.cpp
     reference/sssr_reference.cpp
   LIBS glint_test_runners glint_internal glint_gpu_test_support glint_gpu)
 

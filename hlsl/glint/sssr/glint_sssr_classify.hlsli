@@ -100,49 +100,61 @@ bool GLINT_SSSR_HighVariance(GLINT_SssrConstants c, int2 pixel, float2 uv)
     return !(GLINT_SSSR_SampleVarianceHistory(previousUv) <= c.varianceThreshold);
 }
 
-void GLINT_SSSR_Classify(GLINT_SssrConstants c, uint2 groupId, uint2 local)
+// What classification decided for one pixel of the tile.
+struct GLINT_SSSR_PixelDecision
+{
+    int2 pixel;
+    float2 uv;
+    bool inImage;
+    bool reflective; // not background, usable normal
+    bool glossy;     // reflective and below the roughness threshold: the denoiser's tile list
+    bool traces;     // owns a ray (its quad's copies are in copyFlags)
+    uint copyFlags;  // GLINT_SSSR_RAY_COPY_*
+    float alpha;
+    float depth;
+    float3 normal;
+};
+
+// The per-pixel decision: which pixels trace, which copy a quad neighbour's ray, and the
+// GGX alpha (stored). Every thread of the 8x8 group calls it: it synchronizes the group once.
+GLINT_SSSR_PixelDecision GLINT_SSSR_ClassifyPixel(GLINT_SssrConstants c, uint2 groupId, uint2 local)
 {
     uint localIndex = local.y * GLINT_SSSR_TILE + local.x;
-    if (localIndex == 0)
-    {
-        g_glint_sssr_ray_count = 0;
-        g_glint_sssr_any_glossy = 0;
-    }
+    GLINT_SSSR_PixelDecision d;
     uint2 pixel = groupId * GLINT_SSSR_TILE + local;
-    bool inImage = all(pixel < c.inputSize);
-    int2 ipixel = int2(pixel);
-    float2 uv = (float2(pixel) + 0.5) * c.inverseInputSize;
-
-    bool reflective = false;
-    bool glossy = false;
+    d.pixel = int2(pixel);
+    d.inImage = all(pixel < c.inputSize);
+    d.uv = (float2(pixel) + 0.5) * c.inverseInputSize;
+    d.reflective = false;
+    d.glossy = false;
+    d.alpha = 1.0;
+    d.normal = float3(0.0, 0.0, 0.0);
+    d.depth = 0.0;
     bool mirror = false;
-    float alpha = 1.0;
-    float3 normal = float3(0.0, 0.0, 0.0);
-    float depth = 0.0;
-    if (inImage)
+    if (d.inImage)
     {
-        depth = GLINT_SSSR_LoadDepth(ipixel, 0);
+        d.depth = GLINT_SSSR_LoadDepth(d.pixel, 0);
         // Background pixels read nothing else (sky-heavy frames cost little) and store alpha 1.
-        if (!GLINT_SSSR_IsBackground(depth, GLINT_SSSR_Reversed(c)))
+        if (!GLINT_SSSR_IsBackground(d.depth, GLINT_SSSR_Reversed(c)))
         {
-            normal = GLINT_SSSR_UnpackNormal(c, GLINT_SSSR_LoadNormal(ipixel));
-            float4 material = GLINT_SSSR_LoadMaterial(ipixel);
+            d.normal = GLINT_SSSR_UnpackNormal(c, GLINT_SSSR_LoadNormal(d.pixel));
+            float4 material = GLINT_SSSR_LoadMaterial(d.pixel);
             uint channel = min(c.materialChannel, 3u);
             float raw = channel == 0 ? material.x : channel == 1 ? material.y : channel == 2 ? material.z : material.w;
-            alpha = GLINT_SSSR_AlphaFromMaterial(c, raw);
-            reflective = dot(normal, normal) > 0.0;
+            d.alpha = GLINT_SSSR_AlphaFromMaterial(c, raw);
+            d.reflective = dot(d.normal, d.normal) > 0.0;
         }
-        GLINT_SSSR_StoreRoughness(ipixel, alpha);
-        glossy = reflective && alpha < c.roughnessThreshold;
-        mirror = glossy && alpha < c.mirrorThreshold;
+        GLINT_SSSR_StoreRoughness(d.pixel, d.alpha);
+        d.glossy = d.reflective && d.alpha < c.roughnessThreshold;
+        mirror = d.glossy && d.alpha < c.mirrorThreshold;
     }
     bool halfResolution = (c.flags & GLINT_SSSR_FLAG_HALF_RESOLUTION) != 0;
-    bool needsDenoiser = glossy && !mirror;
+    bool needsDenoiser = d.glossy && !mirror;
     bool base = GLINT_SSSR_IsBasePixel(c, pixel);
     // Mirrors always trace, except in half-resolution mode where every pixel shares its quad's ray.
-    bool traces = glossy && (base || (mirror && !halfResolution));
+    bool traces = d.glossy && (base || (mirror && !halfResolution));
     bool copies = (needsDenoiser || (mirror && halfResolution)) && !traces;
-    if (copies && (c.flags & GLINT_SSSR_FLAG_VARIANCE_GUIDED) != 0 && GLINT_SSSR_HighVariance(c, ipixel, uv))
+    if (copies && (c.flags & GLINT_SSSR_FLAG_VARIANCE_GUIDED) != 0 && GLINT_SSSR_HighVariance(c, d.pixel, d.uv))
     {
         traces = true;
         copies = false;
@@ -159,6 +171,44 @@ void GLINT_SSSR_Classify(GLINT_SssrConstants c, uint2 groupId, uint2 local)
         copyFlags |= GLINT_SSSR_ChoseMe(local, uint2(0, 1), 2u) ? GLINT_SSSR_RAY_COPY_V : 0u;
         copyFlags |= GLINT_SSSR_ChoseMe(local, uint2(1, 1), 3u) ? GLINT_SSSR_RAY_COPY_D : 0u;
     }
+    d.traces = traces;
+    d.copyFlags = copyFlags;
+    return d;
+}
+
+// Initial radiance: the environment for reflective pixels that get no ray, 0 elsewhere;
+// traced pixels and their copies are overwritten by the intersection.
+void GLINT_SSSR_StoreInitialRadiance(GLINT_SssrConstants c, GLINT_SSSR_PixelDecision d)
+{
+    if (!d.inImage)
+        return;
+    float3 radiance = float3(0.0, 0.0, 0.0);
+    if (d.reflective && !d.glossy)
+    {
+        float3 viewPosition = GLINT_SSSR_ViewPosition(c, d.uv, d.depth);
+        float3 view = -normalize(GLINT_SSSR_MulDirection(c.worldFromView, viewPosition));
+        float3 n = GLINT_GGX_BendNormalTowardView(d.normal, view);
+        float NdotV = dot(n, view);
+        float3 mirrorDirection = 2.0 * NdotV * n - view;
+        // The lobe's LOD at its centre (H = N), the same estimate the traced misses use.
+        float lod = GLINT_SSSR_EnvironmentLod(c, GLINT_GGX_ReflectionPdf(NdotV, 1.0, d.alpha));
+        radiance = GLINT_SSSR_SampleEnvironment(mirrorDirection, lod) * c.iblFactor;
+    }
+    GLINT_SSSR_StoreRadiance(d.pixel, float4(GLINT_SSSR_SanitizeRadiance(radiance), GLINT_SSSR_MISS_DISTANCE));
+    GLINT_SSSR_StoreConfidence(d.pixel, 0.0);
+}
+
+void GLINT_SSSR_Classify(GLINT_SssrConstants c, uint2 groupId, uint2 local)
+{
+    uint localIndex = local.y * GLINT_SSSR_TILE + local.x;
+    if (localIndex == 0)
+    {
+        g_glint_sssr_ray_count = 0;
+        g_glint_sssr_any_glossy = 0;
+    }
+    // Its barrier also orders the initialization above before the atomics below.
+    GLINT_SSSR_PixelDecision d = GLINT_SSSR_ClassifyPixel(c, groupId, local);
+    bool traces = d.traces;
 
     // Compaction: one global atomic per group, entries in arbitrary order within the group.
     // Within a wave the slots come from a prefix count and one groupshared atomic per wave
@@ -169,7 +219,7 @@ void GLINT_SSSR_Classify(GLINT_SssrConstants c, uint2 groupId, uint2 local)
     if (WaveIsFirstLane() && waveRays > 0)
         InterlockedAdd(g_glint_sssr_ray_count, waveRays, waveBase);
     uint slot = WaveReadLaneFirst(waveBase) + WavePrefixCountBits(traces);
-    bool waveGlossy = WaveActiveAnyTrue(glossy); // outside the condition: wave ops need every lane
+    bool waveGlossy = WaveActiveAnyTrue(d.glossy); // outside the condition: wave ops need every lane
     if (WaveIsFirstLane() && waveGlossy)
         InterlockedOr(g_glint_sssr_any_glossy, 1u);
     GroupMemoryBarrierWithGroupSync();
@@ -182,26 +232,9 @@ void GLINT_SSSR_Classify(GLINT_SssrConstants c, uint2 groupId, uint2 local)
     }
     GroupMemoryBarrierWithGroupSync();
     if (traces)
-        GLINT_SSSR_StoreRay(g_glint_sssr_ray_base + slot, GLINT_SSSR_PackRay(pixel, copyFlags));
+        GLINT_SSSR_StoreRay(g_glint_sssr_ray_base + slot, GLINT_SSSR_PackRay(uint2(d.pixel), d.copyFlags));
 
-    if (!inImage)
-        return;
-    // Initial radiance: the environment for reflective pixels that get no ray, 0 elsewhere;
-    // traced pixels and their copies are overwritten by the intersection.
-    float3 radiance = float3(0.0, 0.0, 0.0);
-    if (reflective && !glossy)
-    {
-        float3 viewPosition = GLINT_SSSR_ViewPosition(c, uv, depth);
-        float3 view = -normalize(GLINT_SSSR_MulDirection(c.worldFromView, viewPosition));
-        float3 n = GLINT_GGX_BendNormalTowardView(normal, view);
-        float NdotV = dot(n, view);
-        float3 mirrorDirection = 2.0 * NdotV * n - view;
-        // The lobe's LOD at its centre (H = N), the same estimate the traced misses use.
-        float lod = GLINT_SSSR_EnvironmentLod(c, GLINT_GGX_ReflectionPdf(NdotV, 1.0, alpha));
-        radiance = GLINT_SSSR_SampleEnvironment(mirrorDirection, lod) * c.iblFactor;
-    }
-    GLINT_SSSR_StoreRadiance(ipixel, float4(GLINT_SSSR_SanitizeRadiance(radiance), GLINT_SSSR_MISS_DISTANCE));
-    GLINT_SSSR_StoreConfidence(ipixel, 0.0);
+    GLINT_SSSR_StoreInitialRadiance(c, d);
 }
 
 #endif // GLINT_SSSR_CLASSIFY_HLSLI

@@ -4,22 +4,14 @@
 #include "core/camera.h"
 #include "core/dispatch.h"
 #include "core/plan_checks.h"
-#include "glint/sssr/glint_sssr_constants.h"
+#include "core/sssr_constants.h"
 
 #include <cmath>
 
 namespace glint {
-namespace {
+namespace core {
 
-Result invalid(std::string* error, const std::string& message) {
-    return core::invalidArgument(error, "sssr", message);
-}
-
-bool finiteIn(float value, float low, float high) {
-    return std::isfinite(value) && value >= low && value <= high;
-}
-
-std::string checkDesc(const SssrDesc& desc) {
+std::string checkSssrDesc(const SssrDesc& desc) {
     if (!core::validExtent(desc.size) || desc.size.height > 16383)
         return "size must be 1..16384 wide and 1..16383 high (the ray list packs y in 14 bits)";
     if (!(std::isfinite(desc.nearPlane) && desc.nearPlane > 0.0f))
@@ -34,6 +26,9 @@ std::string checkDesc(const SssrDesc& desc) {
     if (desc.materialChannel > 3) return "materialChannel must be 0..3";
     if (!std::isfinite(desc.motionScaleX) || !std::isfinite(desc.motionScaleY))
         return "motion scale must be finite";
+    const auto finiteIn = [](float value, float low, float high) {
+        return std::isfinite(value) && value >= low && value <= high;
+    };
     if (!finiteIn(desc.roughnessThreshold, 0.0f, 1.0f)) return "roughnessThreshold must be 0..1 (alpha)";
     if (!finiteIn(desc.roughnessFadeBand, 0.0f, 1.0f)) return "roughnessFadeBand must be 0..1 (alpha)";
     if (!finiteIn(desc.mirrorThreshold, 0.0f, 1.0f)) return "mirrorThreshold must be 0..1 (alpha)";
@@ -55,8 +50,8 @@ std::string checkDesc(const SssrDesc& desc) {
     return {};
 }
 
-shaders::GLINT_SssrConstants makeConstants(const SssrDesc& desc, const core::Matrix4& viewFromClip,
-                                           const core::Matrix4& worldFromView) {
+shaders::GLINT_SssrConstants makeSssrConstants(const SssrDesc& desc, const core::Matrix4& viewFromClip,
+                                               const core::Matrix4& worldFromView) {
     shaders::GLINT_SssrConstants c{};
     c.inputSize = {desc.size.width, desc.size.height};
     c.inverseInputSize = {1.0f / static_cast<float>(desc.size.width),
@@ -96,6 +91,13 @@ shaders::GLINT_SssrConstants makeConstants(const SssrDesc& desc, const core::Mat
     c.farPlane = desc.farPlane;
     c.motionScale = {desc.motionScaleX, desc.motionScaleY};
     return c;
+}
+
+} // namespace core
+namespace {
+
+Result invalid(std::string* error, const std::string& message) {
+    return core::invalidArgument(error, "sssr", message);
 }
 
 Pass sssrPass(const char* name, const char* pipeline, std::uint32_t groupX, std::uint32_t groupY,
@@ -184,7 +186,8 @@ Pass compositePass(const SssrDesc& desc, const std::vector<std::byte>& constants
 } // namespace
 
 Result planSssr(const SssrDesc& desc, EffectPlan& plan, std::string* error) {
-    if (const std::string problem = checkDesc(desc); !problem.empty()) return invalid(error, problem);
+    if (const std::string problem = core::checkSssrDesc(desc); !problem.empty())
+        return invalid(error, problem);
     core::Matrix4 viewFromClip{};
     core::Matrix4 worldFromView{};
     if (!core::invert(desc.projection, viewFromClip)) return invalid(error, "projection is singular");
@@ -205,7 +208,7 @@ Result planSssr(const SssrDesc& desc, EffectPlan& plan, std::string* error) {
     plan.size = desc.size;
 
     const std::vector<std::byte> constants =
-        core::packConstants(makeConstants(desc, viewFromClip, worldFromView));
+        core::packConstants(core::makeSssrConstants(desc, viewFromClip, worldFromView));
     const std::uint32_t w = desc.size.width;
     const std::uint32_t h = desc.size.height;
     const std::uint64_t tiles =

@@ -1,0 +1,48 @@
+// glint public API: hybrid reflections (docs/hybrid.md), screen space first and a ray-traced
+// fallback chosen per 8x8 tile from last frame's hit/miss feedback.
+//
+// In progress: the plan holds the tile classification so far (feedback counters, tile
+// classes, the screen-space and ray-traced ray lists, the denoiser's tile list). The
+// screen-space intersection with feedback, the ray-traced pass, the denoiser and the
+// composite follow; the effect is not registered until they do.
+#pragma once
+
+#include "glint/glint_pass.h"
+#include "glint/glint_sssr.h"
+
+#include <string>
+
+namespace glint {
+
+struct HybridDesc {
+    // The screen-space half: camera, G-buffer decoding, SSSR classification and traversal.
+    SssrDesc sssr;
+
+    bool screenSpace = true;           // off: every ray is ray traced (the RT-only path)
+    bool rayTracing = true;            // off: every ray stays in screen space (the SSSR path)
+    bool feedback = true;              // off: every tile is FULL_SW (screen space first everywhere)
+    bool alternateCheckerboard = true; // HALF_SW's checkerboard flips every frame
+    bool mirrorsRayTraced = false;     // per-material override example: mirrors always ray traced
+
+    float spawnRate = 0.02f;           // s: chance a tile without statistics tries screen space
+    float missWeight = 0.5f;           // w: a miss against a hit in u <= s + h - w m
+    float rayTracingThreshold = 0.22f; // alpha: at or above, rays stay in screen space
+    float confidenceThreshold = 0.9f;  // screen-space hits below it are ray traced instead
+    float maxRayDistance = 100.0f;     // world units, the ray tracer's t_max
+    float rayOffset = 1e-3f;           // world units along the normal, the ray tracer's origin offset
+};
+
+// Resources (besides SSSR's inputs, glint_sssr.h):
+//   "hybrid_feedback0", "hybrid_feedback1"  R32_UINT ceil(W/8) x ceil(H/8), ping-pong by frame
+//                                          parity: frame f writes feedback[f & 1], reads the other
+//   "hybrid_tile_class"   R32_UINT ceil(W/8) x ceil(H/8): GLINT_HYBRID_TILE_* of this frame
+//   "hybrid_sw_ray_list"  ceil(W/8) ceil(H/8) 64 entries, padded per tile (0xFFFFFFFF)
+//   "hybrid_hw_ray_list"  W H entries
+//   "sssr_tile_list", "sssr_roughness", "sssr_radiance", "sssr_confidence" as in glint_sssr.h
+//   "hybrid_counters"     8 words (glint_hybrid_constants.h)
+Result planHybrid(const HybridDesc& desc, EffectPlan& plan, std::string* error);
+
+// The names of frame `frameIndex`'s feedback images: {written, read as history}.
+std::pair<std::string, std::string> hybridFeedbackImages(std::uint32_t frameIndex);
+
+} // namespace glint

@@ -1,0 +1,140 @@
+// Hybrid reflections as data: validation, constants, passes, resources (docs/hybrid.md).
+#include "glint/glint_hybrid.h"
+
+#include "core/dispatch.h"
+#include "core/plan_checks.h"
+#include "core/sssr_constants.h"
+#include "glint/hybrid/glint_hybrid_constants.h"
+
+#include <cmath>
+
+namespace glint {
+namespace {
+
+Result invalid(std::string* error, const std::string& message) {
+    return core::invalidArgument(error, "hybrid", message);
+}
+
+std::string checkHybrid(const HybridDesc& desc) {
+    const auto finiteIn = [](float value, float low, float high) {
+        return std::isfinite(value) && value >= low && value <= high;
+    };
+    if (!desc.screenSpace && !desc.rayTracing) return "screenSpace and rayTracing cannot both be off";
+    if (!finiteIn(desc.spawnRate, 0.0f, 1.0f)) return "spawnRate must be 0..1";
+    if (!finiteIn(desc.missWeight, 0.0f, 64.0f)) return "missWeight must be 0..64";
+    if (!finiteIn(desc.rayTracingThreshold, 0.0f, 1.0f)) return "rayTracingThreshold must be 0..1 (alpha)";
+    if (!finiteIn(desc.confidenceThreshold, 0.0f, 1.0f)) return "confidenceThreshold must be 0..1";
+    if (!(std::isfinite(desc.maxRayDistance) && desc.maxRayDistance > 0.0f))
+        return "maxRayDistance must be positive and finite";
+    if (!finiteIn(desc.rayOffset, 0.0f, 1e3f)) return "rayOffset must be 0..1000";
+    return {};
+}
+
+shaders::GLINT_HybridConstants makeConstants(const HybridDesc& desc) {
+    shaders::GLINT_HybridConstants c{};
+    c.tiles = {core::divideRoundUp(desc.sssr.size.width, GLINT_SSSR_TILE),
+               core::divideRoundUp(desc.sssr.size.height, GLINT_SSSR_TILE)};
+    c.flags = (desc.screenSpace ? GLINT_HYBRID_FLAG_SCREEN_SPACE : 0u) |
+              (desc.rayTracing ? GLINT_HYBRID_FLAG_RAY_TRACING : 0u) |
+              (desc.feedback ? GLINT_HYBRID_FLAG_FEEDBACK : 0u) |
+              (desc.alternateCheckerboard ? GLINT_HYBRID_FLAG_ALTERNATE_CHECKER : 0u) |
+              (desc.mirrorsRayTraced ? GLINT_HYBRID_FLAG_MIRRORS_RAY_TRACED : 0u);
+    c.frameIndex = desc.sssr.frameIndex;
+    c.spawnRate = desc.spawnRate;
+    c.missWeight = desc.missWeight;
+    c.rayTracingThreshold = desc.rayTracingThreshold;
+    c.confidenceThreshold = desc.confidenceThreshold;
+    c.maxRayDistance = desc.maxRayDistance;
+    c.rayOffset = desc.rayOffset;
+    return c;
+}
+
+// One cbuffer: the SSSR constants, then the hybrid ones (each a whole number of registers).
+std::vector<std::byte> packConstants(const shaders::GLINT_SssrConstants& sssr,
+                                     const shaders::GLINT_HybridConstants& hybrid) {
+    std::vector<std::byte> bytes = core::packConstants(sssr);
+    const std::vector<std::byte> tail = core::packConstants(hybrid);
+    bytes.insert(bytes.end(), tail.begin(), tail.end());
+    return bytes;
+}
+
+Pass classifyPass(const HybridDesc& desc, const std::vector<std::byte>& constants) {
+    Pass pass;
+    pass.name = "classify";
+    pass.pipeline = desc.sssr.halfPrecisionStorage ? "hybrid_classify.half" : "hybrid_classify";
+    pass.groupSize[0] = GLINT_SSSR_TILE;
+    pass.groupSize[1] = GLINT_SSSR_TILE;
+    pass.constantsBinding = "g_glint_constants";
+    pass.constants = constants;
+    pass.dispatch = core::gridFor(desc.sssr.size.width, desc.sssr.size.height, 1, pass.groupSize);
+    const auto [feedback, history] = hybridFeedbackImages(desc.sssr.frameIndex);
+    pass.uses = {{"g_glint_depth", "depth", Access::Read},
+                 {"g_glint_normals", "normals", Access::Read},
+                 {"g_glint_material", "material", Access::Read},
+                 {"g_glint_motion", "motion", Access::Read},
+                 // The denoiser's variance history joins with the denoiser; until then a zero one.
+                 {"g_glint_variance_history", "sssr_zero_variance", Access::Read},
+                 {"g_glint_environment", "environment", Access::Read},
+                 {"g_glint_roughness", "sssr_roughness", Access::Write},
+                 {"g_glint_radiance", "sssr_radiance", Access::Write},
+                 {"g_glint_confidence", "sssr_confidence", Access::Write},
+                 {"g_glint_counters", "hybrid_counters", Access::ReadWrite},
+                 {"g_glint_sw_ray_list", "hybrid_sw_ray_list", Access::Write},
+                 {"g_glint_hw_ray_list", "hybrid_hw_ray_list", Access::Write},
+                 {"g_glint_tile_list", "sssr_tile_list", Access::Write},
+                 {"g_glint_feedback_history", history, Access::Read},
+                 {"g_glint_feedback", feedback, Access::Write},
+                 {"g_glint_tile_class", "hybrid_tile_class", Access::Write}};
+    return pass;
+}
+
+} // namespace
+
+std::pair<std::string, std::string> hybridFeedbackImages(std::uint32_t frameIndex) {
+    const bool odd = (frameIndex & 1u) != 0;
+    return {odd ? "hybrid_feedback1" : "hybrid_feedback0", odd ? "hybrid_feedback0" : "hybrid_feedback1"};
+}
+
+Result planHybrid(const HybridDesc& desc, EffectPlan& plan, std::string* error) {
+    if (const std::string problem = core::checkSssrDesc(desc.sssr); !problem.empty())
+        return invalid(error, problem);
+    if (const std::string problem = checkHybrid(desc); !problem.empty()) return invalid(error, problem);
+    core::Matrix4 viewFromClip{};
+    core::Matrix4 worldFromView{};
+    if (!core::invert(desc.sssr.projection, viewFromClip)) return invalid(error, "projection is singular");
+    if (!core::invert(desc.sssr.viewFromWorld, worldFromView))
+        return invalid(error, "viewFromWorld is singular");
+
+    plan = EffectPlan{};
+    plan.effect = "hybrid";
+    plan.size = desc.sssr.size;
+    const std::uint32_t w = desc.sssr.size.width;
+    const std::uint32_t h = desc.sssr.size.height;
+    const std::uint32_t tilesX = core::divideRoundUp(w, GLINT_SSSR_TILE);
+    const std::uint32_t tilesY = core::divideRoundUp(h, GLINT_SSSR_TILE);
+    const std::uint64_t tiles = std::uint64_t{tilesX} * tilesY;
+    const bool half = desc.sssr.halfPrecisionStorage;
+    plan.images.push_back({"sssr_roughness", w, h, 1, half ? Format::R16Float : Format::R32Float});
+    plan.images.push_back({"sssr_radiance", w, h, 1, half ? Format::RGBA16Float : Format::RGBA32Float});
+    plan.images.push_back({"sssr_confidence", w, h, 1, half ? Format::R16Float : Format::R32Float});
+    plan.images.push_back({"hybrid_feedback0", tilesX, tilesY, 1, Format::R32Uint});
+    plan.images.push_back({"hybrid_feedback1", tilesX, tilesY, 1, Format::R32Uint});
+    plan.images.push_back({"hybrid_tile_class", tilesX, tilesY, 1, Format::R32Uint});
+    plan.images.push_back({"sssr_zero_variance", 1, 1, 1, Format::R32Float});
+    // Padding to 32 or 64 entries per tile can exceed W H at sizes not divisible by 8
+    // (docs/conventions.md, defect HR4): 64 entries per tile always fit.
+    plan.buffers.push_back({"hybrid_sw_ray_list", tiles * 64u * 4u, false});
+    plan.buffers.push_back({"hybrid_hw_ray_list", std::uint64_t{w} * h * 4u, false});
+    plan.buffers.push_back({"sssr_tile_list", tiles * 4u, false});
+    plan.buffers.push_back({"hybrid_counters", GLINT_HYBRID_COUNTER_WORDS * 4u, false});
+
+    const std::vector<std::byte> constants =
+        packConstants(core::makeSssrConstants(desc.sssr, viewFromClip, worldFromView), makeConstants(desc));
+    Pass classify = classifyPass(desc, constants);
+    // Until the arguments pass exists, the counters are cleared before each frame here.
+    classify.zeroBuffers = {"hybrid_counters"};
+    plan.passes.push_back(std::move(classify));
+    return Result::Ok;
+}
+
+} // namespace glint

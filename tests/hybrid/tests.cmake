@@ -1,0 +1,9 @@
+# Hybrid reflections on the device against the CPU references in tests/reference/hybrid_*.
+glint_add_test_suite(NAME hybrid LABELS gpu
+  SOURCES
+    hybrid/classify_test.cpp
+    sssr/sssr_test_scene.cpp
+    sssr/sssr_classify_view.cpp
+    reference/sssr_reference.cpp
+    reference/hybrid_classify_reference.cpp
+  LIBS glint_test_runners glint_internal glint_gpu_test_support glint_gpu)
