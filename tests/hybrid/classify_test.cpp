@@ -5,18 +5,14 @@
 // denoiser's tile list; at odd sizes, partial tiles and a single tile.
 #include "glint/glint_hybrid.h"
 #include "glint/hybrid/glint_hybrid_constants.h"
+#include "hybrid/hybrid_test_frame.h"
 #include "reference/hybrid_classify_reference.h"
 #include "sssr/sssr_classify_view.h"
 #include "support/gpu_test_context.h"
 
-#include <gpu/gpu_effect_runner.h>
-#include <gpu/gpu_input_images.h>
-#include <gpu/gpu_transfer.h>
-
 #include <catch2/catch.hpp>
 
 #include <algorithm>
-#include <cstring>
 #include <limits>
 #include <map>
 #include <set>
@@ -71,60 +67,6 @@ struct Case {
     float spawnRate = 0.02f, missWeight = 0.5f;
 };
 
-struct GpuClassification {
-    std::vector<std::uint32_t> tileClass, feedback, swList, hwList, tileList, counters;
-};
-
-GpuClassification runGpu(const Case& c, const test::SssrTestView& view,
-                         const std::vector<std::uint32_t>& history, HybridDesc& desc) {
-    desc.sssr = view.desc;
-    desc.sssr.frameIndex = c.frame;
-    desc.screenSpace = c.screenSpace;
-    desc.rayTracing = c.rayTracing;
-    desc.feedback = c.feedback;
-    desc.mirrorsRayTraced = c.mirrorsRayTraced;
-    desc.spawnRate = c.spawnRate;
-    desc.missWeight = c.missWeight;
-    EffectPlan plan;
-    std::string error;
-    REQUIRE(planHybrid(desc, plan, &error) == Result::Ok);
-
-    const gpu::Context& context = test::testContext();
-    gpu::EffectRunner runner(context, plan);
-    runner.initialize();
-    gpu::uploadImageBytes(context, runner.image(hybridFeedbackImages(c.frame).second),
-                          std::as_bytes(std::span(history)));
-    gpu::InputImages inputs(context, view.desc.size, false);
-    inputs.upload(InputKind::Depth, view.inputs.depth, 1);
-    inputs.upload(InputKind::Normals, view.inputs.normals, 4);
-    inputs.upload(InputKind::Material, view.inputs.material, 4);
-    inputs.upload(InputKind::Motion, view.inputs.motion, 2);
-    inputs.uploadEnvironment(view.inputs.environmentWidth, view.inputs.environmentHeight,
-                             view.inputs.environment);
-    vk::ResourceTable table;
-    table.images["depth"] = inputs.find(InputKind::Depth);
-    table.images["normals"] = inputs.find(InputKind::Normals);
-    table.images["material"] = inputs.find(InputKind::Material);
-    table.images["motion"] = inputs.find(InputKind::Motion);
-    table.images["environment"] = inputs.find(InputKind::Environment);
-    runner.run(plan, table);
-
-    const auto words = [&](const std::string& image) {
-        const std::vector<std::byte> bytes = gpu::readbackImageBytes(context, runner.image(image));
-        std::vector<std::uint32_t> values(bytes.size() / 4);
-        std::memcpy(values.data(), bytes.data(), bytes.size());
-        return values;
-    };
-    GpuClassification out;
-    out.tileClass = words("hybrid_tile_class");
-    out.feedback = words(hybridFeedbackImages(c.frame).first);
-    out.counters = runner.readWords("hybrid_counters", 8);
-    out.swList = runner.readWords("hybrid_sw_ray_list", out.counters[0]);
-    out.hwList = runner.readWords("hybrid_hw_ray_list", out.counters[4]);
-    out.tileList = runner.readWords("sssr_tile_list", out.counters[2]);
-    return out;
-}
-
 std::uint32_t tileOf(std::uint32_t entry, std::uint32_t tilesX) {
     return (((entry >> 15) & 0x3FFFu) / 8) * tilesX + (entry & 0x7FFFu) / 8;
 }
@@ -142,7 +84,16 @@ void checkCase(const Case& c) {
     const std::vector<std::uint32_t> history = randomHistory(tilesX * tilesY, rng);
 
     HybridDesc desc;
-    const GpuClassification gpu = runGpu(c, view, history, desc);
+    desc.sssr = view.desc;
+    desc.sssr.frameIndex = c.frame;
+    desc.screenSpace = c.screenSpace;
+    desc.rayTracing = c.rayTracing;
+    desc.feedback = c.feedback;
+    desc.mirrorsRayTraced = c.mirrorsRayTraced;
+    desc.spawnRate = c.spawnRate;
+    desc.missWeight = c.missWeight;
+    // Classification alone: the intersection would append its misses to the ray-traced list.
+    const test::HybridFrame gpu = test::runHybridFrame(desc, view, history, {"intersect", "hw_args"});
 
     reference::HybridClassifyInputs in;
     in.sssr = test::classifyReferenceInputs(view);

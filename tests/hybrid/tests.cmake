@@ -2,6 +2,8 @@
 glint_add_test_suite(NAME hybrid LABELS gpu
   SOURCES
     hybrid/classify_test.cpp
+    hybrid/intersect_test.cpp
+    hybrid/hybrid_test_frame.cpp
     sssr/sssr_test_scene.cpp
     sssr/sssr_classify_view.cpp
     reference/sssr_reference.cpp

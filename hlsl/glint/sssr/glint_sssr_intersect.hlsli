@@ -304,8 +304,25 @@ float3 GLINT_SSSR_SampleDirection(GLINT_SssrConstants c, int2 pixel, float3 n, f
     return 2.0 * dot(n, v) * n - v;
 }
 
-void GLINT_SSSR_Intersect(GLINT_SssrConstants c, uint groupIndex, uint rayIndex)
+// One traced ray's result, stored by GLINT_SSSR_StoreResult at its pixel and its quad copies.
+struct GLINT_SSSR_RayResult
 {
+    bool valid;
+    uint entry;        // the ray-list entry (pixel and copy flags)
+    float4 result;     // radiance, world hit distance (GLINT_SSSR_MISS_DISTANCE: none)
+    float confidence;  // of the screen-space hit, 0 when there is none
+    float alpha;
+    float4 sampledRay; // direction and bias-free pdf (stored with GLINT_SSSR_STORE_RAY)
+    float4 info;       // hit x, hit y, class, iterations (stored with GLINT_SSSR_DEBUG_OUTPUT)
+};
+
+// Traces the ray of list entry `entry` (when `valid`). Every thread of the group calls it: it
+// synchronizes the group (all its barriers are before any thread returns).
+GLINT_SSSR_RayResult GLINT_SSSR_TraceEntry(GLINT_SssrConstants c, uint groupIndex, bool valid, uint entry)
+{
+    GLINT_SSSR_RayResult r = (GLINT_SSSR_RayResult)0;
+    r.valid = false;
+    r.entry = entry;
     if (groupIndex == 0)
     {
         g_glint_sssr_live[0] = 0;
@@ -313,11 +330,6 @@ void GLINT_SSSR_Intersect(GLINT_SssrConstants c, uint groupIndex, uint rayIndex)
         g_glint_sssr_live[2] = 0;
     }
     bool reversed = GLINT_SSSR_Reversed(c);
-    bool valid = rayIndex < GLINT_SSSR_LoadRayCount();
-    // Not ?:, which evaluates both operands in HLSL: the load must not run past the ray count.
-    uint entry = 0u;
-    if (valid)
-        entry = GLINT_SSSR_LoadRay(rayIndex);
     uint2 pixel = GLINT_SSSR_UnpackRayPixel(entry);
     int2 ipixel = int2(pixel);
     float2 uv = (float2(pixel) + 0.5) * c.inverseInputSize;
@@ -401,7 +413,7 @@ void GLINT_SSSR_Intersect(GLINT_SssrConstants c, uint groupIndex, uint rayIndex)
         }
     }
     if (!valid)
-        return;
+        return r;
     // A ray still marching here ran out of budget; only a completed descent is a hit
     // (docs/conventions.md, defect SS1).
 
@@ -474,43 +486,55 @@ void GLINT_SSSR_Intersect(GLINT_SssrConstants c, uint groupIndex, uint rayIndex)
     float4 result = float4(radiance, GLINT_FiniteOr(distance, GLINT_SSSR_MISS_DISTANCE));
     confidence = GLINT_FiniteOr(confidence, 0.0);
 
-    GLINT_SSSR_StoreRadiance(ipixel, result);
-    GLINT_SSSR_StoreConfidence(ipixel, confidence);
-#if GLINT_SSSR_STORE_RAY
+    r.valid = true;
+    r.result = result;
+    r.confidence = confidence;
+    r.alpha = alpha;
     // The sample's own density (the one the environment LOD uses), bias-free even with the
     // importance-sample bias (reference: the ratio estimator stays deliberately biased). A copy
     // carries its donor's ray: the copied radiance is that ray's sample.
     float pdf = GLINT_GGX_ReflectionPdf(NdotV, NdotH, alpha);
-    float4 sampledRay = float4(worldDirection, clamp(GLINT_FiniteOr(pdf, 3.0e38), 1e-30, 3.0e38));
-    GLINT_SSSR_StoreRay(ipixel, sampledRay);
+    r.sampledRay = float4(worldDirection, clamp(GLINT_FiniteOr(pdf, 3.0e38), 1e-30, 3.0e38));
+    r.info = float4(hit.xy, float(state.rayClass), float(state.iterations));
+    return r;
+}
+
+// Writes `result` and `confidence` (and the stored ray and debug info of the permutations) to
+// the entry's pixel and to the quad neighbours its copy flags name.
+void GLINT_SSSR_StoreAt(uint2 pixel, float4 result, float confidence, GLINT_SSSR_RayResult r)
+{
+    GLINT_SSSR_StoreRadiance(int2(pixel), result);
+    GLINT_SSSR_StoreConfidence(int2(pixel), confidence);
+#if GLINT_SSSR_STORE_RAY
+    GLINT_SSSR_StoreRay(int2(pixel), r.sampledRay);
 #endif
+}
+
+void GLINT_SSSR_StoreResult(uint entry, float4 result, float confidence, GLINT_SSSR_RayResult r)
+{
+    uint2 pixel = GLINT_SSSR_UnpackRayPixel(entry);
+    GLINT_SSSR_StoreAt(pixel, result, confidence, r);
     if ((entry & GLINT_SSSR_RAY_COPY_H) != 0)
-    {
-        GLINT_SSSR_StoreRadiance(int2(pixel ^ uint2(1, 0)), result);
-        GLINT_SSSR_StoreConfidence(int2(pixel ^ uint2(1, 0)), confidence);
-#if GLINT_SSSR_STORE_RAY
-        GLINT_SSSR_StoreRay(int2(pixel ^ uint2(1, 0)), sampledRay);
-#endif
-    }
+        GLINT_SSSR_StoreAt(pixel ^ uint2(1, 0), result, confidence, r);
     if ((entry & GLINT_SSSR_RAY_COPY_V) != 0)
-    {
-        GLINT_SSSR_StoreRadiance(int2(pixel ^ uint2(0, 1)), result);
-        GLINT_SSSR_StoreConfidence(int2(pixel ^ uint2(0, 1)), confidence);
-#if GLINT_SSSR_STORE_RAY
-        GLINT_SSSR_StoreRay(int2(pixel ^ uint2(0, 1)), sampledRay);
-#endif
-    }
+        GLINT_SSSR_StoreAt(pixel ^ uint2(0, 1), result, confidence, r);
     if ((entry & GLINT_SSSR_RAY_COPY_D) != 0)
-    {
-        GLINT_SSSR_StoreRadiance(int2(pixel ^ uint2(1, 1)), result);
-        GLINT_SSSR_StoreConfidence(int2(pixel ^ uint2(1, 1)), confidence);
-#if GLINT_SSSR_STORE_RAY
-        GLINT_SSSR_StoreRay(int2(pixel ^ uint2(1, 1)), sampledRay);
-#endif
-    }
+        GLINT_SSSR_StoreAt(pixel ^ uint2(1, 1), result, confidence, r);
 #if GLINT_SSSR_DEBUG_OUTPUT
-    GLINT_SSSR_StoreRayInfo(ipixel, float4(hit.xy, float(state.rayClass), float(state.iterations)));
+    GLINT_SSSR_StoreRayInfo(int2(pixel), r.info);
 #endif
+}
+
+void GLINT_SSSR_Intersect(GLINT_SssrConstants c, uint groupIndex, uint rayIndex)
+{
+    bool valid = rayIndex < GLINT_SSSR_LoadRayCount();
+    // Not ?:, which evaluates both operands in HLSL: the load must not run past the ray count.
+    uint entry = 0u;
+    if (valid)
+        entry = GLINT_SSSR_LoadRay(rayIndex);
+    GLINT_SSSR_RayResult r = GLINT_SSSR_TraceEntry(c, groupIndex, valid, entry);
+    if (r.valid)
+        GLINT_SSSR_StoreResult(r.entry, r.result, r.confidence, r);
 }
 
 #endif // GLINT_SSSR_INTERSECT_HLSLI

@@ -1,10 +1,11 @@
 // glint public API: hybrid reflections (docs/hybrid.md), screen space first and a ray-traced
 // fallback chosen per 8x8 tile from last frame's hit/miss feedback.
 //
-// In progress: the plan holds the tile classification so far (feedback counters, tile
-// classes, the screen-space and ray-traced ray lists, the denoiser's tile list). The
-// screen-space intersection with feedback, the ray-traced pass, the denoiser and the
-// composite follow; the effect is not registered until they do.
+// In progress: the plan holds the depth pyramid, the tile classification (feedback counters,
+// tile classes, the screen-space and ray-traced ray lists, the denoiser's tile list), blue noise
+// and arguments, the screen-space intersection with feedback, and the ray tracer's arguments.
+// The ray-traced pass, the denoiser and the composite follow; the effect is not registered
+// until they do.
 #pragma once
 
 #include "glint/glint_pass.h"
@@ -39,7 +40,8 @@ struct HybridDesc {
 //   "hybrid_sw_ray_list"  ceil(W/8) ceil(H/8) 64 entries, padded per tile (0xFFFFFFFF)
 //   "hybrid_hw_ray_list"  W H entries
 //   "sssr_tile_list", "sssr_roughness", "sssr_radiance", "sssr_confidence" as in glint_sssr.h
-//   "hybrid_counters"     8 words (glint_hybrid_constants.h)
+//   "hybrid_counters"     8 words, "hybrid_indirect_args" 9 words (glint_hybrid_constants.h)
+//   "sssr_blue_noise_source" (owned, glint::sssrBlueNoise()), "sssr_blue_noise", "depth_pyramid"
 Result planHybrid(const HybridDesc& desc, EffectPlan& plan, std::string* error);
 
 // The names of frame `frameIndex`'s feedback images: {written, read as history}.

@@ -4,6 +4,9 @@
 #include "core/dispatch.h"
 #include "core/plan_checks.h"
 #include "core/sssr_constants.h"
+#include "core/sssr_table_images.h"
+#include "glint/glint_depth_pyramid.h"
+#include "glint/glint_sssr_tables.h"
 #include "glint/hybrid/glint_hybrid_constants.h"
 
 #include <cmath>
@@ -88,6 +91,63 @@ Pass classifyPass(const HybridDesc& desc, const std::vector<std::byte>& constant
     return pass;
 }
 
+Pass hybridPass(const char* name, std::string pipeline, std::uint32_t groupX, std::uint32_t groupY,
+                const std::vector<std::byte>& constants) {
+    Pass pass;
+    pass.name = name;
+    pass.pipeline = std::move(pipeline);
+    pass.groupSize[0] = groupX;
+    pass.groupSize[1] = groupY;
+    if (!constants.empty()) {
+        pass.constantsBinding = "g_glint_constants";
+        pass.constants = constants;
+    }
+    return pass;
+}
+
+// SSSR's blue-noise pass, which also turns counters 0 and 2 (the screen-space list's length,
+// padding included, and the denoiser's tiles) into the intersection's and the denoiser's
+// arguments: the hybrid counters and arguments start with SSSR's layout.
+Pass blueNoisePass(const std::vector<std::byte>& sssrConstants) {
+    Pass pass = hybridPass("blue_noise_args", "sssr_blue_noise", 8, 8, sssrConstants);
+    pass.dispatch = DirectDispatch{GLINT_SSSR_BLUE_NOISE_SIZE / 8, GLINT_SSSR_BLUE_NOISE_SIZE / 8, 1};
+    pass.uses = {{"g_glint_blue_noise_source", "sssr_blue_noise_source", Access::Read},
+                 {"g_glint_blue_noise", "sssr_blue_noise", Access::Write},
+                 {"g_glint_counters", "hybrid_counters", Access::ReadWrite},
+                 {"g_glint_arguments", "hybrid_indirect_args", Access::Write}};
+    return pass;
+}
+
+Pass intersectPass(const HybridDesc& desc, const std::vector<std::byte>& constants) {
+    Pass pass =
+        hybridPass("intersect", desc.sssr.halfPrecisionStorage ? "hybrid_intersect.half" : "hybrid_intersect",
+                   GLINT_SSSR_RAYS_PER_GROUP, 1, constants);
+    pass.dispatch = IndirectDispatch{"hybrid_indirect_args", 0};
+    pass.uses = {{"g_glint_depth", "depth", Access::Read},
+                 {"g_glint_depth_pyramid", "depth_pyramid", Access::Read},
+                 {"g_glint_normals", "normals", Access::Read},
+                 {"g_glint_roughness", "sssr_roughness", Access::Read},
+                 {"g_glint_blue_noise", "sssr_blue_noise", Access::Read},
+                 {"g_glint_color", "color", Access::Read},
+                 {"g_glint_motion", "motion", Access::Read},
+                 {"g_glint_environment", "environment", Access::Read},
+                 {"g_glint_counters", "hybrid_counters", Access::ReadWrite},
+                 {"g_glint_ray_list", "hybrid_sw_ray_list", Access::Read},
+                 {"g_glint_radiance", "sssr_radiance", Access::ReadWrite},
+                 {"g_glint_confidence", "sssr_confidence", Access::ReadWrite},
+                 {"g_glint_hw_ray_list", "hybrid_hw_ray_list", Access::ReadWrite},
+                 {"g_glint_feedback", hybridFeedbackImages(desc.sssr.frameIndex).first, Access::ReadWrite}};
+    return pass;
+}
+
+Pass rayTracedArgumentsPass() {
+    Pass pass = hybridPass("hw_args", "hybrid_hw_args", 1, 1, {});
+    pass.dispatch = DirectDispatch{1, 1, 1};
+    pass.uses = {{"g_glint_counters", "hybrid_counters", Access::ReadWrite},
+                 {"g_glint_arguments", "hybrid_indirect_args", Access::ReadWrite}};
+    return pass;
+}
+
 } // namespace
 
 std::pair<std::string, std::string> hybridFeedbackImages(std::uint32_t frameIndex) {
@@ -105,7 +165,17 @@ Result planHybrid(const HybridDesc& desc, EffectPlan& plan, std::string* error) 
     if (!core::invert(desc.sssr.viewFromWorld, worldFromView))
         return invalid(error, "viewFromWorld is singular");
 
+    DepthPyramidDesc pyramid;
+    pyramid.size = desc.sssr.size;
+    pyramid.depth = desc.sssr.depth;
+    pyramid.channels = DepthPyramidChannels::Closest;
+    pyramid.levelCount = GLINT_SSSR_PYRAMID_LEVELS;
+    pyramid.copyLevel0 = false; // the intersection reads level 0 from "depth" itself
+    if (depthPyramidLayout(desc.sssr.size, 0).fullLevelCount < GLINT_SSSR_PYRAMID_LEVELS)
+        pyramid.levelCount = 0;
     plan = EffectPlan{};
+    if (const Result result = planDepthPyramid(pyramid, plan, error); result != Result::Ok) return result;
+    for (Pass& pass : plan.passes) pass.name = "depth_pyramid";
     plan.effect = "hybrid";
     plan.size = desc.sssr.size;
     const std::uint32_t w = desc.sssr.size.width;
@@ -117,6 +187,10 @@ Result planHybrid(const HybridDesc& desc, EffectPlan& plan, std::string* error) 
     plan.images.push_back({"sssr_roughness", w, h, 1, half ? Format::R16Float : Format::R32Float});
     plan.images.push_back({"sssr_radiance", w, h, 1, half ? Format::RGBA16Float : Format::RGBA32Float});
     plan.images.push_back({"sssr_confidence", w, h, 1, half ? Format::R16Float : Format::R32Float});
+    plan.images.push_back({"sssr_blue_noise_source", kSssrBlueNoiseSize, kSssrBlueNoiseSize, 1,
+                           Format::RG32Float, core::sssrBlueNoiseTexels()});
+    plan.images.push_back(
+        {"sssr_blue_noise", GLINT_SSSR_BLUE_NOISE_SIZE, GLINT_SSSR_BLUE_NOISE_SIZE, 1, Format::RG32Float});
     plan.images.push_back({"hybrid_feedback0", tilesX, tilesY, 1, Format::R32Uint});
     plan.images.push_back({"hybrid_feedback1", tilesX, tilesY, 1, Format::R32Uint});
     plan.images.push_back({"hybrid_tile_class", tilesX, tilesY, 1, Format::R32Uint});
@@ -127,13 +201,15 @@ Result planHybrid(const HybridDesc& desc, EffectPlan& plan, std::string* error) 
     plan.buffers.push_back({"hybrid_hw_ray_list", std::uint64_t{w} * h * 4u, false});
     plan.buffers.push_back({"sssr_tile_list", tiles * 4u, false});
     plan.buffers.push_back({"hybrid_counters", GLINT_HYBRID_COUNTER_WORDS * 4u, false});
+    plan.buffers.push_back({"hybrid_indirect_args", GLINT_HYBRID_ARGUMENT_WORDS * 4u, true});
 
-    const std::vector<std::byte> constants =
-        packConstants(core::makeSssrConstants(desc.sssr, viewFromClip, worldFromView), makeConstants(desc));
-    Pass classify = classifyPass(desc, constants);
-    // Until the arguments pass exists, the counters are cleared before each frame here.
-    classify.zeroBuffers = {"hybrid_counters"};
-    plan.passes.push_back(std::move(classify));
+    const shaders::GLINT_SssrConstants sssrConstants =
+        core::makeSssrConstants(desc.sssr, viewFromClip, worldFromView);
+    const std::vector<std::byte> constants = packConstants(sssrConstants, makeConstants(desc));
+    plan.passes.push_back(classifyPass(desc, constants));
+    plan.passes.push_back(blueNoisePass(core::packConstants(sssrConstants)));
+    plan.passes.push_back(intersectPass(desc, constants));
+    plan.passes.push_back(rayTracedArgumentsPass());
     return Result::Ok;
 }
 

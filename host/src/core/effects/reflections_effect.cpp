@@ -4,6 +4,7 @@
 // denoised reflection the denoiser writes over "sssr_radiance"; its variance is next frame's
 // variance history for variance-guided tracing.
 #include "core/effects/effect_tables.h"
+#include "core/sssr_table_images.h"
 
 #include "glint/glint_effect.h"
 #include "glint/glint_reflections.h"
@@ -144,16 +145,6 @@ ReflectionsDenoiserDesc denoiserDesc(const FrameInfo& frame, const SettingValues
     return desc;
 }
 
-std::shared_ptr<const std::vector<float>> blueNoiseTexels() {
-    static const auto texels = std::make_shared<const std::vector<float>>(sssrBlueNoise());
-    return texels;
-}
-
-std::shared_ptr<const std::vector<float>> brdfLutTexels() {
-    static const auto texels = std::make_shared<const std::vector<float>>(sssrBrdfLut(kSssrBrdfLutSize));
-    return texels;
-}
-
 void renameResource(EffectPlan& plan, const std::string& from, const std::string& to) {
     for (Pass& pass : plan.passes)
         for (ResourceUse& use : pass.uses)
@@ -212,10 +203,10 @@ Result planReflections(const SssrDesc& sssr, const ReflectionsDenoiserDesc* deno
         if (pass.pipeline.rfind("depth_pyramid", 0) == 0) pass.name = "depth_pyramid";
 
     plan.images.push_back({"sssr_blue_noise_source", kSssrBlueNoiseSize, kSssrBlueNoiseSize, 1,
-                           Format::RG32Float, blueNoiseTexels()});
+                           Format::RG32Float, core::sssrBlueNoiseTexels()});
     if (sssr.composite)
-        plan.images.push_back(
-            {"sssr_brdf_lut", kSssrBrdfLutSize, kSssrBrdfLutSize, 1, Format::RG32Float, brdfLutTexels()});
+        plan.images.push_back({"sssr_brdf_lut", kSssrBrdfLutSize, kSssrBrdfLutSize, 1, Format::RG32Float,
+                               core::sssrBrdfLutTexels()});
     if (!sssr.denoise) {
         // Without a denoiser there is no variance to guide by: a zero history.
         plan.images.push_back({"sssr_zero_variance", 1, 1, 1, Format::R32Float});

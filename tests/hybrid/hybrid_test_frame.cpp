@@ -1,0 +1,70 @@
+#include "hybrid/hybrid_test_frame.h"
+
+#include "support/gpu_test_context.h"
+
+#include <gpu/gpu_effect_runner.h>
+#include <gpu/gpu_input_images.h>
+#include <gpu/gpu_transfer.h>
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cstring>
+
+namespace glint::test {
+
+HybridFrame runHybridFrame(const HybridDesc& desc, const SssrTestView& view,
+                           const std::vector<std::uint32_t>& history,
+                           const std::vector<std::string>& skipPasses) {
+    EffectPlan plan;
+    std::string error;
+    REQUIRE(planHybrid(desc, plan, &error) == Result::Ok);
+    std::erase_if(plan.passes, [&](const Pass& pass) {
+        return std::find(skipPasses.begin(), skipPasses.end(), pass.name) != skipPasses.end();
+    });
+    const bool rayTracedArguments = std::none_of(skipPasses.begin(), skipPasses.end(),
+                                                 [](const std::string& name) { return name == "hw_args"; });
+
+    const gpu::Context& context = testContext();
+    gpu::EffectRunner runner(context, plan);
+    runner.initialize();
+    gpu::uploadImageBytes(context, runner.image(hybridFeedbackImages(desc.sssr.frameIndex).second),
+                          std::as_bytes(std::span(history)));
+    gpu::InputImages inputs(context, view.desc.size, false);
+    inputs.upload(InputKind::Depth, view.inputs.depth, 1);
+    inputs.upload(InputKind::Normals, view.inputs.normals, 4);
+    inputs.upload(InputKind::Material, view.inputs.material, 4);
+    inputs.upload(InputKind::Color, view.inputs.color, 4);
+    inputs.upload(InputKind::Motion, view.inputs.motion, 2);
+    inputs.uploadEnvironment(view.inputs.environmentWidth, view.inputs.environmentHeight,
+                             view.inputs.environment);
+    vk::ResourceTable table;
+    table.images["depth"] = inputs.find(InputKind::Depth);
+    table.images["normals"] = inputs.find(InputKind::Normals);
+    table.images["material"] = inputs.find(InputKind::Material);
+    table.images["color"] = inputs.find(InputKind::Color);
+    table.images["motion"] = inputs.find(InputKind::Motion);
+    table.images["environment"] = inputs.find(InputKind::Environment);
+    runner.run(plan, table);
+
+    const auto words = [&](const std::string& image) {
+        const std::vector<std::byte> bytes = gpu::readbackImageBytes(context, runner.image(image));
+        std::vector<std::uint32_t> values(bytes.size() / 4);
+        std::memcpy(values.data(), bytes.data(), bytes.size());
+        return values;
+    };
+    HybridFrame out;
+    out.tileClass = words("hybrid_tile_class");
+    out.feedback = words(hybridFeedbackImages(desc.sssr.frameIndex).first);
+    out.counters = runner.readWords("hybrid_counters");
+    out.arguments = runner.readWords("hybrid_indirect_args");
+    // The arguments pass kept the screen-space list's length in counter 1 and the tiles' in 3.
+    out.swList = runner.readWords("hybrid_sw_ray_list", out.counters.at(1));
+    out.hwList = runner.readWords("hybrid_hw_ray_list", out.counters.at(rayTracedArguments ? 5 : 4));
+    out.tileList = runner.readWords("sssr_tile_list", out.counters.at(3));
+    out.radiance = gpu::readbackImage(context, runner.image("sssr_radiance"));
+    out.confidence = gpu::readbackImage(context, runner.image("sssr_confidence"));
+    return out;
+}
+
+} // namespace glint::test
