@@ -495,7 +495,8 @@ std::vector<std::string> mappedSequenceFiles(const std::string& dirOrFile, const
         const bool frame = map.framesAreFolders ? entry.is_directory(ec)
                                                 : entry.is_regular_file(ec) && isExrFile(entry.path());
         if (!frame) continue;
-        if (!environment.empty() && std::filesystem::equivalent(entry.path(), environment, ec)) continue;
+        std::error_code same; // an optional environment may not be there
+        if (!environment.empty() && std::filesystem::equivalent(entry.path(), environment, same)) continue;
         names.push_back(entry.path().filename().string());
     }
     if (ec) fail(p, "cannot list the folder: " + ec.message());

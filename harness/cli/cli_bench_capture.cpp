@@ -7,6 +7,7 @@
 #include "cli_capture.h"
 #include "cli_commands.h"
 
+#include "capture/sequence_io.h"
 #include "scene/scene_file.h"
 #include "scene/scene_simulate.h"
 
@@ -63,6 +64,10 @@ Target openTarget(const std::string& path, const BenchOptions& options) {
         target.scene = std::move(scene);
         return target;
     }
+    if (std::filesystem::is_directory(file) && !std::filesystem::exists(file / capture::kManifestName))
+        throw std::invalid_argument("bench: " + path + ": no " + capture::kManifestName +
+                                    " (bench times glint captures and scenes; a foreign capture replays "
+                                    "with glint run --map FILE)");
     const CaptureSource source(path);
     target.kind = source.frameCount() > 1 || std::filesystem::is_directory(file) ? "sequence" : "frame";
     target.environment = source.environment();

@@ -104,6 +104,19 @@ TEST_CASE("a Blender render without the Diffuse Color pass replays through the s
     CHECK(findLayer(frame, "roughness") != nullptr);
 }
 
+TEST_CASE("a render folder without the optional world.exr lists its frames",
+          "[capture][channel_map][foreign]") {
+    // Only frames: the last entry listed is a frame, compared with the absent environment file.
+    const fs::path dir = test::freshTestDir("foreign_listing");
+    test::writeBlenderFrame(dir, "0001.exr", 0);
+    test::writeBlenderFrame(dir, "0002.exr", 1);
+    const std::vector<std::string> files =
+        mappedSequenceFiles(dir.string(), loadChannelMap(blenderMapPath()));
+    REQUIRE(files.size() == 2);
+    CHECK(fs::path(files[0]).filename() == "0001.exr");
+    CHECK(fs::path(files[1]).filename() == "0002.exr");
+}
+
 TEST_CASE("Cycles' Diffuse Color pass becomes the material layer's base colour",
           "[capture][channel_map][foreign]") {
     const fs::path dir = test::freshTestDir("foreign_diffcol");
