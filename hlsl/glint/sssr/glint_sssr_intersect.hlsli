@@ -304,6 +304,37 @@ float3 GLINT_SSSR_SampleDirection(GLINT_SssrConstants c, int2 pixel, float3 n, f
     return 2.0 * dot(n, v) * n - v;
 }
 
+// The reflection sample of a listed pixel: its surface and the GGX direction drawn from this
+// frame's blue noise (the same for the screen-space march and, in the hybrid, the ray tracer).
+struct GLINT_SSSR_PixelSample
+{
+    float depth;
+    float alpha;
+    float3 viewPosition;
+    float3 normal;    // world, bent toward the view
+    float3 view;      // world, unit, from the surface toward the eye
+    float NdotV;
+    float NdotH;
+    float3 direction; // world, unit
+};
+
+GLINT_SSSR_PixelSample GLINT_SSSR_SamplePixel(GLINT_SssrConstants c, uint2 pixel)
+{
+    GLINT_SSSR_PixelSample s;
+    int2 ipixel = int2(pixel);
+    float2 uv = (float2(pixel) + 0.5) * c.inverseInputSize;
+    s.depth = GLINT_SSSR_LoadDepth(ipixel, 0);
+    float3 normal = GLINT_SSSR_UnpackNormal(c, GLINT_SSSR_LoadNormal(ipixel));
+    s.alpha = clamp(GLINT_FiniteOr(GLINT_SSSR_LoadRoughness(ipixel), 1.0), 0.0, 1.0);
+    s.viewPosition = GLINT_SSSR_ViewPosition(c, uv, s.depth);
+    s.view = -normalize(GLINT_SSSR_MulDirection(c.worldFromView, s.viewPosition));
+    s.normal = GLINT_GGX_BendNormalTowardView(normal, s.view);
+    s.NdotV = dot(s.normal, s.view);
+    s.NdotH = 1.0;
+    s.direction = GLINT_SSSR_SampleDirection(c, ipixel, s.normal, s.view, s.alpha, s.NdotH);
+    return s;
+}
+
 // One traced ray's result, stored by GLINT_SSSR_StoreResult at its pixel and its quad copies.
 struct GLINT_SSSR_RayResult
 {
@@ -352,15 +383,15 @@ GLINT_SSSR_RayResult GLINT_SSSR_TraceEntry(GLINT_SssrConstants c, uint groupInde
     float2 overshoot = float2(0.0, 0.0);
     if (valid)
     {
-        float depth = GLINT_SSSR_LoadDepth(ipixel, 0);
-        float3 normal = GLINT_SSSR_UnpackNormal(c, GLINT_SSSR_LoadNormal(ipixel));
-        alpha = clamp(GLINT_FiniteOr(GLINT_SSSR_LoadRoughness(ipixel), 1.0), 0.0, 1.0);
+        GLINT_SSSR_PixelSample sample = GLINT_SSSR_SamplePixel(c, pixel);
+        float depth = sample.depth;
+        alpha = sample.alpha;
         mirror = alpha < c.mirrorThreshold;
-        viewPosition = GLINT_SSSR_ViewPosition(c, uv, depth);
-        view = -normalize(GLINT_SSSR_MulDirection(c.worldFromView, viewPosition));
-        float3 n = GLINT_GGX_BendNormalTowardView(normal, view);
-        NdotV = dot(n, view);
-        worldDirection = GLINT_SSSR_SampleDirection(c, ipixel, n, view, alpha, NdotH);
+        viewPosition = sample.viewPosition;
+        view = sample.view;
+        NdotV = sample.NdotV;
+        NdotH = sample.NdotH;
+        worldDirection = sample.direction;
         ray = GLINT_SSSR_SetupRay(c, pixel, depth, viewPosition, GLINT_SSSR_MulDirection(c.viewFromWorld, worldDirection));
         finestLevel = mirror ? 0 : int(min(c.mostDetailedMip, uint(GLINT_SSSR_PYRAMID_LEVELS - 1)));
         float epsilon = 0.005 * float(1u << uint(finestLevel));
