@@ -1,7 +1,8 @@
 # HLSL -> SPIR-V for glint.
 #
 #   glint_add_hlsl_shader(NAME <name> ENTRY <file.cs.hlsl> [GROUP <group>]
-#                         [DEFINES <D=V>...] [PERMUTATIONS "<suffix>:<D=V>[,<D=V>...]"...])
+#                         [DEFINES <D=V>...] [PERMUTATIONS "<suffix>:<D=V>[,<D=V>...]"...]
+#                         [PROFILE <cs_6_x>] [TARGET_ENV <vulkan1.x>])
 #
 # compiles <file> with DXC when GLINT_DXC is set (or dxc is on PATH) and with glslang's HLSL
 # front end otherwise, validates every module with spirv-val, and records each output so that
@@ -23,13 +24,23 @@ set(GLINT_SPIRV_TARGET_ENV vulkan1.1)
 
 # The compile command line for one module, for whichever compiler is in use.
 function(_glint_hlsl_command out_var input output depfile defines)
+  # Optional ARGV5/ARGV6: the shader profile and SPIR-V environment of a module that needs more
+  # than the library's cs_6_2 / vulkan1.1 (DXC only).
+  set(profile cs_6_2)
+  set(env ${GLINT_SPIRV_TARGET_ENV})
+  if(ARGC GREATER 5 AND ARGV5)
+    set(profile ${ARGV5})
+  endif()
+  if(ARGC GREATER 6 AND ARGV6)
+    set(env ${ARGV6})
+  endif()
   set(defs "")
   foreach(d IN LISTS defines)
     list(APPEND defs "-D${d}")
   endforeach()
   if(GLINT_DXC)
-    set(cmd "${GLINT_DXC}" -spirv -fspv-target-env=${GLINT_SPIRV_TARGET_ENV} -HV 2021 -WX
-            -T cs_6_2 -E main -enable-16bit-types -I "${GLINT_HLSL_ROOT}" -DGLINT_COMPILER_DXC=1
+    set(cmd "${GLINT_DXC}" -spirv -fspv-target-env=${env} -HV 2021 -WX
+            -T ${profile} -E main -enable-16bit-types -I "${GLINT_HLSL_ROOT}" -DGLINT_COMPILER_DXC=1
             ${defs} -Fo "${output}" "${input}")
   else()
     set(cmd "${GLINT_GLSLANG}" -V -D --target-env ${GLINT_SPIRV_TARGET_ENV} -S comp -e main
@@ -66,9 +77,21 @@ function(_glint_shader_data name input spirv defines)
 endfunction()
 
 function(_glint_compile_module name input defines group)
+  # ARGVn past ARGC would read the caller's variables: check the count.
+  set(profile "")
+  set(env "")
+  if(ARGC GREATER 4)
+    set(profile "${ARGV4}")
+  endif()
+  if(ARGC GREATER 5)
+    set(env "${ARGV5}")
+  endif()
+  if(NOT env)
+    set(env ${GLINT_SPIRV_TARGET_ENV})
+  endif()
   set(output "${GLINT_SPIRV_DIR}/${name}.spv")
   set(depfile "${GLINT_SPIRV_DIR}/${name}.d")
-  _glint_hlsl_command(cmd "${input}" "${output}" "${depfile}" "${defines}")
+  _glint_hlsl_command(cmd "${input}" "${output}" "${depfile}" "${defines}" "${profile}" "${env}")
   set(extra "")
   if(NOT GLINT_DXC)
     set(extra DEPFILE "${depfile}")
@@ -77,7 +100,7 @@ function(_glint_compile_module name input defines group)
     OUTPUT "${output}"
     COMMAND "${CMAKE_COMMAND}" -E make_directory "${GLINT_SPIRV_DIR}"
     COMMAND ${cmd}
-    COMMAND "${GLINT_SPIRV_VAL}" --target-env ${GLINT_SPIRV_TARGET_ENV} "${output}"
+    COMMAND "${GLINT_SPIRV_VAL}" --target-env ${env} "${output}"
     DEPENDS "${input}" ${GLINT_HLSL_HEADERS}
     ${extra}
     COMMENT "HLSL -> SPIR-V ${name}"
@@ -91,7 +114,7 @@ function(_glint_compile_module name input defines group)
 endfunction()
 
 function(glint_add_hlsl_shader)
-  cmake_parse_arguments(ARG "" "NAME;ENTRY;GROUP" "DEFINES;PERMUTATIONS" ${ARGN})
+  cmake_parse_arguments(ARG "" "NAME;ENTRY;GROUP;PROFILE;TARGET_ENV" "DEFINES;PERMUTATIONS" ${ARGN})
   if(NOT ARG_GROUP)
     set(ARG_GROUP glint)
   endif()
@@ -99,7 +122,8 @@ function(glint_add_hlsl_shader)
     message(FATAL_ERROR "glint_add_hlsl_shader needs NAME and ENTRY")
   endif()
   cmake_path(ABSOLUTE_PATH ARG_ENTRY BASE_DIRECTORY "${CMAKE_CURRENT_SOURCE_DIR}")
-  _glint_compile_module("${ARG_NAME}" "${ARG_ENTRY}" "${ARG_DEFINES}" "${ARG_GROUP}")
+  _glint_compile_module("${ARG_NAME}" "${ARG_ENTRY}" "${ARG_DEFINES}" "${ARG_GROUP}" "${ARG_PROFILE}"
+                        "${ARG_TARGET_ENV}")
   foreach(perm IN LISTS ARG_PERMUTATIONS)
     string(FIND "${perm}" ":" colon)
     if(colon LESS 1)
@@ -110,7 +134,8 @@ function(glint_add_hlsl_shader)
     string(SUBSTRING "${perm}" ${start} -1 perm_defs)
     string(REPLACE "," ";" perm_defs "${perm_defs}")
     set(all_defs ${ARG_DEFINES} ${perm_defs})
-    _glint_compile_module("${ARG_NAME}.${suffix}" "${ARG_ENTRY}" "${all_defs}" "${ARG_GROUP}")
+    _glint_compile_module("${ARG_NAME}.${suffix}" "${ARG_ENTRY}" "${all_defs}" "${ARG_GROUP}" "${ARG_PROFILE}"
+                          "${ARG_TARGET_ENV}")
   endforeach()
 endfunction()
 

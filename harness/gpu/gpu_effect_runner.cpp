@@ -74,12 +74,20 @@ std::vector<std::string> passNames(const EffectPlan& plan) {
     return names;
 }
 
-EffectRunner::EffectRunner(const Context& context, const EffectPlan& plan)
+EffectRunner::EffectRunner(const Context& context, const EffectPlan& plan,
+                           vk::ShaderLookup applicationShaders)
     : context_(context), size_(plan.size) {
     std::string error;
     if (vk::createEffect(context.device, plan, effect_, &error) != Result::Ok)
         throw std::runtime_error(error);
     executor_ = vk::createExecutor(context.device);
+    if (applicationShaders) {
+        vk::ShaderLookup library = executor_.findShader;
+        executor_.findShader = [library, applicationShaders](std::string_view name) {
+            const std::span<const std::uint32_t> code = applicationShaders(name);
+            return code.empty() ? library(name) : code;
+        };
+    }
 }
 
 EffectRunner::~EffectRunner() {

@@ -34,7 +34,9 @@ class EffectRunner {
   public:
     // Creates the resources `plan` owns; throws std::runtime_error with the planner's or the
     // backend's one-line message.
-    EffectRunner(const Context& context, const EffectPlan& plan);
+    // `applicationShaders` finds the modules the application provides (the hybrid effect's
+    // ray tracing and shading passes: the harness's scene::findShader), tried before glint's own.
+    EffectRunner(const Context& context, const EffectPlan& plan, vk::ShaderLookup applicationShaders = {});
     ~EffectRunner();
     EffectRunner(const EffectRunner&) = delete;
     EffectRunner& operator=(const EffectRunner&) = delete;

@@ -93,7 +93,8 @@ void checkCase(const Case& c) {
     desc.spawnRate = c.spawnRate;
     desc.missWeight = c.missWeight;
     // Classification alone: the intersection would append its misses to the ray-traced list.
-    const test::HybridFrame gpu = test::runHybridFrame(desc, view, history, {"intersect", "hw_args"});
+    const test::HybridFrame gpu =
+        test::runHybridFrame(desc, view, history, {"intersect", "hw_args", "trace", "shade"});
 
     reference::HybridClassifyInputs in;
     in.sssr = test::classifyReferenceInputs(view);

@@ -2,6 +2,8 @@
 
 #include "support/gpu_test_context.h"
 
+#include <scene/scene_shaders.h>
+
 #include <gpu/gpu_effect_runner.h>
 #include <gpu/gpu_input_images.h>
 #include <gpu/gpu_transfer.h>
@@ -13,9 +15,51 @@
 
 namespace glint::test {
 
+namespace {
+
+template <typename T> vk::Buffer deviceBuffer(const std::vector<T>& values) {
+    const gpu::Context& context = testContext();
+    // Never empty: a binding needs a buffer even when the scene has none of these.
+    const std::size_t bytes = std::max<std::size_t>(values.size() * sizeof(T), 16);
+    vk::Buffer buffer = vk::createBuffer(context.device, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                         vk::MemoryUse::DeviceLocal);
+    if (!values.empty()) gpu::uploadBuffer(context, buffer, std::span<const T>(values));
+    return buffer;
+}
+
+} // namespace
+
+HybridTestScene::HybridTestScene(std::vector<shaders::ScenePrimitive> primitives,
+                                 const std::vector<shaders::SceneMaterial>& materials,
+                                 const std::vector<shaders::SceneLight>& lights)
+    : bvh_(scene::buildBvh(std::move(primitives))) {
+    shaders::GLINT_SceneConstants constants{};
+    constants.lightCount = static_cast<std::uint32_t>(lights.size());
+    constants.shadowSamples = 4;
+    constants_ = deviceBuffer(std::vector<shaders::GLINT_SceneConstants>{constants});
+    nodes_ = deviceBuffer(bvh_.nodes);
+    primitives_ = deviceBuffer(bvh_.primitives);
+    materials_ = deviceBuffer(materials);
+    lights_ = deviceBuffer(lights);
+}
+
+HybridTestScene::~HybridTestScene() {
+    const gpu::Context& context = testContext();
+    for (vk::Buffer* buffer : {&constants_, &nodes_, &primitives_, &materials_, &lights_})
+        vk::destroyBuffer(context.device, *buffer);
+}
+
+void HybridTestScene::addTo(vk::ResourceTable& table) const {
+    table.buffers["scene_constants"] = &constants_;
+    table.buffers["scene_nodes"] = &nodes_;
+    table.buffers["scene_primitives"] = &primitives_;
+    table.buffers["scene_materials"] = &materials_;
+    table.buffers["scene_lights"] = &lights_;
+}
+
 HybridFrame runHybridFrame(const HybridDesc& desc, const SssrTestView& view,
                            const std::vector<std::uint32_t>& history,
-                           const std::vector<std::string>& skipPasses) {
+                           const std::vector<std::string>& skipPasses, const HybridTestScene* sceneInputs) {
     EffectPlan plan;
     std::string error;
     REQUIRE(planHybrid(desc, plan, &error) == Result::Ok);
@@ -26,7 +70,7 @@ HybridFrame runHybridFrame(const HybridDesc& desc, const SssrTestView& view,
                                                  [](const std::string& name) { return name == "hw_args"; });
 
     const gpu::Context& context = testContext();
-    gpu::EffectRunner runner(context, plan);
+    gpu::EffectRunner runner(context, plan, scene::findShader);
     runner.initialize();
     gpu::uploadImageBytes(context, runner.image(hybridFeedbackImages(desc.sssr.frameIndex).second),
                           std::as_bytes(std::span(history)));
@@ -45,6 +89,7 @@ HybridFrame runHybridFrame(const HybridDesc& desc, const SssrTestView& view,
     table.images["color"] = inputs.find(InputKind::Color);
     table.images["motion"] = inputs.find(InputKind::Motion);
     table.images["environment"] = inputs.find(InputKind::Environment);
+    if (sceneInputs) sceneInputs->addTo(table);
     runner.run(plan, table);
 
     const auto words = [&](const std::string& image) {
@@ -64,6 +109,7 @@ HybridFrame runHybridFrame(const HybridDesc& desc, const SssrTestView& view,
     out.tileList = runner.readWords("sssr_tile_list", out.counters.at(3));
     out.radiance = gpu::readbackImage(context, runner.image("sssr_radiance"));
     out.confidence = gpu::readbackImage(context, runner.image("sssr_confidence"));
+    if (sceneInputs) out.hits = runner.readWords("hybrid_hits", 4 * out.hwList.size());
     return out;
 }
 

@@ -3,6 +3,8 @@
 #pragma once
 
 #include "glint/glint_hybrid.h"
+#include "glint/vulkan/vk_resources.h"
+#include "scene/scene_bvh.h"
 #include "sssr/sssr_test_scene.h"
 
 #include <cstdint>
@@ -11,6 +13,24 @@
 
 namespace glint::test {
 
+// A scene for the harness's ray tracing and shading modules: its BVH over `primitives`, its
+// materials and lights, and constants with `lightCount` lights, on the test device.
+class HybridTestScene {
+  public:
+    HybridTestScene(std::vector<shaders::ScenePrimitive> primitives,
+                    const std::vector<shaders::SceneMaterial>& materials,
+                    const std::vector<shaders::SceneLight>& lights);
+    ~HybridTestScene();
+    HybridTestScene(const HybridTestScene&) = delete;
+    HybridTestScene& operator=(const HybridTestScene&) = delete;
+    const scene::Bvh& bvh() const { return bvh_; }
+    void addTo(vk::ResourceTable& table) const;
+
+  private:
+    scene::Bvh bvh_;
+    vk::Buffer constants_, nodes_, primitives_, materials_, lights_;
+};
+
 struct HybridFrame {
     std::vector<std::uint32_t> tileClass, feedback; // per tile: this frame's class and counter
     std::vector<std::uint32_t> counters, arguments; // all words
@@ -18,12 +38,14 @@ struct HybridFrame {
     std::vector<std::uint32_t> hwList;              // counter 5 entries (counter 4 without hw_args)
     std::vector<std::uint32_t> tileList;            // counter 3 entries
     std::vector<float> radiance, confidence;        // RGBA, R
+    std::vector<std::uint32_t> hits;                // 4 words per ray-traced ray (GLINT_HYBRID_PackHit)
 };
 
 // Runs frame desc.sssr.frameIndex with `history` as last frame's feedback counters, leaving out
-// the passes named in `skipPasses`.
+// the passes named in `skipPasses`; `sceneInputs` feeds the ray tracing and shading passes.
 HybridFrame runHybridFrame(const HybridDesc& desc, const SssrTestView& view,
                            const std::vector<std::uint32_t>& history,
-                           const std::vector<std::string>& skipPasses = {});
+                           const std::vector<std::string>& skipPasses = {},
+                           const HybridTestScene* sceneInputs = nullptr);
 
 } // namespace glint::test

@@ -52,8 +52,8 @@ void checkIntersection(std::uint32_t width, std::uint32_t height, float rayTraci
     desc.feedback = false; // every tile FULL_SW: every ray tries screen space first
     desc.rayTracingThreshold = rayTracingThreshold;
     const std::uint32_t tilesX = (width + 7) / 8, tilesY = (height + 7) / 8;
-    const test::HybridFrame hybrid =
-        test::runHybridFrame(desc, view, std::vector<std::uint32_t>(std::size_t{tilesX} * tilesY, 0u));
+    const test::HybridFrame hybrid = test::runHybridFrame(
+        desc, view, std::vector<std::uint32_t>(std::size_t{tilesX} * tilesY, 0u), {"trace", "shade"});
 
     std::set<std::uint32_t> traced(hybrid.hwList.begin(), hybrid.hwList.end());
     CHECK(traced.size() == hybrid.hwList.size());

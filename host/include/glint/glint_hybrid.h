@@ -3,9 +3,9 @@
 //
 // In progress: the plan holds the depth pyramid, the tile classification (feedback counters,
 // tile classes, the screen-space and ray-traced ray lists, the denoiser's tile list), blue noise
-// and arguments, the screen-space intersection with feedback, and the ray tracer's arguments.
-// The ray-traced pass, the denoiser and the composite follow; the effect is not registered
-// until they do.
+// and arguments, the screen-space intersection with feedback, the ray tracer's arguments, ray
+// tracing and deferred shading. The denoiser and the composite follow; the effect is not
+// registered until they do.
 #pragma once
 
 #include "glint/glint_pass.h"
@@ -31,6 +31,13 @@ struct HybridDesc {
     float confidenceThreshold = 0.9f;  // screen-space hits below it are ray traced instead
     float maxRayDistance = 100.0f;     // world units, the ray tracer's t_max
     float rayOffset = 1e-3f;           // world units along the normal, the ray tracer's origin offset
+
+    // The application's modules for the two ray-traced passes: GLINT_HYBRID_TraceRay
+    // (glint/hybrid/glint_hybrid_trace.hlsli) and GLINT_HYBRID_ShadeHit (_shade.hlsli; ".half"
+    // is appended with halfPrecisionStorage). glint's harness provides these over its simulated
+    // scenes; their scene resources are the application's inputs.
+    std::string tracePipeline = "hybrid_trace_bvh";
+    std::string shadePipeline = "hybrid_shade_scene";
 };
 
 // Resources (besides SSSR's inputs, glint_sssr.h):
@@ -42,6 +49,9 @@ struct HybridDesc {
 //   "sssr_tile_list", "sssr_roughness", "sssr_radiance", "sssr_confidence" as in glint_sssr.h
 //   "hybrid_counters"     8 words, "hybrid_indirect_args" 9 words (glint_hybrid_constants.h)
 //   "sssr_blue_noise_source" (owned, glint::sssrBlueNoise()), "sssr_blue_noise", "depth_pyramid"
+//   "hybrid_hits"         16 bytes per ray-traced ray (GLINT_HYBRID_PackHit)
+// and the application's scene for its trace and shade modules (the harness's: "scene_constants",
+// "scene_nodes", "scene_primitives", "scene_materials", "scene_lights").
 Result planHybrid(const HybridDesc& desc, EffectPlan& plan, std::string* error);
 
 // The names of frame `frameIndex`'s feedback images: {written, read as history}.

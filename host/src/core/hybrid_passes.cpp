@@ -30,6 +30,8 @@ std::string checkHybrid(const HybridDesc& desc) {
     if (!(std::isfinite(desc.maxRayDistance) && desc.maxRayDistance > 0.0f))
         return "maxRayDistance must be positive and finite";
     if (!finiteIn(desc.rayOffset, 0.0f, 1e3f)) return "rayOffset must be 0..1000";
+    if (desc.tracePipeline.empty() || desc.shadePipeline.empty())
+        return "tracePipeline and shadePipeline must name modules";
     return {};
 }
 
@@ -148,6 +150,42 @@ Pass rayTracedArgumentsPass() {
     return pass;
 }
 
+// The ray-traced passes read the listed pixels' surfaces again to draw the same samples.
+std::vector<ResourceUse> rayTracedSurfaceUses() {
+    return {{"g_glint_depth", "depth", Access::Read},
+            {"g_glint_normals", "normals", Access::Read},
+            {"g_glint_roughness", "sssr_roughness", Access::Read},
+            {"g_glint_blue_noise", "sssr_blue_noise", Access::Read},
+            {"g_glint_counters", "hybrid_counters", Access::Read},
+            {"g_glint_hw_ray_list", "hybrid_hw_ray_list", Access::Read},
+            {"g_scene_nodes", "scene_nodes", Access::Read},
+            {"g_scene_primitives", "scene_primitives", Access::Read}};
+}
+
+Pass tracePass(const HybridDesc& desc, const std::vector<std::byte>& constants) {
+    Pass pass = hybridPass("trace", desc.tracePipeline, GLINT_SSSR_RAYS_PER_GROUP, 1, constants);
+    pass.dispatch = IndirectDispatch{"hybrid_indirect_args", GLINT_HYBRID_HW_ARGUMENTS_OFFSET};
+    pass.uses = rayTracedSurfaceUses();
+    pass.uses.push_back({"g_glint_hits", "hybrid_hits", Access::Write});
+    return pass;
+}
+
+Pass shadePass(const HybridDesc& desc, const std::vector<std::byte>& constants) {
+    Pass pass = hybridPass("shade",
+                           desc.sssr.halfPrecisionStorage ? desc.shadePipeline + ".half" : desc.shadePipeline,
+                           GLINT_SSSR_RAYS_PER_GROUP, 1, constants);
+    pass.dispatch = IndirectDispatch{"hybrid_indirect_args", GLINT_HYBRID_HW_ARGUMENTS_OFFSET};
+    pass.uses = rayTracedSurfaceUses();
+    pass.uses.insert(pass.uses.end(), {{"g_glint_hits", "hybrid_hits", Access::Read},
+                                       {"g_glint_environment", "environment", Access::Read},
+                                       {"g_glint_radiance", "sssr_radiance", Access::ReadWrite},
+                                       {"g_glint_confidence", "sssr_confidence", Access::ReadWrite},
+                                       {"g_scene_constants", "scene_constants", Access::Read},
+                                       {"g_scene_materials", "scene_materials", Access::Read},
+                                       {"g_scene_lights", "scene_lights", Access::Read}});
+    return pass;
+}
+
 } // namespace
 
 std::pair<std::string, std::string> hybridFeedbackImages(std::uint32_t frameIndex) {
@@ -202,6 +240,7 @@ Result planHybrid(const HybridDesc& desc, EffectPlan& plan, std::string* error) 
     plan.buffers.push_back({"sssr_tile_list", tiles * 4u, false});
     plan.buffers.push_back({"hybrid_counters", GLINT_HYBRID_COUNTER_WORDS * 4u, false});
     plan.buffers.push_back({"hybrid_indirect_args", GLINT_HYBRID_ARGUMENT_WORDS * 4u, true});
+    plan.buffers.push_back({"hybrid_hits", std::uint64_t{w} * h * 16u, false});
 
     const shaders::GLINT_SssrConstants sssrConstants =
         core::makeSssrConstants(desc.sssr, viewFromClip, worldFromView);
@@ -210,6 +249,8 @@ Result planHybrid(const HybridDesc& desc, EffectPlan& plan, std::string* error) 
     plan.passes.push_back(blueNoisePass(core::packConstants(sssrConstants)));
     plan.passes.push_back(intersectPass(desc, constants));
     plan.passes.push_back(rayTracedArgumentsPass());
+    plan.passes.push_back(tracePass(desc, constants));
+    plan.passes.push_back(shadePass(desc, constants));
     return Result::Ok;
 }
 
