@@ -5,6 +5,7 @@
 #include "capture/capture_error.h"
 #include "capture/exr_file.h"
 #include "capture/frame_validation.h"
+#include "capture/json_text.h"
 
 #include <OpenEXR/ImfDoubleAttribute.h>
 #include <OpenEXR/ImfFloatAttribute.h>
@@ -15,6 +16,7 @@
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <numbers>
 
@@ -211,11 +213,9 @@ Json parseJsonFile(const std::filesystem::path& file) {
     std::error_code ec;
     if (!std::filesystem::is_regular_file(file, ec)) fail(file, "camera side file does not exist");
     std::ifstream in(file, std::ios::binary);
-    try {
-        return Json::parse(in);
-    } catch (const Json::exception& e) {
-        fail(file, std::string("invalid JSON: ") + e.what());
-    }
+    const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    if (!in && !in.eof()) fail(file, "cannot read the camera side file");
+    return parseJson(text, file, "invalid JSON");
 }
 
 Camera sideFileCamera(const std::string& framePath, const ChannelMap& map, std::uint32_t width,

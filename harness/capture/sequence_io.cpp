@@ -3,6 +3,7 @@
 #include "capture/capture_error.h"
 #include "capture/exr_file.h"
 #include "capture/frame_io.h"
+#include "capture/json_text.h"
 
 #include <nlohmann/json.hpp>
 
@@ -41,11 +42,7 @@ nlohmann::json parseManifest(const std::filesystem::path& manifest) {
     std::ifstream in(manifest, std::ios::binary);
     if (!in.read(text.data(), static_cast<std::streamsize>(text.size())))
         fail(manifest, "cannot read the manifest");
-    try {
-        return nlohmann::json::parse(text);
-    } catch (const nlohmann::json::exception& e) {
-        fail(manifest, std::string("malformed JSON: ") + e.what());
-    }
+    return parseJson(text, manifest, "malformed JSON");
 }
 
 std::string requiredString(const nlohmann::json& j, const char* key, const std::filesystem::path& manifest) {

@@ -4,6 +4,7 @@
 #include "cli_capture.h"
 #include "cli_commands.h"
 
+#include "capture/json_text.h"
 #include "report/report_html.h"
 
 #include <nlohmann/json.hpp>
@@ -12,6 +13,7 @@
 #include <cstdio>
 #include <ctime>
 #include <fstream>
+#include <iterator>
 
 namespace glint::cli {
 namespace {
@@ -28,10 +30,12 @@ nlohmann::json readSummary(const std::filesystem::path& dir) {
     if (!file)
         throw std::invalid_argument("report: " + (dir / "summary.json").string() +
                                     " is missing (run glint run first)");
+    const std::string text{std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
     try {
-        return nlohmann::json::parse(file);
+        return nlohmann::json::parse(text);
     } catch (const nlohmann::json::exception& error) {
-        throw std::invalid_argument("report: " + (dir / "summary.json").string() + ": " + error.what());
+        throw std::invalid_argument("report: " + (dir / "summary.json").string() +
+                                    ": malformed JSON: " + capture::jsonProblem(error, text));
     }
 }
 

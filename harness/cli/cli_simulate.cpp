@@ -29,6 +29,7 @@ int runSimulate(const SimulateOptions& options) {
     int exitCode = kExitOk;
     try {
         const scene::Simulation sim = scene::simulate(context, scene);
+        for (const std::string& warning : sim.warnings) std::fprintf(stderr, "glint: %s\n", warning.c_str());
         const capture::Environment* environment = sim.environment ? &*sim.environment : nullptr;
         capture::writeSequence(options.outDir, sim.frames, scene.frameRate, environment);
 

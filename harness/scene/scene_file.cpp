@@ -1,5 +1,7 @@
 #include "scene/scene_file.h"
 
+#include "scene/scene_geometry.h"
+
 #include <toml++/toml.h>
 
 #include <cmath>
@@ -168,6 +170,53 @@ std::string indexed(const char* key, std::size_t i) {
     return s;
 }
 
+std::string vectorText(const double (&v)[3]) {
+    std::ostringstream s;
+    s << "[" << v[0] << ", " << v[1] << ", " << v[2] << "]";
+    return s.str();
+}
+
+// A look-at camera needs a view direction that is neither zero nor parallel to camera.up on
+// every frame it renders, and on the frame before the first (the previous camera of frame 0);
+// otherwise its right vector, cross(direction, up), is zero and the view matrix is not finite.
+// Each key is checked too: frames past the last one (--frame-count) show it.
+void checkLookAt(const Reader& r, const toml::table& t, const Scene& scene) {
+    const CameraDesc& c = scene.camera;
+    const double up[3] = {c.up[0], c.up[1], c.up[2]};
+    const double upLength = std::sqrt(up[0] * up[0] + up[1] * up[1] + up[2] * up[2]);
+    const toml::node* upNode = t.get("up") ? t.get("up") : &t;
+    if (!(upLength > 0.0)) r.fail(upNode, "camera.up", "must not be zero");
+    const auto check = [&](const Vec3& position, const Vec3& target, const std::string& when) {
+        const double eye[3] = {position[0], position[1], position[2]};
+        const double f[3] = {static_cast<double>(target[0]) - eye[0], static_cast<double>(target[1]) - eye[1],
+                             static_cast<double>(target[2]) - eye[2]};
+        const double length = std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+        if (!(length > 0.0))
+            r.fail(t.get("target") ? t.get("target") : &t, "camera.target",
+                   "equals camera.position " + vectorText(eye) + " " + when + ": the camera looks nowhere");
+        const double x[3] = {f[1] * up[2] - f[2] * up[1], f[2] * up[0] - f[0] * up[2],
+                             f[0] * up[1] - f[1] * up[0]};
+        const double sine = std::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]) / (length * upLength);
+        if (sine < 1e-6) {
+            const double direction[3] = {f[0] / length, f[1] / length, f[2] / length};
+            r.fail(upNode, "camera.up",
+                   std::string(t.get("up") ? "" : "the default ") + vectorText(up) +
+                       " is parallel to the view direction " + vectorText(direction) + " " + when +
+                       "; give camera.up a direction across the view (for a camera looking straight up or "
+                       "down, e.g. [0, 0, -1])");
+        }
+    };
+    for (std::int64_t frame = 0; frame < static_cast<std::int64_t>(scene.frameCount); ++frame) {
+        const auto [position, target] = cameraEyeTarget(c, static_cast<double>(frame));
+        check(position, target, "on frame " + std::to_string(frame));
+    }
+    const auto [position, target] = cameraEyeTarget(c, -1.0);
+    check(position, target, "on frame -1 (the previous camera of frame 0)");
+    if (c.keys.size() > 1)
+        for (std::size_t i = 0; i < c.keys.size(); ++i)
+            check(c.keys[i].position, c.keys[i].target, "at camera.keyframes[" + std::to_string(i) + "]");
+}
+
 void readCamera(const Reader& r, const toml::table& t, Scene& scene) {
     const std::string p = "camera";
     r.onlyKeys(t, p,
@@ -212,6 +261,7 @@ void readCamera(const Reader& r, const toml::table& t, Scene& scene) {
         k.target = r.vec3(*keys[i], kp, "target", c.keys.empty() ? key.target : c.keys.back().target);
         c.keys.push_back(k);
     }
+    if (!c.view) checkLookAt(r, t, scene);
 }
 
 void readEnvironment(const Reader& r, const toml::table& t, Scene& scene) {

@@ -256,13 +256,17 @@ Mat4 viewAt(const Scene& scene, double frame, Vec3& eye) {
         eye = {static_cast<float>(inv.m[3]), static_cast<float>(inv.m[7]), static_cast<float>(inv.m[11])};
         return *c.view;
     }
-    const auto [a, next] = segment(c.keys, frame);
-    const auto [b, t] = next;
-    eye = lerp(a->position, b->position, t);
-    const Vec3 target = lerp(a->target, b->target, t);
+    const auto [position, target] = cameraEyeTarget(c, frame);
+    eye = position;
     return lookAt(d3(eye), d3(target), d3(c.up));
 }
 } // namespace
+
+std::pair<Vec3, Vec3> cameraEyeTarget(const CameraDesc& camera, double frame) {
+    const auto [a, next] = segment(camera.keys, frame);
+    const auto [b, t] = next;
+    return {lerp(a->position, b->position, t), lerp(a->target, b->target, t)};
+}
 
 FrameCamera cameraAt(const Scene& scene, std::uint32_t frame) {
     FrameCamera fc;

@@ -7,6 +7,7 @@
 #include "scene_constants.h"
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace glint::scene {
@@ -40,5 +41,8 @@ struct FrameCamera {
     Vec3 eye{};
 };
 FrameCamera cameraAt(const Scene& scene, std::uint32_t frame);
+// A look-at camera's eye and target at a possibly fractional frame: its keys interpolated
+// linearly and clamped outside their range.
+std::pair<Vec3, Vec3> cameraEyeTarget(const CameraDesc& camera, double frame);
 
 } // namespace glint::scene

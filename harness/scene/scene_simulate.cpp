@@ -14,6 +14,8 @@
 #include <cmath>
 #include <cstring>
 #include <numbers>
+#include <optional>
+#include <sstream>
 
 namespace glint::scene {
 namespace {
@@ -225,7 +227,82 @@ struct Resources {
     }
 };
 
+// Surface pixels whose device depth came out exactly the background's. Standard depth with a
+// small near plane leaves float depth no room near the far plane (near 0.001, far 1e4: a
+// surface at 9990 gets exactly 1.0f), so the ray caster draws a surface there (its normal faces
+// the ray instead of being -view, its roughness and material are the surface's) that every
+// consumer of the depth reads as sky. A surface facing the ray head-on with roughness 1 and no
+// material layers cannot be told from the sky and is not counted.
+std::size_t surfacesAtBackgroundDepth(const capture::Frame& f, const capture::Mat4& viewProjection,
+                                      const Vec3& eye, float background, bool ndcYDown) {
+    const capture::Layer* depth = capture::findLayer(f, "depth");
+    const capture::Layer* normal = capture::findLayer(f, "normal");
+    const capture::Layer* roughness = capture::findLayer(f, "roughness");
+    const capture::Layer* material = capture::findLayer(f, "material");
+    const std::optional<capture::Mat4> inverse = capture::inverse(viewProjection);
+    if (!depth || !normal || !inverse) return 0;
+    const capture::Mat4& m = *inverse;
+    std::size_t count = 0;
+    for (std::uint32_t y = 0; y < f.height; ++y)
+        for (std::uint32_t x = 0; x < f.width; ++x) {
+            const std::size_t i = std::size_t{y} * f.width + x;
+            if (depth->pixels[i] != background) continue;
+            bool surface = (roughness && roughness->pixels[i] != 1.0f);
+            if (material)
+                for (std::size_t c = 0; c < 4; ++c) surface = surface || material->pixels[i * 4 + c] != 0.0f;
+            if (!surface) {
+                // The primary ray of scene_trace.hlsli (ScenePrimaryRay), in double: the pixel
+                // centre unprojected at NDC depth 0.5, from the eye. The sky's normal is -dir to
+                // float rounding (about 1e-6); a surface's differs unless it faces the ray.
+                const double u = (x + 0.5) / f.width, v = (y + 0.5) / f.height;
+                const double ndc[4] = {2.0 * u - 1.0, ndcYDown ? 2.0 * v - 1.0 : 1.0 - 2.0 * v, 0.5, 1.0};
+                double q[4] = {};
+                for (std::size_t r = 0; r < 4; ++r)
+                    for (std::size_t c = 0; c < 4; ++c) q[r] += m.m[r * 4 + c] * ndc[c];
+                double dir[3], length = 0.0;
+                for (std::size_t c = 0; c < 3; ++c) {
+                    dir[c] = q[c] / q[3] - static_cast<double>(eye[c]);
+                    length += dir[c] * dir[c];
+                }
+                length = std::sqrt(length);
+                double gap = 0.0;
+                for (std::size_t c = 0; c < 3; ++c) {
+                    const double d = static_cast<double>(normal->pixels[i * 3 + c]) + dir[c] / length;
+                    gap += d * d;
+                }
+                surface = std::sqrt(gap) > 1e-3;
+            }
+            count += surface;
+        }
+    return count;
+}
+
 } // namespace
+
+std::string backgroundDepthWarning(const Scene& scene, std::size_t pixels, std::uint32_t frames) {
+    if (pixels == 0) return {};
+    const CameraDesc& c = scene.camera;
+    std::ostringstream s;
+    s << scene.file.string() << ": warning: " << pixels << " surface pixel" << (pixels == 1 ? "" : "s")
+      << " on " << frames << " of " << scene.frameCount << " frame" << (scene.frameCount == 1 ? "" : "s")
+      << (pixels == 1 ? " has" : " have") << " device depth "
+      << (c.depth == capture::DepthConvention::Standard ? 1 : 0) << ", the background's (";
+    switch (c.depth) {
+    case capture::DepthConvention::Standard:
+        s << "standard depth, near " << c.nearZ << ", far " << c.farZ;
+        break;
+    case capture::DepthConvention::Reversed:
+        s << "reversed depth, near " << c.nearZ << ", far " << c.farZ;
+        break;
+    case capture::DepthConvention::ReversedInfinite:
+        s << "reversed_infinite depth, near " << c.nearZ;
+        break;
+    }
+    s << "), so they replay as sky while their other layers show a surface; "
+      << (c.depth == capture::DepthConvention::Standard ? "use depth = \"reversed\" or " : "")
+      << "set camera.far well beyond the farthest surface";
+    return s.str();
+}
 
 std::vector<std::string> captureEffects(const Scene& scene) {
     std::vector<std::string> effects;
@@ -251,6 +328,7 @@ Simulation simulate(const gpu::Context& context, const Scene& scene) {
 
     std::vector<OutputImage> outputs;
     std::vector<std::size_t> passSlot; // plan pass -> sim.passes entry (chunks share one)
+    std::uint32_t framesWithLostSurfaces = 0;
     for (std::uint32_t frame = 0; frame < scene.frameCount; ++frame) {
         const FrameCamera cam = cameraAt(scene, frame);
         FrameGeometry geometry = buildGeometry(scene, meshes, frame);
@@ -330,6 +408,10 @@ Simulation simulate(const gpu::Context& context, const Scene& scene) {
             f.layers.push_back(
                 toLayer(out, gpu::readbackImage(context, image), vk::formatChannelCount(image.format)));
         }
+        const std::size_t lost =
+            surfacesAtBackgroundDepth(f, vp, cam.eye, c.backgroundDepth, scene.camera.ndcYDown);
+        sim.surfacesAtBackgroundDepth += lost;
+        framesWithLostSurfaces += lost > 0;
         sim.frames.push_back(std::move(f));
         // This frame's geometry and lights are done with; the executor waited in executePlan.
         for (int i = 0; i < 4; ++i) {
@@ -337,6 +419,9 @@ Simulation simulate(const gpu::Context& context, const Scene& scene) {
             res.buffers.pop_back();
         }
     }
+    if (sim.surfacesAtBackgroundDepth > 0)
+        sim.warnings.push_back(
+            backgroundDepthWarning(scene, sim.surfacesAtBackgroundDepth, framesWithLostSurfaces));
     return sim;
 }
 

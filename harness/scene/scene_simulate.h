@@ -25,10 +25,18 @@ struct Simulation {
     std::vector<std::string> layers;                 // layers written into every frame
     std::vector<PassTime> passes;                    // passes run for every frame, in order
     std::size_t primitives = 0;                      // of the first frame
+    // Surface pixels (over all frames) whose device depth is exactly the background's: float
+    // depth could not tell them from the far plane, so they replay as sky.
+    std::size_t surfacesAtBackgroundDepth = 0;
+    std::vector<std::string> warnings; // one line each, naming the scene file; for stderr
 };
 
 // Throws SceneError for scene problems (missing model...), std::runtime_error for GPU ones.
 Simulation simulate(const gpu::Context& context, const Scene& scene);
+
+// The one-line warning for `pixels` surface pixels at the background depth on `frames` frames
+// (empty when there are none).
+std::string backgroundDepthWarning(const Scene& scene, std::size_t pixels, std::uint32_t frames);
 
 // The effect names the capture declares: hybrid reflections read the reflection layers, so
 // "hybrid" is written as "reflections".

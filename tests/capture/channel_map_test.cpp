@@ -388,6 +388,9 @@ TEST_CASE("a malformed camera side file is a one-line error naming it and the pr
         return message;
     };
     CHECK(sideError(R"({"frames": [{"file": )").find("invalid JSON") != std::string::npos);
+    CHECK(sideError("{\"frames\": [\n{\"fov\": 1e999}]}") ==
+          (dir / "camera.json").string() +
+              ": invalid JSON: line 2: the number 1e999 is too large for a double (beyond 1.8e308)");
     nlohmann::json cameras = blenderCameras();
     cameras["frames"][1].erase("view");
     CHECK(sideError(cameras.dump()).find("frames[1].view: missing") != std::string::npos);

@@ -120,6 +120,29 @@ TEST_CASE("a malformed or invalid manifest is rejected with one line naming it",
     }
 }
 
+TEST_CASE("JSON errors in a manifest read without the JSON library's exception codes", "[capture]") {
+    const auto dir = test::freshTestDir("sequence_json_words");
+    writeSequence(dir, sampleFrames(1), 30.0);
+    const auto manifest = dir / "manifest.json";
+    // A number beyond the largest double (about 1.8e308) is named with its line.
+    test::writeBytes(manifest,
+                     "{\"format\": \"glint-sequence\", \"version\": 1,\n\"frames\": [\"frame_0000.exr\"],\n"
+                     "\"frameRate\": 1e999}");
+    CHECK(sequenceError(dir) ==
+          manifest.string() +
+              ": malformed JSON: line 3: the number 1e999 is too large for a double (beyond 1.8e308)");
+    test::writeBytes(manifest, "{\"frameRate\": -2e400}");
+    CHECK(sequenceError(dir) ==
+          manifest.string() + ": malformed JSON: line 1: the number -2e400 is too large for a double (beyond "
+                              "1.8e308)");
+    // Syntax errors keep the library's position and description, without its code.
+    test::writeBytes(manifest, "{\"format\": nope}");
+    const std::string syntax = sequenceError(dir);
+    CHECK_THAT(syntax, Catch::StartsWith(manifest.string() + ": malformed JSON: line 1, column "));
+    CHECK_THAT(syntax, !Catch::Contains("json.exception"));
+    CHECK_THAT(syntax, !Catch::Contains("parse error at"));
+}
+
 TEST_CASE("a folder without a manifest is rejected", "[capture]") {
     const auto dir = test::freshTestDir("sequence_no_manifest");
     CHECK_THAT(sequenceError(dir), Catch::Contains("manifest.json: file does not exist"));

@@ -40,6 +40,22 @@ glint_cli_test(NAME "info on a missing file prints one line and exits 2" LABELS 
   COMMAND info "${GLINT_CLI_SAMPLE_DIR}/does_not_exist.exr")
 glint_cli_test(NAME "an unknown verb is a usage error" LABELS unit EXIT 2
   COMMAND frobnicate)
+# Messages that name the real cause (issue 24, item 5).
+glint_cli_test(NAME "simulate of a camera looking straight down with the default up names camera.up" LABELS unit
+  EXIT 2
+  STDERR_ONE_LINE "^glint: [^ ]*straight_down.toml:5: camera.up: the default \\[0, 1, 0\\] is parallel to the view direction \\[0, -1, 0\\] on frame 0. give camera.up a direction across the view"
+  COMMAND simulate "${CMAKE_CURRENT_SOURCE_DIR}/cli/scenes/straight_down.toml" --out "${GLINT_CLI_SAMPLE_DIR}/straight_down")
+glint_cli_test(NAME "simulate warns in one line when surface pixels get the background depth" LABELS gpu EXIT 0
+  STDOUT "wrote"
+  STDERR_ONE_LINE "^glint: [^ ]*far_wall.toml: warning: [1-9][0-9]* surface pixels on 1 of 1 frame have device depth 1, the background's \\(standard depth, near 0.001, far 10000\\), so they replay as sky"
+  COMMAND simulate "${CMAKE_CURRENT_SOURCE_DIR}/cli/scenes/far_wall.toml" --out "${GLINT_CLI_SAMPLE_DIR}/far_wall")
+glint_cli_test(NAME "a manifest number beyond a double names the line, not the JSON library's code" LABELS unit EXIT 2
+  STDERR_ONE_LINE "overflow_manifest/manifest.json: malformed JSON: line 8: the number 1e999 is too large for a double \\(beyond 1.8e308\\)$"
+  COMMAND info "${GLINT_CLI_SAMPLE_DIR}/overflow_manifest")
+glint_cli_test(NAME "a setting beyond its range names the range" LABELS gpu EXIT 2
+  STDERR_ONE_LINE "^glint: --set thickness needs a value in 0..1e\\+06, got '1e9'$"
+  COMMAND bench sssr --size 16x16 --runs 1 --scene "${PROJECT_SOURCE_DIR}/harness/scenes/glossy_room.toml"
+          --set thickness=1e9)
 glint_cli_test(NAME "devices lists at least one Vulkan device with its subgroup size" LABELS gpu EXIT 0
   STDOUT "subgroup size [0-9]+"
   COMMAND --validate devices)

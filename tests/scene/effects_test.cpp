@@ -4,8 +4,11 @@
 #include "support/gpu_test_context.h"
 
 #include "capture/sequence_io.h"
+#include "scene/scene_bvh.h"
+#include "scene/scene_file.h"
 #include "scene/scene_geometry.h"
 #include "scene/scene_simulate.h"
+#include "scene/scene_trace.h"
 
 #include <catch2/catch.hpp>
 
@@ -59,6 +62,98 @@ TEST_CASE("A reflections-only scene traces no shadow layers", "[scene][gpu]") {
     const Simulation referenced = simulate(test::testContext(), scene);
     CHECK(passNames(referenced) == Names{"gbuffer", "shade", "reference.reflection"});
     CHECK(frameLayers(referenced.frames.at(0)).back() == "reference.reflection");
+    GLINT_REQUIRE_NO_VALIDATION_ERRORS();
+}
+
+// A wall at 9990 across the whole view, tilted 5 degrees (so that no pixel sees it head-on) and
+// a near sphere; `depth` and `effects` vary.
+Scene farWallScene(const std::string& depth, const std::string& effects) {
+    return parseScene("effects = [" + effects + R"(]
+resolution = [48, 27]
+[camera]
+position = [0, 0, 0]
+target = [0, 0, -1]
+near = 0.001
+far = 10000
+depth = ")" + depth + R"("
+[[lights]]
+direction = [0, 1, 1]
+[materials.wall]
+roughness = 0.5
+[[objects]]
+type = "box"
+material = "wall"
+position = [0, 0, -9990]
+size = [30000, 30000, 1]
+rotation = [0, 5, 0]
+[[objects]]
+type = "sphere"
+material = "wall"
+position = [0, 0, -5]
+radius = 1
+)",
+                      "far_wall.toml");
+}
+
+TEST_CASE("Surface pixels whose depth rounds to the background's are counted and warned about",
+          "[scene][gpu]") {
+    const Scene scene = farWallScene("standard", "\"reflections\"");
+    const Simulation sim = simulate(test::testContext(), scene);
+    const capture::Frame& frame = sim.frames.at(0);
+    // An independent bound: pixels whose primary ray (cast on the CPU, depth in double) hits a
+    // surface whose standard depth lies within 1e-6 of 1, i.e. within a few float ulps (6e-8
+    // below 1, 1.2e-7 above) plus the ray caster's float error on clip.z / clip.w (~1e-7). That
+    // includes the wall's part beyond the far plane: with near 0.001 every depth from about 7700
+    // to infinity is within 1e-7 of 1, and the ray caster keeps a hit whose float depth is <= 1.
+    // No other surface pixel can come out as exactly 1.0f; the sphere (depth 1 - 2.5e-4) never does.
+    const FrameCamera cam = cameraAt(scene, 0);
+    const Bvh bvh = buildBvh(buildGeometry(scene, {}, 0).primitives);
+    const capture::Mat4 vp = capture::viewProjection(cam.camera);
+    const capture::Mat4 inv = *capture::inverse(vp);
+    std::size_t candidates = 0, sphere = 0;
+    for (std::uint32_t y = 0; y < scene.height; ++y)
+        for (std::uint32_t x = 0; x < scene.width; ++x) {
+            const capture::Vec4 q = capture::transform(
+                inv, {2.0 * (x + 0.5) / scene.width - 1.0, 1.0 - 2.0 * (y + 0.5) / scene.height, 0.5, 1.0});
+            const double d[3] = {q.x / q.w, q.y / q.w, q.z / q.w}; // the eye is the origin
+            const double len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+            const Ray ray{{0.0f, 0.0f, 0.0f},
+                          {static_cast<float>(d[0] / len), static_cast<float>(d[1] / len),
+                           static_cast<float>(d[2] / len)}};
+            const Hit hit = traceClosest(bvh, ray);
+            if (hit.t < 0.0f) continue;
+            const double t = hit.t;
+            const capture::Vec4 clip = capture::transform(
+                vp, {static_cast<double>(ray.direction[0]) * t, static_cast<double>(ray.direction[1]) * t,
+                     static_cast<double>(ray.direction[2]) * t, 1.0});
+            const double depth = clip.z / clip.w;
+            sphere += t < 10.0;
+            candidates += std::abs(depth - 1.0) < 1e-6;
+        }
+    REQUIRE(sphere > 0);
+    REQUIRE(candidates > sphere);
+    CHECK(sim.surfacesAtBackgroundDepth > 0);
+    CHECK(sim.surfacesAtBackgroundDepth <= candidates);
+    std::size_t atBackground = 0;
+    for (float depth : capture::findLayer(frame, "depth")->pixels) atBackground += depth == 1.0f;
+    CHECK(sim.surfacesAtBackgroundDepth <= atBackground);
+    REQUIRE(sim.warnings.size() == 1);
+    CHECK(sim.warnings[0] ==
+          "far_wall.toml: warning: " + std::to_string(sim.surfacesAtBackgroundDepth) +
+              " surface pixels on 1 of 1 frame have device depth 1, the background's (standard "
+              "depth, near 0.001, far 10000), so they replay as sky while their other layers "
+              "show a surface; use depth = \"reversed\" or set camera.far well beyond the "
+              "farthest surface");
+
+    // Without material layers the normal alone tells the wall from the sky (it never faces the
+    // ray head-on): the same pixels are found.
+    const Simulation shadows = simulate(test::testContext(), farWallScene("standard", "\"shadows\""));
+    CHECK(shadows.surfacesAtBackgroundDepth == sim.surfacesAtBackgroundDepth);
+
+    // Reversed depth keeps float precision far away (the wall's depth is about 1e-10, not 0).
+    const Simulation reversed = simulate(test::testContext(), farWallScene("reversed", "\"reflections\""));
+    CHECK(reversed.surfacesAtBackgroundDepth == 0);
+    CHECK(reversed.warnings.empty());
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }
 

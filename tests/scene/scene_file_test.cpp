@@ -210,6 +210,51 @@ TEST_CASE("A model file assimp cannot read fails when the geometry is built", "[
     }
 }
 
+TEST_CASE("A look-at camera parallel to its up vector names camera.up, not the view matrix",
+          "[scene][file]") {
+    // Straight down with the default up: cross(direction, up) is zero, so the view matrix would
+    // have no right vector (frames were once refused as "camera view matrix is not finite").
+    CHECK(errorOf(std::string(kMinimal) + "[camera]\nposition = [0, 5, 0]\ntarget = [0, 0, 0]\n",
+                  "scenes/down.toml") ==
+          "scenes/down.toml:4: camera.up: the default [0, 1, 0] is parallel to the view direction [0, -1, 0] "
+          "on "
+          "frame 0; give camera.up a direction across the view (for a camera looking straight up or down, "
+          "e.g. [0, 0, -1])");
+    // A given up is quoted as given, on its own line.
+    CHECK(
+        errorOf(std::string(kMinimal) +
+                "[camera]\nposition = [0, 0, 0]\ntarget = [2, 0, 0]\nup = [-3, 0, 0]\n") ==
+        "bad.toml:7: camera.up: [-3, 0, 0] is parallel to the view direction [1, 0, 0] on frame 0; give "
+        "camera.up a direction across the view (for a camera looking straight up or down, e.g. [0, 0, -1])");
+    CHECK(errorOf(std::string(kMinimal) + "[camera]\nup = [0, 0, 0]\n") ==
+          "bad.toml:5: camera.up: must not be zero");
+    CHECK(errorOf(std::string(kMinimal) + "[camera]\nposition = [1, 2, 3]\ntarget = [1, 2, 3]\n") ==
+          "bad.toml:6: camera.target: equals camera.position [1, 2, 3] on frame 0: the camera looks nowhere");
+    // Keyframes: the first frame whose interpolated camera looks along up is named (frame 1 of
+    // keys at 0 and 2 is halfway: from [0, 5, 0] toward [0, 0, 0], straight down).
+    CHECK(errorOf("frames = 3\n" + std::string(kMinimal) +
+                  "[camera]\n[[camera.keyframes]]\nframe = 0\nposition = [-1, 5, 0]\ntarget = [1, 0, 0]\n"
+                  "[[camera.keyframes]]\nframe = 2\nposition = [1, 5, 0]\ntarget = [-1, 0, 0]\n") ==
+          "bad.toml:5: camera.up: the default [0, 1, 0] is parallel to the view direction [0, -1, 0] on "
+          "frame 1; "
+          "give camera.up a direction across the view (for a camera looking straight up or down, e.g. [0, 0, "
+          "-1])");
+    // A key past the rendered frames is checked too (--frame-count may reach it).
+    CHECK(contains(errorOf(std::string(kMinimal) +
+                           "[camera]\n[[camera.keyframes]]\nframe = 0\n[[camera.keyframes]]\nframe = 9\n"
+                           "position = [0, 5, 0]\n"),
+                   "camera.up: the default [0, 1, 0] is parallel to the view direction [0, -1, 0] at "
+                   "camera.keyframes[1]"));
+    // Straight down with an up across the view, or given by a view matrix, is fine.
+    CHECK_NOTHROW(parseScene(std::string(kMinimal) + "[camera]\nposition = [0, 5, 0]\ntarget = [0, 0, 0]\n"
+                                                     "up = [0, 0, -1]\n",
+                             "good.toml"));
+    CHECK_NOTHROW(parseScene(std::string(kMinimal) +
+                                 "[camera]\nposition = [0, 5, 0]\ntarget = [0, 0, 0]\n"
+                                 "view = [1, 0, 0, 0, 0, 0, -1, 0, 0, 1, 0, -5, 0, 0, 0, 1]\n",
+                             "good.toml"));
+}
+
 TEST_CASE("A missing scene file is an error naming it", "[scene][file]") {
     CHECK_THROWS_WITH(loadScene("/no/such/scene.toml"), "/no/such/scene.toml: cannot open the scene file");
 }

@@ -102,3 +102,13 @@ TEST_CASE("filter: NaN and Inf depth, normals and moments give finite output", "
         inputs.normals[4 * i] = inputs.normals[4 * i + 1] = 0.0f;
     checkFilter(45, 29, inputs);
 }
+
+TEST_CASE("an invalid desc is refused with the planner's message, its prefix once", "[filter][plan]") {
+    ShadowDenoiserDesc desc;
+    desc.size = {8, 8};
+    desc.depthSigma = 0.0f;
+    CHECK_THROWS_WITH(test::ShadowRunner(desc), "shadow denoiser: depthSigma must be finite and >= 1e-6");
+    desc.depthSigma = 1.0f;
+    desc.normalPower = 0.5f;
+    CHECK_THROWS_WITH(test::ShadowRunner(desc), "shadow denoiser: normalPower must be 1..256");
+}

@@ -35,7 +35,7 @@ EffectPlan planOrThrow(const ShadowDenoiserDesc& desc) {
     EffectPlan plan;
     std::string error;
     if (planShadowDenoiser(desc, plan, &error) != Result::Ok)
-        throw std::invalid_argument("shadow denoiser: " + error);
+        throw std::invalid_argument(error); // the planner's message names the effect already
     return plan;
 }
 } // namespace
