@@ -1,5 +1,7 @@
 // CPU reference of the shadow denoiser's tile classification + temporal pass
-// (docs/shadow_denoiser.md), written from the documented algorithm.
+// (docs/shadow_denoiser.md) that mirrors the shader: the same 2^-20 weights, bit windows and
+// float formulas, so it agrees with the device to a few ulps and shares the shader's bugs.
+// shadow_classify_independent.h is the independent one (double, from the documentation).
 #pragma once
 
 #include <array>

@@ -13,6 +13,7 @@ glint_add_test_suite(NAME shadow_denoiser LABELS gpu
     shadow_denoiser/classify_test.cpp
     shadow_denoiser/output_format_test.cpp
     reference/shadow_classify_reference.cpp
+    reference/shadow_classify_independent.cpp
     shadow_denoiser/shadow_runner.cpp
     reference/shadow_denoiser_reference.cpp
   LIBS glint_test_runners glint_gpu_test_support glint_gpu)
