@@ -6,6 +6,7 @@
 #include "hybrid/hybrid_test_frame.h"
 #include "support/gpu_test_context.h"
 
+#include "glint/hybrid/glint_hybrid_constants.h"
 #include "scene/scene_trace.h"
 
 #include <catch2/catch.hpp>
@@ -196,5 +197,36 @@ TEST_CASE("deferred shading gives hits the shading callback's radiance and misse
         CHECK(missed.radiance[4 * i] + missed.radiance[4 * i + 1] + missed.radiance[4 * i + 2] > 0.0f);
         CHECK(std::isfinite(missed.radiance[4 * i]));
     }
+    GLINT_REQUIRE_NO_VALIDATION_ERRORS();
+}
+
+TEST_CASE("a frame whose every tile is FULL_HW equals the ray-tracing-only path", "[hybrid][shade]") {
+    const std::uint32_t width = 45, height = 27;
+    test::SssrTestView view = test::makeSssrTestView(width, height, false);
+    test::fillRandomSurfaces(view, 31);
+    for (std::size_t i = 0; i < std::size_t{width} * height; ++i) // mirrors and glossy quads
+        view.inputs.material[4 * i] = (i / 7) % 2 == 0 ? 0.0f : 0.1f;
+    shaders::SceneMaterial glow{};
+    glow.emissive = {1.0f, 3.0f, 0.5f};
+    const test::HybridTestScene scene(randomPrimitives(480, 13), {glow}, {});
+    const std::uint32_t tiles = ((width + 7) / 8) * ((height + 7) / 8);
+
+    HybridDesc rayTracingOnly;
+    rayTracingOnly.sssr = view.desc;
+    rayTracingOnly.screenSpace = false;
+    const test::HybridFrame expected =
+        test::runHybridFrame(rayTracingOnly, view, std::vector<std::uint32_t>(tiles, 0u), {}, &scene);
+
+    // 64 misses in both frames' fields everywhere: u <= 0.02 + 0 - 0.5 * 64 never holds.
+    HybridDesc hybrid;
+    hybrid.sssr = view.desc;
+    const std::uint32_t allMisses = (64u << 16) | (64u << 24);
+    const test::HybridFrame frame =
+        test::runHybridFrame(hybrid, view, std::vector<std::uint32_t>(tiles, allMisses), {}, &scene);
+    for (const std::uint32_t tileClass : frame.tileClass) CHECK(tileClass == GLINT_HYBRID_TILE_FULL_HW);
+    CHECK(frame.counters[1] == 0); // no screen-space entries at all
+    CHECK(frame.hwList.size() == expected.hwList.size());
+    CHECK(frame.radiance == expected.radiance);
+    CHECK(frame.confidence == expected.confidence);
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }
