@@ -113,6 +113,69 @@ TEST_CASE("every option permutation stays finite on a poisoned frame", "[sssr][h
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }
 
+// The clip: a ray toward the camera escapes only past the end of its segment (or the screen's
+// edge before that), and that end lies in front of the near plane: where the view-space ray
+// p + t l reaches view depth n, less the documented margin of 1e-3 of the way (docs/sssr.md, "Ray
+// setup"; clip space is linear in t, so the margin is 1e-3 of t). The device reports where the
+// ray escaped: on the projected line of the 3D ray, at or past the end. Without the clip (defect
+// SS3) the end lies behind the camera and projects to the other side of the origin.
+namespace {
+
+struct ClipCheck {
+    std::size_t checked = 0, onScreenEnds = 0;
+};
+
+ClipCheck checkClipped(const test::SssrTestView& view, const gpu::SssrFrameOutputs& out) {
+    const std::uint32_t w = view.desc.size.width, h = view.desc.size.height;
+    const double n = view.desc.nearPlane;
+    const auto& m = view.desc.projection;
+    const double ySign = view.desc.vulkanNdc ? 1.0 : -1.0;
+    ClipCheck result;
+    for (std::uint32_t y = 0; y < h; ++y)
+        for (std::uint32_t x = 0; x < w; ++x) {
+            const std::size_t i = std::size_t{y} * w + x;
+            const test::SssrCpuRay ray = test::sssrMirrorRay(view, x, y);
+            if (ray.degenerate || !ray.towardCamera || out.rayInfo[4 * i + 2] != 1.0f) continue; // escaped
+            // The device bends normals with n.v < 1e-4 toward the eye; leave those out.
+            const auto& p = ray.viewPosition;
+            const auto& l = ray.viewDirection;
+            const double nrm[3] = {view.inputs.normals[4 * i], view.inputs.normals[4 * i + 1],
+                                   view.inputs.normals[4 * i + 2]};
+            const double pl = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+            const double nl = std::sqrt(nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2]);
+            if (-(p[0] * nrm[0] + p[1] * nrm[1] + p[2] * nrm[2]) / (pl * nl) < 1e-3) continue;
+            // The device's end: t at the near plane, times 1 - 1e-3, projected to pixels.
+            const double t = (-p[2] - n) / l[2] * (1.0 - 1e-3);
+            const double e[4] = {p[0] + t * l[0], p[1] + t * l[1], p[2] + t * l[2], 1.0};
+            double clip[4] = {};
+            for (std::size_t r = 0; r < 4; ++r)
+                for (std::size_t c = 0; c < 4; ++c) clip[r] += m[4 * r + c] * e[c];
+            const double endX = (0.5 * clip[0] / clip[3] + 0.5) * w,
+                         endY = (0.5 * ySign * clip[1] / clip[3] + 0.5) * h;
+            const double dx = ray.direction[0], dy = ray.direction[1];
+            const double length2 = dx * dx + dy * dy;
+            const double marginAlong = ((endX - ray.origin[0]) * dx + (endY - ray.origin[1]) * dy) / length2;
+            const double hx = double(out.rayInfo[4 * i]) - ray.origin[0];
+            const double hy = double(out.rayInfo[4 * i + 1]) - ray.origin[1];
+            const double along = (hx * dx + hy * dy) / length2; // 1 at the near plane
+            const double perpendicular = std::abs(hx * dy - hy * dx) / std::sqrt(length2);
+            INFO("pixel (" << x << ", " << y << "): escaped at (" << out.rayInfo[4 * i] << ", "
+                           << out.rayInfo[4 * i + 1] << "), the near plane at (" << ray.origin[0] + dx << ", "
+                           << ray.origin[1] + dy << "), the device's end at (" << endX << ", " << endY
+                           << "), screen clip " << ray.tEnd);
+            ++result.checked;
+            result.onScreenEnds += ray.tEnd >= 1.0;
+            // Float ray setup on the device: a few 1e-7 of the segment, 1e-3 leaves a wide margin.
+            CHECK(perpendicular <= 0.05 + 1e-3 * std::sqrt(hx * hx + hy * hy));
+            CHECK(marginAlong > 0.0);
+            CHECK(marginAlong < 1.0);
+            CHECK(along >= std::min(ray.tEnd, marginAlong) - 1e-3);
+        }
+    return result;
+}
+
+} // namespace
+
 TEST_CASE("grazing mirrors and rays toward the camera are clipped and stay finite", "[sssr][hard]") {
     for (const bool reversed : {false, true}) {
         INFO((reversed ? "reversed" : "standard"));
@@ -128,6 +191,7 @@ TEST_CASE("grazing mirrors and rays toward the camera are clipped and stay finit
                 view.inputs.normals[4 * i + 2] = y % 2 ? 1.0f : 0.001f;
             }
         view.desc.debugOutput = true;
+        view.desc.maxTraversalIterations = 1024; // every ray finishes: hit or escaped
         const gpu::SssrFrameOutputs out = runOnce(view);
         requireFiniteOutputs(out, 64 * 48);
         for (std::size_t i = 0; i < 64 * 48; ++i) {
@@ -135,6 +199,35 @@ TEST_CASE("grazing mirrors and rays toward the camera are clipped and stay finit
             REQUIRE(std::isfinite(out.rayInfo[4 * i + 1]));
             REQUIRE(out.rayInfo[4 * i + 2] <= 6.0f);
         }
+        // These rays' near-plane ends lie mostly off screen: the screen clip ends them.
+        CHECK(checkClipped(view, out).checked > 500u);
+
+        // A wall at view depth 5 whose normals face the eye but for a tilt of up to 0.01: the
+        // mirror rays return toward the camera and reach the near plane on screen, nothing in
+        // their way.
+        test::SssrTestView wall = test::makeSssrTestView(64, 48, reversed);
+        for (std::uint32_t y = 0; y < 48; ++y)
+            for (std::uint32_t x = 0; x < 64; ++x) {
+                test::setViewDepth(wall, x, y, 5.0);
+                const std::size_t i = std::size_t{y} * 64 + x;
+                const double tiltX = 0.01 * (static_cast<double>(x % 7) / 3.0 - 1.0);
+                const double tiltY = 0.01 * (static_cast<double>(y % 5) / 2.0 - 1.0);
+                // toEye of the pixel (view space, D3D-style NDC: +y up on the top row).
+                const auto& g = wall.desc.projection;
+                const double px = (2.0 * (x + 0.5) / 64.0 - 1.0) * 5.0 / g[0];
+                const double py = -(2.0 * (y + 0.5) / 48.0 - 1.0) * 5.0 / g[5];
+                const double v[3] = {-px + tiltX * 5.0, -py + tiltY * 5.0, 5.0};
+                const double vl = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+                for (std::size_t c = 0; c < 3; ++c)
+                    wall.inputs.normals[4 * i + c] = static_cast<float>(v[c] / vl);
+            }
+        wall.desc.debugOutput = true;
+        wall.desc.maxTraversalIterations = 1024;
+        const gpu::SssrFrameOutputs wallOut = runOnce(wall);
+        requireFiniteOutputs(wallOut, 64 * 48);
+        const ClipCheck facing = checkClipped(wall, wallOut);
+        INFO("checked " << facing.checked << ", near-plane ends on screen " << facing.onScreenEnds);
+        CHECK(facing.onScreenEnds > 500u);
     }
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }

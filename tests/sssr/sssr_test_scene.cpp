@@ -141,21 +141,30 @@ SssrCpuRay sssrMirrorRay(const SssrTestView& view, std::uint32_t x, std::uint32_
         {view.inputs.normals[4 * i], view.inputs.normals[4 * i + 1], view.inputs.normals[4 * i + 2]});
     const double nv = dot3(normal, toEye);
     const Vec3 l{2 * nv * normal[0] - toEye[0], 2 * nv * normal[1] - toEye[1], 2 * nv * normal[2] - toEye[2]};
-    const auto clipP = mul(desc.projection, {p[0], p[1], p[2], 1.0});
-    const auto clipL = mul(desc.projection, {l[0], l[1], l[2], 0.0});
-    std::array<double, 4> end{};
-    if (clipL[3] < 0.0) {
-        const double length = std::max(clipP[3] - n, 0.0) / -clipL[3] * (1.0 - 1e-3);
-        for (std::size_t k = 0; k < 4; ++k) end[k] = clipP[k] + length * clipL[k];
-    } else {
-        const double length =
-            clipL[3] > 1e-6 ? std::max(f - clipP[3], 0.0) / clipL[3] : 1e4 * std::max(clipP[3], n);
-        for (std::size_t k = 0; k < 4; ++k) end[k] = clipP[k] + length * clipL[k];
-    }
+    // The segment's end from the geometry of the view-space ray p + t l (view depth -p_z - t l_z):
+    // toward the camera it ends where it reaches the near plane (view depth n); away from it,
+    // on the far plane (view depth f); parallel to the image plane (constant depth), far away
+    // (the screen clips it). The device stops a ray toward the camera 1e-3 of the clip-space
+    // length short of the near plane (docs/sssr.md, "Ray setup"); over that last stretch the ray's
+    // view depth stays below n + 1e-3 (viewDepth - n), far in front of any surface these scenes
+    // hold, so the expected hits do not depend on that margin.
+    double t = 0.0;
+    const double along = std::sqrt(dot3(l, l));
+    if (l[2] > 1e-9 * along)
+        t = (-p[2] - n) / l[2];
+    else if (l[2] < -1e-9 * along)
+        t = (f + p[2]) / -l[2];
+    else
+        t = 1e6 * viewDepth;
+    t = std::max(t, 0.0);
+    const auto end = mul(desc.projection, {p[0] + t * l[0], p[1] + t * l[1], p[2] + t * l[2], 1.0});
     const double endU = 0.5 * end[0] / end[3] + 0.5, endV = 0.5 * ySign * end[1] / end[3] + 0.5;
     SssrCpuRay ray;
     ray.origin = {x + 0.5, y + 0.5, depth};
     ray.direction = {endU * w - ray.origin[0], endV * h - ray.origin[1], end[2] / end[3] - depth};
+    ray.towardCamera = l[2] > 1e-9 * along;
+    ray.viewPosition = p;
+    ray.viewDirection = l;
     double tEnd = 1.0;
     if (ray.direction[0] > 0) tEnd = std::min(tEnd, (w - ray.origin[0]) / ray.direction[0]);
     if (ray.direction[0] < 0) tEnd = std::min(tEnd, -ray.origin[0] / ray.direction[0]);

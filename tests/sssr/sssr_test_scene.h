@@ -34,12 +34,15 @@ void setViewDepth(SssrTestView& view, std::uint32_t x, std::uint32_t y, double v
 // normals: random unit vectors facing the camera (n.v >= 0.2).
 void fillRandomSurfaces(SssrTestView& view, std::uint32_t seed);
 
-// The double-precision ray setup of docs/sssr.md for the pixel's mirror direction, in the
-// reference's trace space (pixels, device depth), and the degenerate test.
+// The pixel's mirror ray in the reference's trace space (pixels, device depth), its end derived
+// in double from the geometry of the view-space ray (the near plane toward the camera, the far
+// plane away from it), the screen clip as the parameter range, and the degenerate test.
 struct SssrCpuRay {
-    std::array<double, 3> origin{}, direction{};
-    double tEnd = 0.0;
+    std::array<double, 3> origin{}, direction{}; // the segment: origin + t direction, t in [0, 1]
+    double tEnd = 0.0;                           // the screen clip
     bool degenerate = false;
+    bool towardCamera = false; // the view depth falls along the ray
+    std::array<double, 3> viewPosition{}, viewDirection{};
 };
 SssrCpuRay sssrMirrorRay(const SssrTestView& view, std::uint32_t x, std::uint32_t y);
 
