@@ -57,6 +57,27 @@ void HybridTestScene::addTo(vk::ResourceTable& table) const {
     table.buffers["scene_lights"] = &lights_;
 }
 
+vk::ResourceTable uploadInputs(gpu::InputImages& inputs, const SssrTestView& view) {
+    const std::pair<const char*, InputKind> kinds[] = {
+        {"depth", InputKind::Depth},       {"normals", InputKind::Normals},
+        {"material", InputKind::Material}, {"color", InputKind::Color},
+        {"motion", InputKind::Motion},     {"base_color_metallic", InputKind::BaseColorMetallic}};
+    const std::vector<float>* texels[] = {&view.inputs.depth,    &view.inputs.normals,
+                                          &view.inputs.material, &view.inputs.color,
+                                          &view.inputs.motion,   &view.inputs.baseColorMetallic};
+    const std::uint32_t channels[] = {1, 4, 4, 4, 2, 4};
+    vk::ResourceTable table;
+    for (std::size_t i = 0; i < std::size(kinds); ++i) {
+        if (texels[i]->empty()) continue;
+        inputs.upload(kinds[i].second, *texels[i], channels[i]);
+        table.images[kinds[i].first] = inputs.find(kinds[i].second);
+    }
+    inputs.uploadEnvironment(view.inputs.environmentWidth, view.inputs.environmentHeight,
+                             view.inputs.environment);
+    table.images["environment"] = inputs.find(InputKind::Environment);
+    return table;
+}
+
 HybridFrame runHybridFrame(const HybridDesc& desc, const SssrTestView& view,
                            const std::vector<std::uint32_t>& history,
                            const std::vector<std::string>& skipPasses, const HybridTestScene* sceneInputs) {
@@ -75,20 +96,7 @@ HybridFrame runHybridFrame(const HybridDesc& desc, const SssrTestView& view,
     gpu::uploadImageBytes(context, runner.image(hybridFeedbackImages(desc.sssr.frameIndex).second),
                           std::as_bytes(std::span(history)));
     gpu::InputImages inputs(context, view.desc.size, false);
-    inputs.upload(InputKind::Depth, view.inputs.depth, 1);
-    inputs.upload(InputKind::Normals, view.inputs.normals, 4);
-    inputs.upload(InputKind::Material, view.inputs.material, 4);
-    inputs.upload(InputKind::Color, view.inputs.color, 4);
-    inputs.upload(InputKind::Motion, view.inputs.motion, 2);
-    inputs.uploadEnvironment(view.inputs.environmentWidth, view.inputs.environmentHeight,
-                             view.inputs.environment);
-    vk::ResourceTable table;
-    table.images["depth"] = inputs.find(InputKind::Depth);
-    table.images["normals"] = inputs.find(InputKind::Normals);
-    table.images["material"] = inputs.find(InputKind::Material);
-    table.images["color"] = inputs.find(InputKind::Color);
-    table.images["motion"] = inputs.find(InputKind::Motion);
-    table.images["environment"] = inputs.find(InputKind::Environment);
+    vk::ResourceTable table = uploadInputs(inputs, view);
     if (sceneInputs) sceneInputs->addTo(table);
     runner.run(plan, table);
 

@@ -3,9 +3,12 @@
 #pragma once
 
 #include "glint/glint_hybrid.h"
+#include "glint/vulkan/vk_executor.h"
 #include "glint/vulkan/vk_resources.h"
+
 #include "scene/scene_bvh.h"
 #include "sssr/sssr_test_scene.h"
+#include <gpu/gpu_input_images.h>
 
 #include <cstdint>
 #include <string>
@@ -40,6 +43,9 @@ struct HybridFrame {
     std::vector<float> radiance, confidence;        // RGBA, R
     std::vector<std::uint32_t> hits;                // 4 words per ray-traced ray (GLINT_HYBRID_PackHit)
 };
+
+// Uploads the view's non-empty inputs (and its environment) and names them as the plans do.
+vk::ResourceTable uploadInputs(gpu::InputImages& inputs, const SssrTestView& view);
 
 // Runs frame desc.sssr.frameIndex with `history` as last frame's feedback counters, leaving out
 // the passes named in `skipPasses`; `sceneInputs` feeds the ray tracing and shading passes.

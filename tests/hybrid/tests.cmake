@@ -4,6 +4,7 @@ glint_add_test_suite(NAME hybrid LABELS gpu
     hybrid/classify_test.cpp
     hybrid/intersect_test.cpp
     hybrid/trace_test.cpp
+    hybrid/composed_test.cpp
     hybrid/hybrid_test_frame.cpp
     sssr/sssr_test_scene.cpp
     sssr/sssr_classify_view.cpp

@@ -4,11 +4,12 @@
 // In progress: the plan holds the depth pyramid, the tile classification (feedback counters,
 // tile classes, the screen-space and ray-traced ray lists, the denoiser's tile list), blue noise
 // and arguments, the screen-space intersection with feedback, the ray tracer's arguments, ray
-// tracing and deferred shading. The denoiser and the composite follow; the effect is not
-// registered until they do.
+// tracing and deferred shading; planHybridReflections adds the denoiser and the composite. The
+// effect is not registered yet: replays have no scene geometry for the ray tracer.
 #pragma once
 
 #include "glint/glint_pass.h"
+#include "glint/glint_reflections_denoiser.h"
 #include "glint/glint_sssr.h"
 
 #include <string>
@@ -53,6 +54,15 @@ struct HybridDesc {
 // and the application's scene for its trace and shade modules (the harness's: "scene_constants",
 // "scene_nodes", "scene_primitives", "scene_materials", "scene_lights").
 Result planHybrid(const HybridDesc& desc, EffectPlan& plan, std::string* error);
+
+// The hybrid result denoised by the reflections denoiser (glint_reflections_denoiser.h) when
+// `denoiser` is given (desc.sssr.denoise must then be set), and composited with
+// desc.sssr.composite: the hybrid counterpart of planReflections (glint_reflections.h). The
+// denoiser's passes follow the shading pass and read the hybrid tile list and arguments; the
+// classification reads the variance the denoiser resolved last frame. Names its outputs
+// ("noisy", "denoised", "composite", ...) and counters ("ray_traced_rays", ...).
+Result planHybridReflections(const HybridDesc& desc, const ReflectionsDenoiserDesc* denoiser,
+                             EffectPlan& plan, std::string* error);
 
 // The names of frame `frameIndex`'s feedback images: {written, read as history}.
 std::pair<std::string, std::string> hybridFeedbackImages(std::uint32_t frameIndex);

@@ -93,6 +93,26 @@ shaders::GLINT_SssrConstants makeSssrConstants(const SssrDesc& desc, const core:
     return c;
 }
 
+Pass sssrCompositePass(const SssrDesc& desc, const std::vector<std::byte>& constants) {
+    Pass pass;
+    pass.name = "composite";
+    pass.pipeline = "sssr_composite";
+    pass.groupSize[0] = GLINT_SSSR_TILE;
+    pass.groupSize[1] = GLINT_SSSR_TILE;
+    pass.constantsBinding = "g_glint_constants";
+    pass.constants = constants;
+    pass.dispatch = core::gridFor(desc.size.width, desc.size.height, 1, pass.groupSize);
+    pass.uses = {{"g_glint_color", "color", Access::Read},
+                 {"g_glint_reflection", desc.compositeReflection, Access::Read},
+                 {"g_glint_depth", "depth", Access::Read},
+                 {"g_glint_normals", "normals", Access::Read},
+                 {"g_glint_roughness", "sssr_roughness", Access::Read},
+                 {"g_glint_base_color_metallic", "base_color_metallic", Access::Read},
+                 {"g_glint_brdf_lut", "sssr_brdf_lut", Access::Read},
+                 {"g_glint_composite", "composite", Access::Write}};
+    return pass;
+}
+
 } // namespace core
 namespace {
 
@@ -169,20 +189,6 @@ Pass intersectPass(const SssrDesc& desc, const std::vector<std::byte>& constants
     return pass;
 }
 
-Pass compositePass(const SssrDesc& desc, const std::vector<std::byte>& constants) {
-    Pass pass = sssrPass("composite", "sssr_composite", GLINT_SSSR_TILE, GLINT_SSSR_TILE, constants);
-    pass.dispatch = core::gridFor(desc.size.width, desc.size.height, 1, pass.groupSize);
-    pass.uses = {{"g_glint_color", "color", Access::Read},
-                 {"g_glint_reflection", desc.compositeReflection, Access::Read},
-                 {"g_glint_depth", "depth", Access::Read},
-                 {"g_glint_normals", "normals", Access::Read},
-                 {"g_glint_roughness", "sssr_roughness", Access::Read},
-                 {"g_glint_base_color_metallic", "base_color_metallic", Access::Read},
-                 {"g_glint_brdf_lut", "sssr_brdf_lut", Access::Read},
-                 {"g_glint_composite", "composite", Access::Write}};
-    return pass;
-}
-
 } // namespace
 
 Result planSssr(const SssrDesc& desc, EffectPlan& plan, std::string* error) {
@@ -232,7 +238,7 @@ Result planSssr(const SssrDesc& desc, EffectPlan& plan, std::string* error) {
     plan.passes.push_back(intersectPass(desc, constants));
     if (desc.composite) {
         plan.images.push_back({"composite", w, h, 1, Format::RGBA32Float});
-        plan.passes.push_back(compositePass(desc, constants));
+        plan.passes.push_back(core::sssrCompositePass(desc, constants));
     }
     return Result::Ok;
 }

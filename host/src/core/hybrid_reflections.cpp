@@ -1,0 +1,100 @@
+// The hybrid effect composed: planHybrid, the reflections denoiser over its result, the
+// composite, and the plan's outputs and counters (glint_hybrid.h).
+#include "glint/glint_hybrid.h"
+
+#include "core/dispatch.h"
+#include "core/plan_checks.h"
+#include "core/sssr_constants.h"
+#include "core/sssr_table_images.h"
+#include "glint/glint_sssr_tables.h"
+#include "glint/hybrid/glint_hybrid_constants.h"
+
+#include <algorithm>
+
+namespace glint {
+namespace {
+
+void renameUses(std::vector<Pass>& passes, const std::string& from, const std::string& to) {
+    for (Pass& pass : passes)
+        for (ResourceUse& use : pass.uses)
+            if (use.resource == from) use.resource = to;
+    for (Pass& pass : passes)
+        if (auto* indirect = std::get_if<IndirectDispatch>(&pass.dispatch);
+            indirect && indirect->resource == from)
+            indirect->resource = to;
+}
+
+void addOutputs(EffectPlan& plan, const HybridDesc& desc, const ReflectionsDenoiserDesc* denoiser) {
+    const char* denoisedBy =
+        denoiser && denoiser->spatialPath == SpatialPath::RatioEstimator ? "cleanup" : "resolve";
+    auto& out = plan.outputs;
+    out.push_back({"noisy", "sssr_radiance", "shade", OutputDecoder::Channels, 0, 3});
+    if (denoiser) out.push_back({"denoised", "sssr_radiance", denoisedBy, OutputDecoder::Channels, 0, 3});
+    if (desc.sssr.composite)
+        out.push_back({"composite", "composite", "composite", OutputDecoder::Channels, 0, 3});
+    out.push_back({"confidence", "sssr_confidence", "shade", OutputDecoder::Channels, 0, 1});
+    const auto intermediate = [&](OutputDesc output) {
+        output.intermediate = true;
+        out.push_back(std::move(output));
+    };
+    intermediate({"roughness", "sssr_roughness", "classify", OutputDecoder::Channels, 0, 1});
+    intermediate({"screen_space_result", "sssr_radiance", "intersect", OutputDecoder::Channels, 0, 3});
+    intermediate({"ray_traced_list", "hybrid_hw_ray_list", "shade", OutputDecoder::RayList, 0, 1, 0,
+                  "ray_traced_rays"});
+    intermediate(
+        {"tile_list", "sssr_tile_list", "classify", OutputDecoder::TileList, 0, 1, 0, "listed_tiles"});
+    intermediate({"pyramid_mip", "depth_pyramid", "depth_pyramid", OutputDecoder::MipChain, 0, 1, 1});
+    plan.counters.push_back({"screen_space_entries", "hybrid_counters", 1, ""});
+    plan.counters.push_back(
+        {"ray_traced_rays", "hybrid_counters", GLINT_HYBRID_COUNTER_HW_RAYS_COPY, "ray_traced_fraction"});
+    plan.counters.push_back({"listed_tiles", "hybrid_counters", 3, ""});
+}
+
+} // namespace
+
+Result planHybridReflections(const HybridDesc& desc, const ReflectionsDenoiserDesc* denoiser,
+                             EffectPlan& plan, std::string* error) {
+    if (denoiser && !desc.sssr.denoise)
+        return core::invalidArgument(error, "hybrid", "a denoiser desc needs SssrDesc::denoise");
+    HybridDesc hybrid = desc;
+    hybrid.sssr.compositeReflection = "sssr_radiance";
+    if (const Result result = planHybrid(hybrid, plan, error); result != Result::Ok) return result;
+    if (hybrid.sssr.denoise) {
+        // The variance the denoiser resolved last frame guides classification (as SSSR's).
+        renameUses(plan.passes, "sssr_zero_variance",
+                   reflectionsDenoiserVariance(hybrid.sssr.frameIndex + 1));
+        std::erase_if(plan.images, [](const ImageDesc& image) { return image.name == "sssr_zero_variance"; });
+        // With denoise but no denoiser desc this frame: the denoiser's resources, none of its passes.
+        ReflectionsDenoiserDesc resourcesOnly;
+        resourcesOnly.size = hybrid.sssr.size;
+        resourcesOnly.halfPrecisionStorage = hybrid.sssr.halfPrecisionStorage;
+        EffectPlan denoiserPlan;
+        if (const Result result =
+                planReflectionsDenoiser(denoiser ? *denoiser : resourcesOnly, denoiserPlan, error);
+            result != Result::Ok)
+            return result;
+        // The hybrid counters and arguments start with SSSR's layout: the denoiser's tile count
+        // is word 3 and its arguments are at byte 12.
+        renameUses(denoiserPlan.passes, "sssr_indirect_args", "hybrid_indirect_args");
+        if (denoiser)
+            plan.passes.insert(plan.passes.end(), denoiserPlan.passes.begin(), denoiserPlan.passes.end());
+        plan.images.insert(plan.images.end(), denoiserPlan.images.begin(), denoiserPlan.images.end());
+        plan.buffers.insert(plan.buffers.end(), denoiserPlan.buffers.begin(), denoiserPlan.buffers.end());
+    }
+    if (hybrid.sssr.composite) {
+        core::Matrix4 viewFromClip{}, worldFromView{};
+        core::invert(hybrid.sssr.projection, viewFromClip); // planHybrid checked both
+        core::invert(hybrid.sssr.viewFromWorld, worldFromView);
+        plan.images.push_back({"sssr_brdf_lut", kSssrBrdfLutSize, kSssrBrdfLutSize, 1, Format::RG32Float,
+                               core::sssrBrdfLutTexels()});
+        plan.images.push_back(
+            {"composite", hybrid.sssr.size.width, hybrid.sssr.size.height, 1, Format::RGBA32Float});
+        plan.passes.push_back(core::sssrCompositePass(
+            hybrid.sssr,
+            core::packConstants(core::makeSssrConstants(hybrid.sssr, viewFromClip, worldFromView))));
+    }
+    addOutputs(plan, hybrid, denoiser);
+    return Result::Ok;
+}
+
+} // namespace glint
