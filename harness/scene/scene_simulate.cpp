@@ -1,5 +1,6 @@
 #include "scene/scene_simulate.h"
 
+#include "scene/scene_buffers.h"
 #include "scene/scene_bvh.h"
 #include "scene/scene_environment.h"
 #include "scene/scene_geometry.h"
@@ -150,48 +151,6 @@ EffectPlan planFrame(const Scene& scene, const GLINT_SceneConstants& base,
     return plan;
 }
 
-std::vector<shaders::SceneMaterial> gpuMaterials(const Scene& scene) {
-    std::vector<shaders::SceneMaterial> out;
-    for (const MaterialDesc& m : scene.materials) {
-        shaders::SceneMaterial g{};
-        g.baseColor = {m.baseColor[0], m.baseColor[1], m.baseColor[2]};
-        g.metallic = m.metallic;
-        g.emissive = {m.emissive[0], m.emissive[1], m.emissive[2]};
-        g.roughness = m.roughness;
-        g.roughnessEnd = m.ramp ? m.rampRoughnessEnd : m.roughness;
-        if (m.ramp) {
-            // t = dot(p - start, axis) / |axis|^2 = dot(p, axis / |axis|^2) - dot(start, axis) / |axis|^2
-            const float a[3] = {m.rampEnd[0] - m.rampStart[0], m.rampEnd[1] - m.rampStart[1],
-                                m.rampEnd[2] - m.rampStart[2]};
-            const float len2 = a[0] * a[0] + a[1] * a[1] + a[2] * a[2];
-            g.rampPlane = {a[0] / len2, a[1] / len2, a[2] / len2,
-                           -(m.rampStart[0] * a[0] + m.rampStart[1] * a[1] + m.rampStart[2] * a[2]) / len2};
-        }
-        out.push_back(g);
-    }
-    if (out.empty()) out.push_back({}); // a zero-sized storage buffer cannot be bound
-    return out;
-}
-
-std::vector<shaders::SceneLight> gpuLights(const std::vector<LightDesc>& lights) {
-    std::vector<shaders::SceneLight> out;
-    for (const LightDesc& l : lights) {
-        shaders::SceneLight g{};
-        const bool directional = l.kind == LightKind::Directional;
-        g.kind = directional ? GLINT_SCENE_LIGHT_DIRECTIONAL : GLINT_SCENE_LIGHT_SPHERE;
-        const Vec3& v = directional ? l.direction : l.position;
-        g.where = {v[0], v[1], v[2]};
-        g.radiance = {l.color[0] * l.intensity, l.color[1] * l.intensity, l.color[2] * l.intensity};
-        g.size =
-            directional
-                ? static_cast<float>(static_cast<double>(l.angularRadiusDegrees) * std::numbers::pi / 180.0)
-                : l.radius;
-        out.push_back(g);
-    }
-    if (out.empty()) out.push_back({});
-    return out;
-}
-
 template <typename T> vk::Buffer uploadStorage(const gpu::Context& context, const std::vector<T>& values) {
     vk::Buffer buffer = vk::createBuffer(context.device, sizeof(T) * values.size(),
                                          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryUse::DeviceLocal);
@@ -323,7 +282,7 @@ Simulation simulate(const gpu::Context& context, const Scene& scene) {
     res.environment = vk::createImage2D(context.device, environment.width, environment.height,
                                         VK_FORMAT_R32G32B32A32_SFLOAT);
     gpu::uploadImage(context, res.environment, environment.rgb, 3);
-    const vk::Buffer materials = uploadStorage(context, gpuMaterials(scene));
+    const vk::Buffer materials = uploadStorage(context, packMaterials(scene));
     res.buffers = {materials};
 
     std::vector<OutputImage> outputs;
@@ -378,7 +337,7 @@ Simulation simulate(const gpu::Context& context, const Scene& scene) {
         vk::Buffer objects = uploadStorage(context, geometry.objects);
         res.buffers.push_back(objects);
         // Keyframed lights move: the shadow layers, references and shading all read this frame's.
-        vk::Buffer lights = uploadStorage(context, gpuLights(lightsAt(scene, frame)));
+        vk::Buffer lights = uploadStorage(context, packLights(lightsAt(scene, frame)));
         res.buffers.push_back(lights);
         vk::ResourceTable table = gpu::resourceTable(res.owned, {{"g_scene_environment", &res.environment}});
         table.buffers["g_scene_nodes"] = &nodes;

@@ -81,6 +81,14 @@ vk::ResourceTable uploadInputs(gpu::InputImages& inputs, const SssrTestView& vie
 HybridFrame runHybridFrame(const HybridDesc& desc, const SssrTestView& view,
                            const std::vector<std::uint32_t>& history,
                            const std::vector<std::string>& skipPasses, const HybridTestScene* sceneInputs) {
+    AddScene add;
+    if (sceneInputs) add = [sceneInputs](vk::ResourceTable& table) { sceneInputs->addTo(table); };
+    return runHybridFrame(desc, view, history, skipPasses, add);
+}
+
+HybridFrame runHybridFrame(const HybridDesc& desc, const SssrTestView& view,
+                           const std::vector<std::uint32_t>& history,
+                           const std::vector<std::string>& skipPasses, const AddScene& addScene) {
     EffectPlan plan;
     std::string error;
     REQUIRE(planHybrid(desc, plan, &error) == Result::Ok);
@@ -97,7 +105,7 @@ HybridFrame runHybridFrame(const HybridDesc& desc, const SssrTestView& view,
                           std::as_bytes(std::span(history)));
     gpu::InputImages inputs(context, view.desc.size, false);
     vk::ResourceTable table = uploadInputs(inputs, view);
-    if (sceneInputs) sceneInputs->addTo(table);
+    if (addScene) addScene(table);
     runner.run(plan, table);
 
     const auto words = [&](const std::string& image) {
@@ -117,7 +125,7 @@ HybridFrame runHybridFrame(const HybridDesc& desc, const SssrTestView& view,
     out.tileList = runner.readWords("sssr_tile_list", out.counters.at(3));
     out.radiance = gpu::readbackImage(context, runner.image("sssr_radiance"));
     out.confidence = gpu::readbackImage(context, runner.image("sssr_confidence"));
-    if (sceneInputs) out.hits = runner.readWords("hybrid_hits", 4 * out.hwList.size());
+    if (addScene) out.hits = runner.readWords("hybrid_hits", 4 * out.hwList.size());
     return out;
 }
 

@@ -11,6 +11,7 @@
 #include <gpu/gpu_input_images.h>
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -47,8 +48,14 @@ struct HybridFrame {
 // Uploads the view's non-empty inputs (and its environment) and names them as the plans do.
 vk::ResourceTable uploadInputs(gpu::InputImages& inputs, const SssrTestView& view);
 
+// Adds the scene's buffers for the ray tracing and shading passes to an input table.
+using AddScene = std::function<void(vk::ResourceTable&)>;
+
 // Runs frame desc.sssr.frameIndex with `history` as last frame's feedback counters, leaving out
-// the passes named in `skipPasses`; `sceneInputs` feeds the ray tracing and shading passes.
+// the passes named in `skipPasses`; `addScene` feeds the ray tracing and shading passes.
+HybridFrame runHybridFrame(const HybridDesc& desc, const SssrTestView& view,
+                           const std::vector<std::uint32_t>& history,
+                           const std::vector<std::string>& skipPasses, const AddScene& addScene);
 HybridFrame runHybridFrame(const HybridDesc& desc, const SssrTestView& view,
                            const std::vector<std::uint32_t>& history,
                            const std::vector<std::string>& skipPasses = {},

@@ -1,0 +1,45 @@
+// A scene's GPU data for shaders that trace and shade it outside the simulator's own passes
+// (the hybrid effect's ray tracing and shading modules): the BVH of one frame's geometry, the
+// materials, that frame's lights and the constants the shading reads, as storage buffers named
+// "scene_constants", "scene_nodes", "scene_primitives", "scene_materials", "scene_lights".
+#pragma once
+
+#include "scene/scene_bvh.h"
+#include "scene/scene_geometry.h"
+#include "scene/scene_types.h"
+
+#include <gpu/gpu_context.h>
+
+#include "glint/vulkan/vk_executor.h"
+
+#include <vector>
+
+namespace glint::scene {
+
+// The GPU layout of the scene's materials and of lights (never empty: a zero-sized storage
+// buffer cannot be bound).
+std::vector<shaders::SceneMaterial> packMaterials(const Scene& scene);
+std::vector<shaders::SceneLight> packLights(const std::vector<LightDesc>& lights);
+
+class SceneBuffers {
+  public:
+    // Loads the scene's meshes (SceneError naming the file) and uploads frame 0.
+    SceneBuffers(const gpu::Context& context, Scene scene);
+    ~SceneBuffers();
+    SceneBuffers(const SceneBuffers&) = delete;
+    SceneBuffers& operator=(const SceneBuffers&) = delete;
+
+    // The geometry, BVH and lights of scene frame `frame` (clamped to the scene's last frame).
+    // The device must be idle for these buffers (the replay waits for each frame).
+    void setFrame(std::uint32_t frame);
+    void addTo(vk::ResourceTable& table) const;
+
+  private:
+    void release();
+    const gpu::Context& context_;
+    Scene scene_;
+    std::vector<Mesh> meshes_;
+    vk::Buffer constants_, nodes_, primitives_, materials_, lights_;
+};
+
+} // namespace glint::scene
