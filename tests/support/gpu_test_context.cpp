@@ -80,4 +80,9 @@ ValidationCheck takeValidationErrors() {
     return check;
 }
 
+bool skipsForbidden() {
+    const char* value = std::getenv("GLINT_FORBID_SKIPS");
+    return value && std::string(value) != "0" && std::string(value) != "";
+}
+
 } // namespace glint::test

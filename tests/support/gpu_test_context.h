@@ -13,6 +13,7 @@
 #include <catch2/catch.hpp>
 
 #include <cstdint>
+#include <cstdio>
 #include <string>
 
 namespace glint::test {
@@ -28,6 +29,22 @@ struct ValidationCheck {
 ValidationCheck takeValidationErrors();
 
 } // namespace glint::test
+
+// A GPU test that cannot run on this device says so and ends: it prints "GLINT_SKIP: <reason>",
+// which every suite's SKIP_REGULAR_EXPRESSION (tests/CMakeLists.txt) turns into a skip in
+// ctest's summary instead of a silent pass. With GLINT_FORBID_SKIPS=1 in the environment (CI,
+// on lavapipe, where every such test can run) a skip fails the test instead.
+namespace glint::test {
+[[nodiscard]] bool skipsForbidden();
+} // namespace glint::test
+
+#define GLINT_SKIP(reason)                                                                                   \
+    do {                                                                                                     \
+        if (::glint::test::skipsForbidden()) FAIL("cannot run, and GLINT_FORBID_SKIPS is set: " << reason);  \
+        std::printf("GLINT_SKIP: %s\n", std::string(reason).c_str());                                        \
+        std::fflush(stdout);                                                                                 \
+        return;                                                                                              \
+    } while (false)
 
 #define GLINT_REQUIRE_NO_VALIDATION_ERRORS()                                                                 \
     do {                                                                                                     \
