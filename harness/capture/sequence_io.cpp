@@ -103,6 +103,8 @@ Sequence readSequence(const std::filesystem::path& path) {
             fail(manifest, "environment '" + seq.environment + "' does not exist");
     }
 
+    if (j.contains("scene")) seq.scene = requiredString(j, "scene", manifest);
+
     for (const std::string& name : seq.frameFiles) {
         FrameHeader header = readFrameHeader(seq.directory / name);
         if (!seq.headers.empty() &&
@@ -130,7 +132,7 @@ std::optional<Environment> loadEnvironment(const Sequence& sequence) {
 }
 
 void writeSequence(const std::filesystem::path& directory, const std::vector<Frame>& frames, double frameRate,
-                   const Environment* environment) {
+                   const Environment* environment, const std::filesystem::path& scene) {
     const std::filesystem::path manifest = directory / kManifestName;
     if (frames.empty()) fail(manifest, "a sequence needs at least one frame");
     if (!std::isfinite(frameRate) || !(frameRate > 0.0))
@@ -157,6 +159,11 @@ void writeSequence(const std::filesystem::path& directory, const std::vector<Fra
     if (environment) {
         writeEnvironment(directory / "environment.exr", *environment);
         j["environment"] = "environment.exr";
+    }
+    if (!scene.empty()) {
+        std::error_code absoluteError;
+        const std::filesystem::path absolute = std::filesystem::absolute(scene, absoluteError);
+        j["scene"] = (absoluteError ? scene : absolute).lexically_normal().string();
     }
     translateErrors(manifest, "cannot write", [&] {
         writeAtomically(manifest, [&](const std::filesystem::path& partial) {

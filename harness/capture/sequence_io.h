@@ -23,6 +23,7 @@ struct Sequence {
     std::vector<std::string> frameFiles; // manifest order, relative to directory
     std::vector<FrameHeader> headers;    // one validated header per frame, same order
     std::string environment;             // relative to directory; empty when there is none
+    std::string scene; // the scene file the frames were simulated from (glint simulate); empty for others
 };
 
 // Reads the manifest (from `path`, a sequence folder or its manifest.json) and the header
@@ -37,7 +38,9 @@ std::optional<Environment> loadEnvironment(const Sequence& sequence);
 // Writes frames as frame_0000.exr, frame_0001.exr, ... (numbered by position), the
 // environment as environment.exr when given, and manifest.json last, into `directory`
 // (created if needed). All frames must have the same size.
+// `scene`: the scene file the frames come from, recorded (absolute) so that a replay can rebuild
+// the geometry (the hybrid effect's ray tracer).
 void writeSequence(const std::filesystem::path& directory, const std::vector<Frame>& frames, double frameRate,
-                   const Environment* environment = nullptr);
+                   const Environment* environment = nullptr, const std::filesystem::path& scene = {});
 
 } // namespace glint::capture

@@ -40,6 +40,7 @@ struct Target {
     std::vector<capture::Frame> frames;
     capture::Environment environment;
     std::optional<scene::Scene> scene; // simulated once the device is up
+    std::string sceneFile;             // the geometry for effects that ray trace
 };
 
 // Everything that can be wrong with a target is found here, before a device is created.
@@ -61,6 +62,7 @@ Target openTarget(const std::string& path, const BenchOptions& options) {
         scene.height = options.height;
         scene.reference = {}; // only the inputs are timed
         target.kind = "scene";
+        target.sceneFile = path;
         target.scene = std::move(scene);
         return target;
     }
@@ -71,6 +73,7 @@ Target openTarget(const std::string& path, const BenchOptions& options) {
     const CaptureSource source(path);
     target.kind = source.frameCount() > 1 || std::filesystem::is_directory(file) ? "sequence" : "frame";
     target.environment = source.environment();
+    target.sceneFile = source.sceneFile();
     for (std::size_t index = 0; index < std::min(source.frameCount(), kMaxFrames); ++index)
         target.frames.push_back(source.frame(index));
     const capture::Frame& first = target.frames.front();
@@ -84,6 +87,11 @@ Target openTarget(const std::string& path, const BenchOptions& options) {
         throw std::invalid_argument("bench: " + path + ": " + error.what());
     }
     return target;
+}
+
+replay::SessionOptions withScene(replay::SessionOptions options, const Target& target) {
+    options.scene = target.sceneFile;
+    return options;
 }
 
 void printCounters(std::FILE* out, const std::vector<replay::Counter>& counters) {
@@ -196,8 +204,8 @@ int runBenchCaptures(const BenchOptions& options) {
             }
             const capture::Frame& first = target.frames.front();
             const std::vector<std::string> effects = replay::effectsToRun(first, options.effects);
-            const Measurement measurement =
-                measureFrames(context, target.frames, target.environment, sessionOptions, options.runs);
+            const Measurement measurement = measureFrames(context, target.frames, target.environment,
+                                                          withScene(sessionOptions, target), options.runs);
             std::fprintf(out, "%s %s: %ux%u, %zu frame(s), effects:", target.kind.c_str(),
                          target.path.c_str(), first.width, first.height, target.frames.size());
             for (const std::string& effect : effects) std::fprintf(out, " %s", effect.c_str());

@@ -119,6 +119,10 @@ std::string CaptureSource::framePath(std::size_t index) const {
     return impl_->paths.at(index);
 }
 
+std::string CaptureSource::sceneFile() const {
+    return impl_->sequence ? impl_->sequence->scene : std::string();
+}
+
 std::size_t CaptureSource::frameNumber(std::size_t index) const {
     return impl_->numbers.at(index);
 }

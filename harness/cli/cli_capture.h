@@ -39,6 +39,8 @@ class CaptureSource {
     // The environment file as given, or "none" (with why, for an optional one that is missing).
     const std::string& environmentName() const { return environmentName_; }
     const std::string& description() const { return description_; }
+    // The scene file a simulated capture was made from (its manifest's "scene"), or empty.
+    std::string sceneFile() const;
 
     // The effects to run (replay::effectsToRun) on frame `index`, read as `frame`; a layer the
     // capture lacks is a one-line error naming the frame's file, the layer and what to do.

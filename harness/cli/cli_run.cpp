@@ -44,6 +44,7 @@ int runRun(const ReplayOptions& options) {
     const FrameRange range = parseFrames(options.frames, source.frameCount());
     replay::SessionOptions sessionOptions;
     sessionOptions.effects = options.effects;
+    sessionOptions.scene = source.sceneFile();
     sessionOptions.settings = replay::parseSettings(options.settings);
     const std::filesystem::path out(options.outDir);
 

@@ -31,7 +31,7 @@ int runSimulate(const SimulateOptions& options) {
         const scene::Simulation sim = scene::simulate(context, scene);
         for (const std::string& warning : sim.warnings) std::fprintf(stderr, "glint: %s\n", warning.c_str());
         const capture::Environment* environment = sim.environment ? &*sim.environment : nullptr;
-        capture::writeSequence(options.outDir, sim.frames, scene.frameRate, environment);
+        capture::writeSequence(options.outDir, sim.frames, scene.frameRate, environment, options.scenePath);
 
         std::printf("device: %s, driver %s %s\n", context.info.name.c_str(), context.info.driverName.c_str(),
                     context.info.driverInfo.c_str());

@@ -27,6 +27,8 @@ VkFormat formatFor(InputKind kind, bool compact) {
         return compact ? VK_FORMAT_R8_UNORM : VK_FORMAT_R32_SFLOAT;
     case InputKind::Environment:
         return VK_FORMAT_R32G32B32A32_SFLOAT;
+    case InputKind::SceneGeometry: // buffers, not an image
+        return VK_FORMAT_UNDEFINED;
     }
     return VK_FORMAT_UNDEFINED;
 }

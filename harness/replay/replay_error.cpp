@@ -89,25 +89,32 @@ ReferenceError compare(const std::string& effect, const NamedImage& output, cons
     return error;
 }
 
+// The effects whose outputs are reflections, scored on the glossy mask.
+bool isReflectionEffect(const std::string& effect) {
+    return effect == "reflections" || effect == "hybrid";
+}
+
 } // namespace
 
 std::vector<std::uint8_t> errorMask(const capture::Frame& frame, const std::string& effect,
                                     float roughnessThreshold) {
-    return effect == "reflections" ? glossyMask(frame, roughnessThreshold) : surfaceMask(frame);
+    return isReflectionEffect(effect) ? glossyMask(frame, roughnessThreshold) : surfaceMask(frame);
 }
 
 std::vector<ReferenceError> referenceErrors(const capture::Frame& frame, const FrameResult& result,
                                             float roughnessThreshold) {
     std::vector<ReferenceError> errors;
-    if (const NamedImage* reference = result.find("reflections/reference")) {
-        const NamedImage* output = result.find("reflections/denoised");
-        if (!output) output = result.find("reflections/noisy");
-        const NamedImage* noisy = result.find("reflections/noisy");
+    for (const std::string effect : {"reflections", "hybrid"}) {
+        const NamedImage* reference = result.find(effect + "/reference");
+        if (!reference) continue;
+        const NamedImage* output = result.find(effect + "/denoised");
+        if (!output) output = result.find(effect + "/noisy");
+        const NamedImage* noisy = result.find(effect + "/noisy");
         const std::vector<std::uint8_t> mask = glossyMask(frame, roughnessThreshold);
         if (output) {
-            errors.push_back(compare("reflections", *output, reference->image, mask, true));
+            errors.push_back(compare(effect, *output, reference->image, mask, true));
             if (noisy && noisy != output)
-                errors.back().noisyMean = compare("reflections", *noisy, reference->image, mask, true).mean;
+                errors.back().noisyMean = compare(effect, *noisy, reference->image, mask, true).mean;
         }
     }
     if (const NamedImage* reference = result.find("shadows/reference"))

@@ -98,6 +98,7 @@ std::string inputLayer(const capture::Frame& frame, InputKind kind) {
         return "shadow";
     case InputKind::PreviousDepth:
     case InputKind::Environment:
+    case InputKind::SceneGeometry:
         return "";
     }
     return "";
@@ -128,6 +129,7 @@ std::vector<float> inputTexels(const capture::Frame& frame, InputKind kind, std:
         return layerChannels(frame, "shadow", 1);
     case InputKind::PreviousDepth:
     case InputKind::Environment:
+    case InputKind::SceneGeometry:
         break;
     }
     throw std::logic_error("replay: inputTexels does not read this kind");

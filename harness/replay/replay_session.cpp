@@ -4,6 +4,9 @@
 
 #include <gpu/gpu_effect_runner.h>
 #include <gpu/gpu_transfer.h>
+#include <scene/scene_buffers.h>
+#include <scene/scene_file.h>
+#include <scene/scene_shaders.h>
 
 #include <algorithm>
 #include <stdexcept>
@@ -70,7 +73,7 @@ std::optional<MissingLayer> missingLayer(const capture::Frame& frame, const std:
         if (std::find(effects.begin(), effects.end(), effect->name) == effects.end()) continue;
         for (const InputDesc& input : effect->inputs) {
             if (!inputUsed(input, settings) || input.kind == InputKind::Environment ||
-                input.kind == InputKind::PreviousDepth)
+                input.kind == InputKind::PreviousDepth || input.kind == InputKind::SceneGeometry)
                 continue;
             const std::string layer = inputLayer(frame, input.kind);
             if (input.kind == InputKind::Material && !hasLayer(frame, layer))
@@ -118,10 +121,20 @@ Session::Session(const gpu::Context& context, const capture::Frame& first,
     for (const std::string& name : effects_) {
         auto running = std::make_unique<Running>();
         running->descriptor = findEffect(name);
+        for (const InputDesc& input : running->descriptor->inputs)
+            if (input.kind == InputKind::SceneGeometry && !scene_) {
+                if (options_.scene.empty())
+                    throw std::invalid_argument(
+                        "effect '" + name +
+                        "' ray traces the scene's geometry, which this capture does not name: replay a "
+                        "capture written by glint simulate (its manifest records the scene file)");
+                scene_ = std::make_unique<scene::SceneBuffers>(context_, scene::loadScene(options_.scene));
+            }
         if (options_.intermediates && !running->descriptor->debugSetting.empty())
             options_.settings.set(running->descriptor->debugSetting, 1.0);
         running->plan = planOrThrow(*running->descriptor, info, options_.settings);
-        running->runner = std::make_unique<gpu::EffectRunner>(context_, running->plan);
+        // The harness's modules for the application's passes (the hybrid effect's ray tracing).
+        running->runner = std::make_unique<gpu::EffectRunner>(context_, running->plan, scene::findShader);
         running_.push_back(std::move(running));
     }
 }
@@ -141,6 +154,7 @@ void Session::uploadInputs(const capture::Frame& frame, bool reset) {
                 continue;
             }
             if (input.kind == InputKind::PreviousDepth) continue; // after this frame's depth
+            if (input.kind == InputKind::SceneGeometry) continue; // buffers, set per frame in run()
             std::uint32_t channels = 0;
             std::vector<float> texels = inputTexels(frame, input.kind, channels);
             inputs_->upload(input.kind, texels, channels);
@@ -161,8 +175,10 @@ void Session::uploadInputs(const capture::Frame& frame, bool reset) {
 void Session::dispatch(Running& effect, const FrameInfo& info, FrameResult& result) {
     effect.plan = planOrThrow(*effect.descriptor, info, options_.settings);
     vk::ResourceTable inputs;
-    for (const InputDesc& input : effect.descriptor->inputs)
+    for (const InputDesc& input : effect.descriptor->inputs) {
+        if (input.kind == InputKind::SceneGeometry && scene_) scene_->addTo(inputs);
         if (const vk::Image* image = inputs_->find(input.kind)) inputs.images[input.resource] = image;
+    }
     const std::string& name = effect.descriptor->name;
     const gpu::FrameRun run = effect.runner->run(effect.plan, inputs, options_.readback);
     for (std::size_t i = 0; i < std::min(run.passes.size(), run.milliseconds.size()); ++i)
@@ -195,6 +211,7 @@ FrameResult Session::run(const capture::Frame& frame, bool cut) {
     const bool reset = frame_ == 0 || cut;
     const FrameInfo info = frameInfo(frame, environment_, frame_, reset);
     uploadInputs(frame, reset);
+    if (scene_) scene_->setFrame(frame.frameIndex); // the previous frame's work has finished
     for (const auto& running : running_) {
         try {
             dispatch(*running, info, result);

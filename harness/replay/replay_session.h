@@ -26,6 +26,10 @@
 #include <string>
 #include <vector>
 
+namespace glint::scene {
+class SceneBuffers;
+}
+
 namespace glint::replay {
 
 // The effects replay knows (every registered effect), in the order they run.
@@ -79,6 +83,9 @@ struct SessionOptions {
     SettingValues settings = defaultSettings(effectRegistry());
     bool intermediates = false; // also every intermediate (glint dump)
     bool readback = true;       // false: timings and counters only (benchmarks)
+    // The scene file the capture was simulated from (its manifest's "scene"): the geometry of
+    // the effects that ray trace (InputKind::SceneGeometry). Empty: such effects are refused.
+    std::string scene;
 };
 
 class Session {
@@ -111,6 +118,7 @@ class Session {
     std::vector<std::string> effects_;
     std::vector<std::unique_ptr<Running>> running_;
     std::unique_ptr<gpu::InputImages> inputs_;
+    std::unique_ptr<scene::SceneBuffers> scene_;       // with an effect that ray traces
     std::map<InputKind, std::vector<float>> uploaded_; // this frame's inputs, for the shown ones
     std::vector<float> previousDepth_;
     FrameInfo last_;

@@ -43,6 +43,12 @@ foreach(case IN ITEMS reflections shadows roundtrip)
             -P "${CMAKE_CURRENT_SOURCE_DIR}/cli/replay_e2e.cmake")
   set_tests_properties("cli: replay end to end: ${case}" PROPERTIES LABELS gpu)
 endforeach()
+add_test(NAME "cli: hybrid end to end: the mirror corridor at half SSSR's error, a capture without its scene refused"
+  COMMAND "${CMAKE_COMMAND}" "-DGLINT=$<TARGET_FILE:glint>" "-DSCENES=${PROJECT_SOURCE_DIR}/harness/scenes"
+          "-DSAMPLE=${GLINT_CLI_SAMPLE_DIR}/sample" "-DOUT=${PROJECT_BINARY_DIR}/test-output/cli/hybrid"
+          -P "${CMAKE_CURRENT_SOURCE_DIR}/cli/hybrid_e2e.cmake")
+set_tests_properties("cli: hybrid end to end: the mirror corridor at half SSSR's error, a capture without its scene refused"
+  PROPERTIES LABELS gpu FIXTURES_REQUIRED cli_samples)
 glint_cli_test(NAME "run with a missing channel map names the map file" LABELS unit EXIT 2
   STDERR_ONE_LINE "no_such_map.toml"
   COMMAND run "${GLINT_CLI_SAMPLE_DIR}/sample" --map "${GLINT_CLI_SAMPLE_DIR}/no_such_map.toml"

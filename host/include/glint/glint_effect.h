@@ -57,6 +57,9 @@ enum class InputKind : std::uint8_t {
     Environment,       // RGBA: lat-long environment with its whole mip chain
     BaseColorMetallic, // RGBA: base colour and metallic
     ShadowVisibility,  // R: one binary visibility sample (1 = lit)
+    SceneGeometry,     // buffers: the application's scene for its ray tracing and shading modules
+                       // (glint's harness: "scene_constants", "scene_nodes", "scene_primitives",
+                       // "scene_materials", "scene_lights"; harness/scene/scene_buffers.h)
 };
 
 struct InputDesc {

@@ -3,4 +3,5 @@
 GLINT_EFFECT(depthPyramidEffect)
 GLINT_EFFECT(roughnessEffect)
 GLINT_EFFECT(reflectionsEffect)
+GLINT_EFFECT(hybridEffect)
 GLINT_EFFECT(shadowsEffect)

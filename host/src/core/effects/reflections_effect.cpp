@@ -4,6 +4,7 @@
 // denoised reflection the denoiser writes over "sssr_radiance"; its variance is next frame's
 // variance history for variance-guided tracing.
 #include "core/effects/effect_tables.h"
+#include "core/effects/reflections_settings.h"
 #include "core/sssr_table_images.h"
 
 #include "glint/glint_effect.h"
@@ -17,11 +18,7 @@
 #include <memory>
 
 namespace glint {
-namespace {
-
-using core::boolSetting;
-using core::floatSetting;
-using core::uintSetting;
+namespace core {
 
 std::vector<SettingDesc> reflectionsSettings() {
     const SssrDesc s;
@@ -128,8 +125,8 @@ SssrDesc sssrDesc(const FrameInfo& frame, const SettingValues& settings) {
     return desc;
 }
 
-ReflectionsDenoiserDesc denoiserDesc(const FrameInfo& frame, const SettingValues& settings,
-                                     const SssrDesc& sssr) {
+ReflectionsDenoiserDesc reflectionsDenoiserDesc(const FrameInfo& frame, const SettingValues& settings,
+                                                const SssrDesc& sssr) {
     ReflectionsDenoiserDesc desc = cameraDesc<ReflectionsDenoiserDesc>(frame);
     desc.previousClipFromWorld = frame.previousClipFromWorld;
     desc.resetHistory = frame.resetHistory;
@@ -144,6 +141,13 @@ ReflectionsDenoiserDesc denoiserDesc(const FrameInfo& frame, const SettingValues
     desc.cleanupSigma = settings.real("denoiser.cleanupSigma");
     return desc;
 }
+
+} // namespace core
+namespace {
+
+using core::reflectionsDenoiserDesc;
+using core::reflectionsSettings;
+using core::sssrDesc;
 
 void renameResource(EffectPlan& plan, const std::string& from, const std::string& to) {
     for (Pass& pass : plan.passes)
@@ -184,7 +188,7 @@ void addOutputs(EffectPlan& plan, const SssrDesc& sssr, const ReflectionsDenoise
 Result planFrame(const FrameInfo& frame, const SettingValues& settings, EffectPlan& plan,
                  std::string* error) {
     SssrDesc sssr = sssrDesc(frame, settings);
-    const ReflectionsDenoiserDesc denoiser = denoiserDesc(frame, settings, sssr);
+    const ReflectionsDenoiserDesc denoiser = reflectionsDenoiserDesc(frame, settings, sssr);
     sssr.storeRays = sssr.denoise && denoiser.spatialPath == SpatialPath::RatioEstimator;
     return planReflections(sssr, sssr.denoise ? &denoiser : nullptr, plan, error);
 }

@@ -1,0 +1,108 @@
+// The hybrid effect (glint_hybrid.h): screen space first, the application's ray tracer for the
+// rays screen space cannot answer, chosen per 8x8 tile from last frame's feedback; then
+// optionally the reflections denoiser and the composite, with the reflections effect's
+// settings for the shared parts.
+#include "core/effects/effect_tables.h"
+#include "core/effects/reflections_settings.h"
+
+#include "glint/glint_effect.h"
+#include "glint/glint_hybrid.h"
+
+namespace glint {
+namespace {
+
+using core::boolSetting;
+using core::floatSetting;
+
+std::vector<SettingDesc> hybridSettings() {
+    std::vector<SettingDesc> settings = core::reflectionsSettings();
+    const HybridDesc h;
+    const std::vector<SettingDesc> own = {
+        boolSetting("hybrid.screenSpace", h.screenSpace,
+                    "rays try screen space first (off: ray tracing only)", "HybridDesc::screenSpace"),
+        boolSetting("hybrid.rayTracing", h.rayTracing,
+                    "rays screen space cannot answer are ray traced (off: SSSR)", "HybridDesc::rayTracing"),
+        boolSetting("hybrid.feedback", h.feedback,
+                    "tiles choose screen space or ray tracing from last frame's hits",
+                    "HybridDesc::feedback"),
+        boolSetting("hybrid.alternateCheckerboard", h.alternateCheckerboard,
+                    "half-and-half tiles flip their checkerboard every frame",
+                    "HybridDesc::alternateCheckerboard"),
+        boolSetting("hybrid.mirrorsRayTraced", h.mirrorsRayTraced, "mirrors are always ray traced",
+                    "HybridDesc::mirrorsRayTraced"),
+        floatSetting("hybrid.spawnRate", h.spawnRate, 0, 1,
+                     "chance a tile without statistics tries screen space", "HybridDesc::spawnRate"),
+        floatSetting("hybrid.missWeight", h.missWeight, 0, 64,
+                     "a screen-space miss against a hit in the tile rule", "HybridDesc::missWeight"),
+        floatSetting("hybrid.rayTracingThreshold", h.rayTracingThreshold, 0, 1,
+                     "GGX alpha at and above which rays stay in screen space",
+                     "HybridDesc::rayTracingThreshold"),
+        floatSetting("hybrid.confidenceThreshold", h.confidenceThreshold, 0, 1,
+                     "screen-space results below this confidence are ray traced",
+                     "HybridDesc::confidenceThreshold"),
+        floatSetting("hybrid.maxRayDistance", h.maxRayDistance, 1e-3, 1e9,
+                     "world units a ray-traced ray reaches (the environment beyond)",
+                     "HybridDesc::maxRayDistance"),
+        floatSetting("hybrid.rayOffset", h.rayOffset, 0, 1e3,
+                     "world units the ray tracer's origin leaves the surface", "HybridDesc::rayOffset"),
+    };
+    settings.insert(settings.end(), own.begin(), own.end());
+    return settings;
+}
+
+Result planFrame(const FrameInfo& frame, const SettingValues& settings, EffectPlan& plan,
+                 std::string* error) {
+    HybridDesc desc;
+    desc.sssr = core::sssrDesc(frame, settings);
+    desc.screenSpace = settings.flag("hybrid.screenSpace");
+    desc.rayTracing = settings.flag("hybrid.rayTracing");
+    desc.feedback = settings.flag("hybrid.feedback");
+    desc.alternateCheckerboard = settings.flag("hybrid.alternateCheckerboard");
+    desc.mirrorsRayTraced = settings.flag("hybrid.mirrorsRayTraced");
+    desc.spawnRate = settings.real("hybrid.spawnRate");
+    desc.missWeight = settings.real("hybrid.missWeight");
+    desc.rayTracingThreshold = settings.real("hybrid.rayTracingThreshold");
+    desc.confidenceThreshold = settings.real("hybrid.confidenceThreshold");
+    desc.maxRayDistance = settings.real("hybrid.maxRayDistance");
+    desc.rayOffset = settings.real("hybrid.rayOffset");
+    if (desc.sssr.debugOutput || desc.sssr.thicknessAware || desc.sssr.previousFrameColor) {
+        if (error)
+            *error =
+                "hybrid: debugOutput, thicknessAware and previousFrameColor are not supported by the hybrid "
+                "effect yet";
+        return Result::InvalidArgument;
+    }
+    const ReflectionsDenoiserDesc denoiser = core::reflectionsDenoiserDesc(frame, settings, desc.sssr);
+    if (desc.sssr.denoise && denoiser.spatialPath == SpatialPath::RatioEstimator) {
+        if (error)
+            *error =
+                "hybrid: the denoiser's ratio path needs stored rays, which the hybrid does not write yet";
+        return Result::InvalidArgument;
+    }
+    return planHybridReflections(desc, desc.sssr.denoise ? &denoiser : nullptr, plan, error);
+}
+
+} // namespace
+
+const EffectDescriptor& hybridEffect() {
+    static const EffectDescriptor descriptor{
+        "hybrid",
+        "reflections traced in screen space first and by the scene's ray tracer where that fails, per tile",
+        hybridSettings(),
+        {{"depth", InputKind::Depth, ""},
+         {"normals", InputKind::Normals, ""},
+         {"material", InputKind::Material, ""},
+         {"color", InputKind::Color, "", "input"},
+         {"motion", InputKind::Motion, ""},
+         {"environment", InputKind::Environment, ""},
+         {"scene_primitives", InputKind::SceneGeometry, ""},
+         {"base_color_metallic", InputKind::BaseColorMetallic, "composite"}},
+        planFrame,
+        {"composite", "halfPrecisionStorage", "denoise"},
+        "",
+        "reflection",
+    };
+    return descriptor;
+}
+
+} // namespace glint

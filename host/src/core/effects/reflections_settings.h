@@ -1,0 +1,19 @@
+// The reflections effect's settings and the descs it makes from them, shared with the hybrid
+// effect (which traces, denoises and composites with the same SSSR and denoiser settings).
+#pragma once
+
+#include "glint/glint_effect.h"
+#include "glint/glint_reflections_denoiser.h"
+#include "glint/glint_settings.h"
+#include "glint/glint_sssr.h"
+
+#include <vector>
+
+namespace glint::core {
+
+std::vector<SettingDesc> reflectionsSettings();
+SssrDesc sssrDesc(const FrameInfo& frame, const SettingValues& settings);
+ReflectionsDenoiserDesc reflectionsDenoiserDesc(const FrameInfo& frame, const SettingValues& settings,
+                                                const SssrDesc& sssr);
+
+} // namespace glint::core
