@@ -2,7 +2,9 @@
 #   reflections: the glossy room with references through run with the denoiser; the denoised
 #                error against reference.reflection must be below the noisy input's and under
 #                a bound, with no non-finite pixel
-#   shadows:     the courtyard through run; the same for the penumbra shadow
+#   shadows:     the courtyard through run; the denoised error over receivers against
+#                reference.shadow must be below the noisy input's and under a bound, the
+#                penumbra's under a bound, with no non-finite pixel
 #   roundtrip:   dump a frame, check it against itself (exit 0), then against a dump made with
 #                a different traversal budget (exit 1, the intersection differs), then report
 file(REMOVE_RECURSE "${OUT}")
@@ -37,8 +39,8 @@ if(CASE STREQUAL "reflections")
   glint_expect(0 --validate run "${OUT}/capture" --set denoise=true --set composite=true --out "${OUT}/run")
   summary_error(reflections last denoised)
   summary_error(reflections noisyLast noisy)
-  # Measured on lavapipe 2026-11-22: denoised 0.450, noisy input 0.864 (mean relative error
-  # over glossy pixels). The camera moves every frame in this scene.
+  # Measured on lavapipe 2026-11-22 and again 2026-12-02: denoised 0.450, noisy input 0.864
+  # (mean relative error over glossy pixels). The camera moves every frame in this scene.
   require_less("denoised error" "${denoised}" 0.55)
   require_less("denoised error relative to the noisy input" "${denoised}" "${noisy}")
   foreach(image noisy denoised composite reference error)
@@ -50,13 +52,17 @@ elseif(CASE STREQUAL "shadows")
   glint_expect(0 --validate simulate "${SCENES}/courtyard_penumbra.toml" --size 96x54 --frame-count 6 --spp 16 --out "${OUT}/capture")
   glint_expect(0 --validate run "${OUT}/capture" --out "${OUT}/run")
   summary_error(shadows last denoised)
+  summary_error(shadows noisyLast noisy)
   file(READ "${OUT}/run/summary.json" json)
   string(JSON frames LENGTH "${json}" frames)
   math(EXPR lastFrame "${frames} - 1")
   string(JSON penumbra GET "${json}" frames ${lastFrame} errors shadows penumbra)
   string(JSON nonFinite GET "${json}" frames ${lastFrame} errors shadows nonFinite)
-  # Measured on lavapipe 2026-11-22: mean |error| over receivers 0.0083, penumbra 0.151 (the penumbra gap of issue 7:
-  # the plain average of the input is lower; see docs/shadow_denoiser.md).
+  # Measured on lavapipe 2026-12-02: mean |error| over receivers 0.0038 against the noisy
+  # input's 0.0045 (most receivers are fully lit or shadowed, where both are exact), penumbra
+  # 0.147 (the penumbra gap of issue 7: the plain average of the input is lower; see
+  # docs/shadow_denoiser.md). The absolute bounds only catch a broken run.
+  require_less("denoised shadow error over receivers relative to the noisy input" "${denoised}" "${noisy}")
   require_less("denoised shadow error over receivers" "${denoised}" 0.015)
   require_less("denoised shadow error over the penumbra" "${penumbra}" 0.2)
   if(NOT nonFinite EQUAL 0)
