@@ -62,15 +62,45 @@ Rgb decodeOctahedral(double px, double py) {
     return {x / length, y / length, z / length};
 }
 
+// The 16-bit permutation (halfPrecisionStorage) computes in 32 bits and rounds what it stores
+// (radiance, variance, history length) to fp16; its groupshared spans narrow values read from
+// fp16 images, which is lossless (rd_common.hlsli). The references are fed the stored (rounded)
+// intermediates, so each compared value differs from the 32-bit permutation's arithmetic by its
+// own store's rounding: at most 1 fp16 ulp (Vulkan leaves the direction of the conversion's
+// rounding to the device), 2^-10 of the value for normal halves, 2^-24 absolute below 6.1e-5.
+// The tile averages are stored in 32 bits, but reproject averages its in-register samples, which
+// differ from the stored ones the reference reads by the same 2^-10 each: for non-negative
+// radiance the weighted mean moves by at most 2^-10 of itself. Zero for the 32-bit permutation.
+struct StorageRounding {
+    double relative = 0.0, absolute = 0.0;
+};
+
+void checkPassesAgainstReferences(bool half);
+
 } // namespace
 
 TEST_CASE("the denoiser's tile averages, prefilter and resolve match their CPU references on the GPU's own "
           "intermediates",
           "[reflections_denoiser][reference]") {
+    checkPassesAgainstReferences(false);
+}
+
+TEST_CASE(
+    "16-bit storage: tile averages, prefilter and resolve match their CPU references within fp16 rounding",
+    "[reflections_denoiser][reference][half]") {
+    checkPassesAgainstReferences(true);
+}
+
+namespace {
+
+void checkPassesAgainstReferences(bool half) {
+    const StorageRounding fp16 =
+        half ? StorageRounding{std::ldexp(1.0, -10), std::ldexp(1.0, -24)} : StorageRounding{};
     test::DenoiserScene scene = test::simulateDenoiserScene("glossy_room", 96, 54, 1);
     const capture::Frame& frame = scene.frames.at(0);
     SssrDesc desc = scene.desc;
     desc.denoise = true;
+    desc.halfPrecisionStorage = half;
     // Mirrors (alpha below the threshold) are copied through by the prefilter; the default
     // threshold (1e-4) leaves none in this view of the floor's roughness ramp, 0.01 leaves a band.
     desc.mirrorThreshold = 0.01f;
@@ -85,7 +115,8 @@ TEST_CASE("the denoiser's tile averages, prefilter and resolve match their CPU r
     const std::size_t prefilterPass =
         static_cast<std::size_t>(std::find(passes.begin(), passes.end(), "prefilter") - passes.begin());
     REQUIRE(prefilterPass < passes.size());
-    gpu::Snapshot prefilterVariance(context, w, h, VK_FORMAT_R32_SFLOAT);
+    // The snapshot copies rd_variance as it is stored (vkCmdCopyImage needs the same texel size).
+    gpu::Snapshot prefilterVariance(context, w, h, half ? VK_FORMAT_R16_SFLOAT : VK_FORMAT_R32_SFLOAT);
 
     // The G-buffer as the denoiser reads it, in double: which pixels are glossy (finite,
     // in-range depth, a usable normal, alpha below the threshold) and their unit normals.
@@ -114,7 +145,8 @@ TEST_CASE("the denoiser's tile averages, prefilter and resolve match their CPU r
         INFO("frame " << index);
         desc.frameIndex = index;
         const bool reset = index == 0;
-        const ReflectionsDenoiserDesc denoiser = replay::denoiserFromFrame(frame, desc, index, reset);
+        ReflectionsDenoiserDesc denoiser = replay::denoiserFromFrame(frame, desc, index, reset);
+        denoiser.halfPrecisionStorage = half;
         const std::string parity = (index & 1u) != 0 ? "1" : "0";
         vk::PassHooks hooks;
         hooks.afterDispatch = [&](VkCommandBuffer cmd, std::size_t pass) {
@@ -211,17 +243,30 @@ TEST_CASE("the denoiser's tile averages, prefilter and resolve match their CPU r
             reference::tileAverages(w, h, contribution, surface.glossy, listed);
         // float32 sums of at most 64 terms each with an exp: relative error a few 1e-7 on
         // lavapipe; 1e-5 relative (plus 1e-6 absolute for channels near 0) leaves a wide margin.
+        // With 16-bit storage the weights max(exp(-0.3 luma), 0.01) move too: luma by 2^-10 of
+        // itself, each weight by at most 0.3 luma 2^-10 of itself (dw), so the weight sum by dw of
+        // itself and the weighted mean by at most 2 dw times the tile's largest value.
         Comparison averages{"tile average"};
         for (std::uint32_t ty = 0; ty < tilesY; ++ty)
             for (std::uint32_t tx = 0; tx < tilesX; ++tx) {
                 const std::size_t t = std::size_t{ty} * tilesX + tx;
                 if (!listed[t]) continue;
+                double largest = 0.0, largestLuma = 0.0;
+                for (std::uint32_t y = ty * 8; y < std::min(h, ty * 8 + 8); ++y)
+                    for (std::uint32_t x = tx * 8; x < std::min(w, tx * 8 + 8); ++x) {
+                        const std::size_t i = std::size_t{y} * w + x;
+                        if (!surface.glossy[i]) continue;
+                        largest = std::max(largest, maxAbs(contribution[i]));
+                        largestLuma = std::max(largestLuma, reference::luma(contribution[i]));
+                    }
+                const double weightShift = 0.3 * largestLuma * fp16.relative;
                 const Rgb gpuAverage = rgbAt(average, t);
                 for (std::size_t c = 0; c < 3; ++c)
                     averages.check(gpuAverage[c], expectedTiles.average[t][c],
-                                   maxAbs(expectedTiles.average[t]), 1e-5, 1e-6, tx, ty, c);
-                averages.check(average[4 * t + 3], expectedTiles.weight[t], expectedTiles.weight[t], 1e-5,
-                               1e-6, tx, ty, 3);
+                                   maxAbs(expectedTiles.average[t]), 1e-5 + fp16.relative,
+                                   1e-6 + fp16.absolute + 2.0 * weightShift * largest, tx, ty, c);
+                averages.check(average[4 * t + 3], expectedTiles.weight[t], expectedTiles.weight[t],
+                               1e-5 + weightShift, 1e-6, tx, ty, 3);
             }
 
         // The GPU's own tile grid: what prefilter and resolve read.
@@ -277,8 +322,10 @@ TEST_CASE("the denoiser's tile averages, prefilter and resolve match their CPU r
                 }
                 const reference::RadianceVariance& e = expectedPrefiltered[i];
                 for (std::size_t c = 0; c < 3; ++c)
-                    prefilterRgb.check(prefiltered[4 * i + c], e.rgb[c], maxAbs(e.rgb), 1e-4, 1e-5, x, y, c);
-                prefilterVar.check(prefiltered[4 * i + 3], e.variance, e.variance, 1e-4, 1e-5, x, y, 3);
+                    prefilterRgb.check(prefiltered[4 * i + c], e.rgb[c], maxAbs(e.rgb), 1e-4 + fp16.relative,
+                                       1e-5 + fp16.absolute, x, y, c);
+                prefilterVar.check(prefiltered[4 * i + 3], e.variance, e.variance, 1e-4 + fp16.relative,
+                                   1e-5 + fp16.absolute, x, y, 3);
             }
 
         // (c) Resolve of every glossy pixel of a listed tile from the read-back prefiltered
@@ -340,9 +387,10 @@ TEST_CASE("the denoiser's tile averages, prefilter and resolve match their CPU r
                     varianceMove = std::max(varianceMove, std::abs(moved.variance - e.variance));
                 }
                 for (std::size_t c = 0; c < 3; ++c)
-                    resolveRgb.check(radiance[4 * i + c], e.rgb[c], maxAbs(e.rgb), 1e-4, 1e-5 + move[c], x, y,
-                                     c);
-                resolveVar.check(variance[i], e.variance, e.variance, 1e-4, 1e-5 + varianceMove, x, y, 0);
+                    resolveRgb.check(radiance[4 * i + c], e.rgb[c], maxAbs(e.rgb), 1e-4 + fp16.relative,
+                                     1e-5 + fp16.absolute + move[c], x, y, c);
+                resolveVar.check(variance[i], e.variance, e.variance, 1e-4 + fp16.relative,
+                                 1e-5 + fp16.absolute + varianceMove, x, y, 0);
                 // The effect's output is the same value, written over sssr_radiance.
                 for (std::size_t c = 0; c < 3; ++c)
                     outputMismatches += out.radiance[4 * i + c] != radiance[4 * i + c] ? 1u : 0u;
@@ -362,8 +410,11 @@ TEST_CASE("the denoiser's tile averages, prefilter and resolve match their CPU r
         const Comparison* all[] = {&averages, &prefilterRgb, &prefilterVar, &resolveRgb, &resolveVar};
         for (std::size_t k = 0; k < 5; ++k) worst[k] = std::max(worst[k], all[k]->worst);
     }
-    WARN("worst error / tolerance over " << kFrames << " frames: tile averages " << worst[0]
-                                         << ", prefilter rgb " << worst[1] << " variance " << worst[2]
-                                         << ", resolve rgb " << worst[3] << " variance " << worst[4]);
+    WARN((half ? "16-bit" : "32-bit")
+         << " storage: worst error / tolerance over " << kFrames << " frames: tile averages " << worst[0]
+         << ", prefilter rgb " << worst[1] << " variance " << worst[2] << ", resolve rgb " << worst[3]
+         << " variance " << worst[4]);
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }
+
+} // namespace
