@@ -8,15 +8,20 @@
 #include "support/gpu_test_context.h"
 #include "support/test_replay.h"
 
+#include <gpu/gpu_effect_runner.h>
+#include <gpu/gpu_transfer.h>
 #include <replay/replay_frame.h>
 #include <scene/scene_buffers.h>
 #include <scene/scene_file.h>
+#include <scene/scene_shaders.h>
 #include <scene/scene_simulate.h>
 
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstring>
 
 using namespace glint;
 
@@ -95,5 +100,57 @@ TEST_CASE("on the mirror corridor the hybrid's error is at least 2x lower than S
     CHECK(relativeError(hybrid.radiance, reference, confident) ==
           Approx(relativeError(screenSpace.radiance, reference, confident)).margin(1e-9));
     for (const float value : hybrid.radiance) REQUIRE(std::isfinite(value));
+    GLINT_REQUIRE_NO_VALIDATION_ERRORS();
+}
+
+TEST_CASE(
+    "on a static corridor, tiles where screen space fails turn to the ray tracer within two frames and stay",
+    "[hybrid][scene][feedback]") {
+    scene::Scene scene = scene::loadScene(GLINT_SOURCE_DIR "/harness/scenes/mirror_corridor.toml");
+    scene.width = 160;
+    scene.height = 90;
+    scene.frameCount = 1;
+    const scene::Simulation sim = scene::simulate(test::testContext(), scene);
+    test::SssrTestView view;
+    view.desc.samplesPerQuad = 4;
+    replay::sssrFromFrame(sim.frames[0], *sim.environment, view.desc, view.inputs);
+    scene::SceneBuffers buffers(test::testContext(), scene);
+
+    HybridDesc desc;
+    desc.sssr = view.desc;
+    EffectPlan plan;
+    std::string error;
+    REQUIRE(planHybridReflections(desc, nullptr, plan, &error) == Result::Ok);
+    const gpu::Context& context = test::testContext();
+    gpu::EffectRunner runner(context, plan, scene::findShader);
+    gpu::InputImages inputs(context, view.desc.size, false);
+    vk::ResourceTable table = test::uploadInputs(inputs, view);
+    buffers.addTo(table);
+    const std::size_t tiles = std::size_t{(160 + 7) / 8} * ((90 + 7) / 8);
+    std::vector<std::array<std::size_t, 3>> history; // tiles per class, per frame
+    for (std::uint32_t frame = 0; frame < 12; ++frame) {
+        desc.sssr.frameIndex = frame;
+        REQUIRE(planHybridReflections(desc, nullptr, plan, &error) == Result::Ok);
+        runner.run(plan, table);
+        const std::vector<std::byte> bytes =
+            gpu::readbackImageBytes(context, runner.image("hybrid_tile_class"));
+        std::vector<std::uint32_t> words(bytes.size() / 4);
+        std::memcpy(words.data(), bytes.data(), bytes.size());
+        std::size_t counts[3] = {};
+        for (const std::uint32_t c : words) ++counts[std::min(c, 2u)];
+        INFO("frame " << frame << ": FULL_SW " << counts[0] << ", HALF_SW " << counts[1] << ", FULL_HW "
+                      << counts[2]);
+        REQUIRE(words.size() == tiles);
+        history.push_back({counts[0], counts[1], counts[2]});
+    }
+    // Screen space was adopted where it works: most tiles end FULL_SW, some stay ray traced.
+    CHECK(history[0][0] < tiles / 10);
+    CHECK(history[11][0] > tiles / 2);
+    CHECK(history[11][2] > 0);
+    for (std::size_t frame = 8; frame < 12; ++frame)
+        for (std::size_t c = 0; c < 3; ++c) {
+            INFO("frame " << frame << " class " << c);
+            CHECK(std::abs(static_cast<long>(history[frame][c]) - static_cast<long>(history[7][c])) <= 4);
+        }
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }
