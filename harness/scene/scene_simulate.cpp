@@ -265,7 +265,8 @@ std::string backgroundDepthWarning(const Scene& scene, std::size_t pixels, std::
 
 std::vector<std::string> captureEffects(const Scene& scene) {
     std::vector<std::string> effects;
-    if (needsReflections(scene)) effects.push_back("reflections");
+    if (hasEffect(scene, Effect::Reflections)) effects.push_back("reflections");
+    if (hasEffect(scene, Effect::Hybrid)) effects.push_back("hybrid");
     if (needsShadows(scene)) effects.push_back("shadows");
     return effects;
 }
