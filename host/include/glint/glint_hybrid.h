@@ -1,11 +1,12 @@
 // glint public API: hybrid reflections (docs/hybrid.md), screen space first and a ray-traced
 // fallback chosen per 8x8 tile from last frame's hit/miss feedback.
 //
-// In progress: the plan holds the depth pyramid, the tile classification (feedback counters,
-// tile classes, the screen-space and ray-traced ray lists, the denoiser's tile list), blue noise
-// and arguments, the screen-space intersection with feedback, the ray tracer's arguments, ray
-// tracing and deferred shading; planHybridReflections adds the denoiser and the composite. The
-// effect is not registered yet: replays have no scene geometry for the ray tracer.
+// planHybrid's plan holds the depth pyramid, the tile classification (feedback counters, tile
+// classes, the screen-space and ray-traced ray lists, the denoiser's tile list), blue noise and
+// arguments, the screen-space intersection with feedback, the ray tracer's arguments, ray
+// tracing, deferred shading and, with sssr.composite, SSSR's composite. planHybridReflections
+// adds the reflections denoiser before the composite; the effect "hybrid" (glint_effect.h)
+// plans through it.
 #pragma once
 
 #include "glint/glint_pass.h"
@@ -56,7 +57,7 @@ struct HybridDesc {
 Result planHybrid(const HybridDesc& desc, EffectPlan& plan, std::string* error);
 
 // The hybrid result denoised by the reflections denoiser (glint_reflections_denoiser.h) when
-// `denoiser` is given (desc.sssr.denoise must then be set), and composited with
+// `denoiser` is given (desc.sssr.denoise must then be set), then composited with
 // desc.sssr.composite: the hybrid counterpart of planReflections (glint_reflections.h). The
 // denoiser's passes follow the shading pass and read the hybrid tile list and arguments; the
 // classification reads the variance the denoiser resolved last frame. Names its outputs

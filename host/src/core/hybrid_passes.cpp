@@ -64,86 +64,39 @@ std::vector<std::byte> packConstants(const shaders::GLINT_SssrConstants& sssr,
 }
 
 Pass classifyPass(const HybridDesc& desc, const std::vector<std::byte>& constants) {
-    Pass pass;
-    pass.name = "classify";
-    pass.pipeline = desc.sssr.halfPrecisionStorage ? "hybrid_classify.half" : "hybrid_classify";
-    pass.groupSize[0] = GLINT_SSSR_TILE;
-    pass.groupSize[1] = GLINT_SSSR_TILE;
-    pass.constantsBinding = "g_glint_constants";
-    pass.constants = constants;
+    Pass pass = core::sssrPass("classify",
+                               desc.sssr.halfPrecisionStorage ? "hybrid_classify.half" : "hybrid_classify",
+                               GLINT_SSSR_TILE, GLINT_SSSR_TILE, constants);
     pass.dispatch = core::gridFor(desc.sssr.size.width, desc.sssr.size.height, 1, pass.groupSize);
     const auto [feedback, history] = hybridFeedbackImages(desc.sssr.frameIndex);
-    pass.uses = {{"g_glint_depth", "depth", Access::Read},
-                 {"g_glint_normals", "normals", Access::Read},
-                 {"g_glint_material", "material", Access::Read},
-                 {"g_glint_motion", "motion", Access::Read},
-                 // The denoiser's variance history joins with the denoiser; until then a zero one.
-                 {"g_glint_variance_history", "sssr_zero_variance", Access::Read},
-                 {"g_glint_environment", "environment", Access::Read},
-                 {"g_glint_roughness", "sssr_roughness", Access::Write},
-                 {"g_glint_radiance", "sssr_radiance", Access::Write},
-                 {"g_glint_confidence", "sssr_confidence", Access::Write},
-                 {"g_glint_counters", "hybrid_counters", Access::ReadWrite},
-                 {"g_glint_sw_ray_list", "hybrid_sw_ray_list", Access::Write},
-                 {"g_glint_hw_ray_list", "hybrid_hw_ray_list", Access::Write},
-                 {"g_glint_tile_list", "sssr_tile_list", Access::Write},
-                 {"g_glint_feedback_history", history, Access::Read},
-                 {"g_glint_feedback", feedback, Access::Write},
-                 {"g_glint_tile_class", "hybrid_tile_class", Access::Write}};
-    return pass;
-}
-
-Pass hybridPass(const char* name, std::string pipeline, std::uint32_t groupX, std::uint32_t groupY,
-                const std::vector<std::byte>& constants) {
-    Pass pass;
-    pass.name = name;
-    pass.pipeline = std::move(pipeline);
-    pass.groupSize[0] = groupX;
-    pass.groupSize[1] = groupY;
-    if (!constants.empty()) {
-        pass.constantsBinding = "g_glint_constants";
-        pass.constants = constants;
-    }
-    return pass;
-}
-
-// SSSR's blue-noise pass, which also turns counters 0 and 2 (the screen-space list's length,
-// padding included, and the denoiser's tiles) into the intersection's and the denoiser's
-// arguments: the hybrid counters and arguments start with SSSR's layout.
-Pass blueNoisePass(const std::vector<std::byte>& sssrConstants) {
-    Pass pass = hybridPass("blue_noise_args", "sssr_blue_noise", 8, 8, sssrConstants);
-    pass.dispatch = DirectDispatch{GLINT_SSSR_BLUE_NOISE_SIZE / 8, GLINT_SSSR_BLUE_NOISE_SIZE / 8, 1};
-    pass.uses = {{"g_glint_blue_noise_source", "sssr_blue_noise_source", Access::Read},
-                 {"g_glint_blue_noise", "sssr_blue_noise", Access::Write},
-                 {"g_glint_counters", "hybrid_counters", Access::ReadWrite},
-                 {"g_glint_arguments", "hybrid_indirect_args", Access::Write}};
+    // The denoiser's variance history joins with the denoiser (planHybridReflections).
+    pass.uses = core::sssrClassifyUses("sssr_zero_variance");
+    pass.uses.insert(pass.uses.end(), {{"g_glint_counters", "hybrid_counters", Access::ReadWrite},
+                                       {"g_glint_sw_ray_list", "hybrid_sw_ray_list", Access::Write},
+                                       {"g_glint_hw_ray_list", "hybrid_hw_ray_list", Access::Write},
+                                       {"g_glint_tile_list", "sssr_tile_list", Access::Write},
+                                       {"g_glint_feedback_history", history, Access::Read},
+                                       {"g_glint_feedback", feedback, Access::Write},
+                                       {"g_glint_tile_class", "hybrid_tile_class", Access::Write}});
     return pass;
 }
 
 Pass intersectPass(const HybridDesc& desc, const std::vector<std::byte>& constants) {
-    Pass pass =
-        hybridPass("intersect", desc.sssr.halfPrecisionStorage ? "hybrid_intersect.half" : "hybrid_intersect",
-                   GLINT_SSSR_RAYS_PER_GROUP, 1, constants);
+    Pass pass = core::sssrPass("intersect",
+                               desc.sssr.halfPrecisionStorage ? "hybrid_intersect.half" : "hybrid_intersect",
+                               GLINT_SSSR_RAYS_PER_GROUP, 1, constants);
     pass.dispatch = IndirectDispatch{"hybrid_indirect_args", 0};
-    pass.uses = {{"g_glint_depth", "depth", Access::Read},
-                 {"g_glint_depth_pyramid", "depth_pyramid", Access::Read},
-                 {"g_glint_normals", "normals", Access::Read},
-                 {"g_glint_roughness", "sssr_roughness", Access::Read},
-                 {"g_glint_blue_noise", "sssr_blue_noise", Access::Read},
-                 {"g_glint_color", "color", Access::Read},
-                 {"g_glint_motion", "motion", Access::Read},
-                 {"g_glint_environment", "environment", Access::Read},
-                 {"g_glint_counters", "hybrid_counters", Access::ReadWrite},
-                 {"g_glint_ray_list", "hybrid_sw_ray_list", Access::Read},
-                 {"g_glint_radiance", "sssr_radiance", Access::ReadWrite},
-                 {"g_glint_confidence", "sssr_confidence", Access::ReadWrite},
-                 {"g_glint_hw_ray_list", "hybrid_hw_ray_list", Access::ReadWrite},
-                 {"g_glint_feedback", hybridFeedbackImages(desc.sssr.frameIndex).first, Access::ReadWrite}};
+    pass.uses = core::sssrIntersectUses();
+    pass.uses.insert(pass.uses.end(), {{"g_glint_counters", "hybrid_counters", Access::ReadWrite},
+                                       {"g_glint_ray_list", "hybrid_sw_ray_list", Access::Read},
+                                       {"g_glint_hw_ray_list", "hybrid_hw_ray_list", Access::ReadWrite},
+                                       {"g_glint_feedback", hybridFeedbackImages(desc.sssr.frameIndex).first,
+                                        Access::ReadWrite}});
     return pass;
 }
 
 Pass rayTracedArgumentsPass() {
-    Pass pass = hybridPass("hw_args", "hybrid_hw_args", 1, 1, {});
+    Pass pass = core::sssrPass("hw_args", "hybrid_hw_args", 1, 1, {});
     pass.dispatch = DirectDispatch{1, 1, 1};
     pass.uses = {{"g_glint_counters", "hybrid_counters", Access::ReadWrite},
                  {"g_glint_arguments", "hybrid_indirect_args", Access::ReadWrite}};
@@ -163,7 +116,7 @@ std::vector<ResourceUse> rayTracedSurfaceUses() {
 }
 
 Pass tracePass(const HybridDesc& desc, const std::vector<std::byte>& constants) {
-    Pass pass = hybridPass("trace", desc.tracePipeline, GLINT_SSSR_RAYS_PER_GROUP, 1, constants);
+    Pass pass = core::sssrPass("trace", desc.tracePipeline, GLINT_SSSR_RAYS_PER_GROUP, 1, constants);
     pass.dispatch = IndirectDispatch{"hybrid_indirect_args", GLINT_HYBRID_HW_ARGUMENTS_OFFSET};
     pass.uses = rayTracedSurfaceUses();
     pass.uses.push_back({"g_glint_hits", "hybrid_hits", Access::Write});
@@ -171,9 +124,9 @@ Pass tracePass(const HybridDesc& desc, const std::vector<std::byte>& constants) 
 }
 
 Pass shadePass(const HybridDesc& desc, const std::vector<std::byte>& constants) {
-    Pass pass = hybridPass("shade",
-                           desc.sssr.halfPrecisionStorage ? desc.shadePipeline + ".half" : desc.shadePipeline,
-                           GLINT_SSSR_RAYS_PER_GROUP, 1, constants);
+    Pass pass = core::sssrPass(
+        "shade", desc.sssr.halfPrecisionStorage ? desc.shadePipeline + ".half" : desc.shadePipeline,
+        GLINT_SSSR_RAYS_PER_GROUP, 1, constants);
     pass.dispatch = IndirectDispatch{"hybrid_indirect_args", GLINT_HYBRID_HW_ARGUMENTS_OFFSET};
     pass.uses = rayTracedSurfaceUses();
     pass.uses.insert(pass.uses.end(), {{"g_glint_hits", "hybrid_hits", Access::Read},
@@ -246,11 +199,21 @@ Result planHybrid(const HybridDesc& desc, EffectPlan& plan, std::string* error) 
         core::makeSssrConstants(desc.sssr, viewFromClip, worldFromView);
     const std::vector<std::byte> constants = packConstants(sssrConstants, makeConstants(desc));
     plan.passes.push_back(classifyPass(desc, constants));
-    plan.passes.push_back(blueNoisePass(core::packConstants(sssrConstants)));
+    const std::vector<std::byte> sssrOnly = core::packConstants(sssrConstants);
+    // SSSR's blue-noise pass turns counters 0 and 2 (the screen-space list's length, padding
+    // included, and the denoiser's tiles) into the intersection's and the denoiser's arguments:
+    // the hybrid counters and arguments start with SSSR's layout.
+    plan.passes.push_back(core::sssrBlueNoisePass(sssrOnly, "hybrid_counters", "hybrid_indirect_args"));
     plan.passes.push_back(intersectPass(desc, constants));
     plan.passes.push_back(rayTracedArgumentsPass());
     plan.passes.push_back(tracePass(desc, constants));
     plan.passes.push_back(shadePass(desc, constants));
+    if (desc.sssr.composite) {
+        plan.images.push_back({"sssr_brdf_lut", kSssrBrdfLutSize, kSssrBrdfLutSize, 1, Format::RG32Float,
+                               core::sssrBrdfLutTexels()});
+        plan.images.push_back({"composite", w, h, 1, Format::RGBA32Float});
+        plan.passes.push_back(core::sssrCompositePass(desc.sssr, sssrOnly));
+    }
     return Result::Ok;
 }
 

@@ -2,27 +2,14 @@
 // composite, and the plan's outputs and counters (glint_hybrid.h).
 #include "glint/glint_hybrid.h"
 
-#include "core/dispatch.h"
+#include "core/pass_model.h"
 #include "core/plan_checks.h"
-#include "core/sssr_constants.h"
-#include "core/sssr_table_images.h"
-#include "glint/glint_sssr_tables.h"
 #include "glint/hybrid/glint_hybrid_constants.h"
 
 #include <algorithm>
 
 namespace glint {
 namespace {
-
-void renameUses(std::vector<Pass>& passes, const std::string& from, const std::string& to) {
-    for (Pass& pass : passes)
-        for (ResourceUse& use : pass.uses)
-            if (use.resource == from) use.resource = to;
-    for (Pass& pass : passes)
-        if (auto* indirect = std::get_if<IndirectDispatch>(&pass.dispatch);
-            indirect && indirect->resource == from)
-            indirect->resource = to;
-}
 
 void addOutputs(EffectPlan& plan, const HybridDesc& desc, const ReflectionsDenoiserDesc* denoiser) {
     const char* denoisedBy =
@@ -61,8 +48,8 @@ Result planHybridReflections(const HybridDesc& desc, const ReflectionsDenoiserDe
     if (const Result result = planHybrid(hybrid, plan, error); result != Result::Ok) return result;
     if (hybrid.sssr.denoise) {
         // The variance the denoiser resolved last frame guides classification (as SSSR's).
-        renameUses(plan.passes, "sssr_zero_variance",
-                   reflectionsDenoiserVariance(hybrid.sssr.frameIndex + 1));
+        core::renameResource(plan.passes, "sssr_zero_variance",
+                             reflectionsDenoiserVariance(hybrid.sssr.frameIndex + 1));
         std::erase_if(plan.images, [](const ImageDesc& image) { return image.name == "sssr_zero_variance"; });
         // With denoise but no denoiser desc this frame: the denoiser's resources, none of its passes.
         ReflectionsDenoiserDesc resourcesOnly;
@@ -75,23 +62,11 @@ Result planHybridReflections(const HybridDesc& desc, const ReflectionsDenoiserDe
             return result;
         // The hybrid counters and arguments start with SSSR's layout: the denoiser's tile count
         // is word 3 and its arguments are at byte 12.
-        renameUses(denoiserPlan.passes, "sssr_indirect_args", "hybrid_indirect_args");
+        core::renameResource(denoiserPlan.passes, "sssr_indirect_args", "hybrid_indirect_args");
         if (denoiser)
             plan.passes.insert(plan.passes.end(), denoiserPlan.passes.begin(), denoiserPlan.passes.end());
         plan.images.insert(plan.images.end(), denoiserPlan.images.begin(), denoiserPlan.images.end());
         plan.buffers.insert(plan.buffers.end(), denoiserPlan.buffers.begin(), denoiserPlan.buffers.end());
-    }
-    if (hybrid.sssr.composite) {
-        core::Matrix4 viewFromClip{}, worldFromView{};
-        core::invert(hybrid.sssr.projection, viewFromClip); // planHybrid checked both
-        core::invert(hybrid.sssr.viewFromWorld, worldFromView);
-        plan.images.push_back({"sssr_brdf_lut", kSssrBrdfLutSize, kSssrBrdfLutSize, 1, Format::RG32Float,
-                               core::sssrBrdfLutTexels()});
-        plan.images.push_back(
-            {"composite", hybrid.sssr.size.width, hybrid.sssr.size.height, 1, Format::RGBA32Float});
-        plan.passes.push_back(core::sssrCompositePass(
-            hybrid.sssr,
-            core::packConstants(core::makeSssrConstants(hybrid.sssr, viewFromClip, worldFromView))));
     }
     addOutputs(plan, hybrid, denoiser);
     return Result::Ok;

@@ -130,4 +130,14 @@ std::vector<PlannedBarrier> planBarriers(const EffectPlan& plan) {
     return barriers;
 }
 
+void renameResource(std::vector<Pass>& passes, const std::string& from, const std::string& to) {
+    for (Pass& pass : passes) {
+        for (ResourceUse& use : pass.uses)
+            if (use.resource == from) use.resource = to;
+        if (auto* indirect = std::get_if<IndirectDispatch>(&pass.dispatch);
+            indirect && indirect->resource == from)
+            indirect->resource = to;
+    }
+}
+
 } // namespace glint::core

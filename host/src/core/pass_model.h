@@ -42,6 +42,10 @@ std::string validatePlan(const EffectPlan& plan);
 // the engine pass that produced it. Reads after reads need nothing.
 std::vector<PlannedBarrier> planBarriers(const EffectPlan& plan);
 
+// Renames resource `from` to `to` in every pass's uses and indirect dispatches: how effects
+// compose by resource name (a history that another effect writes, a shared buffer's name).
+void renameResource(std::vector<Pass>& passes, const std::string& from, const std::string& to);
+
 // The union of a pass's accesses to one resource (a pass may bind it more than once).
 std::uint32_t accessFlags(Access access);
 

@@ -93,14 +93,60 @@ shaders::GLINT_SssrConstants makeSssrConstants(const SssrDesc& desc, const core:
     return c;
 }
 
-Pass sssrCompositePass(const SssrDesc& desc, const std::vector<std::byte>& constants) {
+Pass sssrPass(const char* name, std::string pipeline, std::uint32_t groupX, std::uint32_t groupY,
+              const std::vector<std::byte>& constants) {
     Pass pass;
-    pass.name = "composite";
-    pass.pipeline = "sssr_composite";
-    pass.groupSize[0] = GLINT_SSSR_TILE;
-    pass.groupSize[1] = GLINT_SSSR_TILE;
-    pass.constantsBinding = "g_glint_constants";
-    pass.constants = constants;
+    pass.name = name;
+    pass.pipeline = std::move(pipeline);
+    pass.groupSize[0] = groupX;
+    pass.groupSize[1] = groupY;
+    pass.groupSize[2] = 1;
+    if (!constants.empty()) {
+        pass.constantsBinding = "g_glint_constants";
+        pass.constants = constants;
+    }
+    return pass;
+}
+
+std::vector<ResourceUse> sssrClassifyUses(const std::string& varianceHistory) {
+    return {{"g_glint_depth", "depth", Access::Read},
+            {"g_glint_normals", "normals", Access::Read},
+            {"g_glint_material", "material", Access::Read},
+            {"g_glint_motion", "motion", Access::Read},
+            {"g_glint_variance_history", varianceHistory, Access::Read},
+            {"g_glint_environment", "environment", Access::Read},
+            {"g_glint_roughness", "sssr_roughness", Access::Write},
+            {"g_glint_radiance", "sssr_radiance", Access::Write},
+            {"g_glint_confidence", "sssr_confidence", Access::Write}};
+}
+
+std::vector<ResourceUse> sssrIntersectUses() {
+    return {{"g_glint_depth", "depth", Access::Read},
+            {"g_glint_depth_pyramid", "depth_pyramid", Access::Read},
+            {"g_glint_normals", "normals", Access::Read},
+            {"g_glint_roughness", "sssr_roughness", Access::Read},
+            {"g_glint_blue_noise", "sssr_blue_noise", Access::Read},
+            {"g_glint_color", "color", Access::Read},
+            {"g_glint_motion", "motion", Access::Read},
+            {"g_glint_environment", "environment", Access::Read},
+            {"g_glint_radiance", "sssr_radiance", Access::ReadWrite},
+            {"g_glint_confidence", "sssr_confidence", Access::ReadWrite}};
+}
+
+// Blue noise and the indirect arguments share one dispatch (see the entry file).
+Pass sssrBlueNoisePass(const std::vector<std::byte>& constants, const std::string& counters,
+                       const std::string& arguments) {
+    Pass pass = sssrPass("blue_noise_args", "sssr_blue_noise", 8, 8, constants);
+    pass.dispatch = DirectDispatch{GLINT_SSSR_BLUE_NOISE_SIZE / 8, GLINT_SSSR_BLUE_NOISE_SIZE / 8, 1};
+    pass.uses = {{"g_glint_blue_noise_source", "sssr_blue_noise_source", Access::Read},
+                 {"g_glint_blue_noise", "sssr_blue_noise", Access::Write},
+                 {"g_glint_counters", counters, Access::ReadWrite},
+                 {"g_glint_arguments", arguments, Access::Write}};
+    return pass;
+}
+
+Pass sssrCompositePass(const SssrDesc& desc, const std::vector<std::byte>& constants) {
+    Pass pass = sssrPass("composite", "sssr_composite", GLINT_SSSR_TILE, GLINT_SSSR_TILE, constants);
     pass.dispatch = core::gridFor(desc.size.width, desc.size.height, 1, pass.groupSize);
     pass.uses = {{"g_glint_color", "color", Access::Read},
                  {"g_glint_reflection", desc.compositeReflection, Access::Read},
@@ -120,48 +166,14 @@ Result invalid(std::string* error, const std::string& message) {
     return core::invalidArgument(error, "sssr", message);
 }
 
-Pass sssrPass(const char* name, const char* pipeline, std::uint32_t groupX, std::uint32_t groupY,
-              const std::vector<std::byte>& constants) {
-    Pass pass;
-    pass.name = name;
-    pass.pipeline = pipeline;
-    pass.groupSize[0] = groupX;
-    pass.groupSize[1] = groupY;
-    pass.groupSize[2] = 1;
-    if (!constants.empty()) {
-        pass.constantsBinding = "g_glint_constants";
-        pass.constants = constants;
-    }
-    return pass;
-}
-
 Pass classifyPass(const SssrDesc& desc, const std::vector<std::byte>& constants) {
-    Pass pass = sssrPass("classify", desc.halfPrecisionStorage ? "sssr_classify.half" : "sssr_classify",
-                         GLINT_SSSR_TILE, GLINT_SSSR_TILE, constants);
+    Pass pass = core::sssrPass("classify", desc.halfPrecisionStorage ? "sssr_classify.half" : "sssr_classify",
+                               GLINT_SSSR_TILE, GLINT_SSSR_TILE, constants);
     pass.dispatch = core::gridFor(desc.size.width, desc.size.height, 1, pass.groupSize);
-    pass.uses = {{"g_glint_depth", "depth", Access::Read},
-                 {"g_glint_normals", "normals", Access::Read},
-                 {"g_glint_material", "material", Access::Read},
-                 {"g_glint_motion", "motion", Access::Read},
-                 {"g_glint_variance_history", "sssr_variance_history", Access::Read},
-                 {"g_glint_environment", "environment", Access::Read},
-                 {"g_glint_roughness", "sssr_roughness", Access::Write},
-                 {"g_glint_radiance", "sssr_radiance", Access::Write},
-                 {"g_glint_confidence", "sssr_confidence", Access::Write},
-                 {"g_glint_counters", "sssr_counters", Access::ReadWrite},
-                 {"g_glint_ray_list", "sssr_ray_list", Access::Write},
-                 {"g_glint_tile_list", "sssr_tile_list", Access::Write}};
-    return pass;
-}
-
-// Blue noise and the indirect arguments share one dispatch (see the entry file).
-Pass blueNoisePass(const std::vector<std::byte>& constants) {
-    Pass pass = sssrPass("blue_noise_args", "sssr_blue_noise", 8, 8, constants);
-    pass.dispatch = DirectDispatch{GLINT_SSSR_BLUE_NOISE_SIZE / 8, GLINT_SSSR_BLUE_NOISE_SIZE / 8, 1};
-    pass.uses = {{"g_glint_blue_noise_source", "sssr_blue_noise_source", Access::Read},
-                 {"g_glint_blue_noise", "sssr_blue_noise", Access::Write},
-                 {"g_glint_counters", "sssr_counters", Access::ReadWrite},
-                 {"g_glint_arguments", "sssr_indirect_args", Access::Write}};
+    pass.uses = core::sssrClassifyUses("sssr_variance_history");
+    pass.uses.insert(pass.uses.end(), {{"g_glint_counters", "sssr_counters", Access::ReadWrite},
+                                       {"g_glint_ray_list", "sssr_ray_list", Access::Write},
+                                       {"g_glint_tile_list", "sssr_tile_list", Access::Write}});
     return pass;
 }
 
@@ -170,20 +182,11 @@ Pass intersectPass(const SssrDesc& desc, const std::vector<std::byte>& constants
                                (desc.debugOutput ? "_debug" : "") + (desc.storeRays ? "_ray" : "") +
                                (desc.halfPrecisionStorage ? "_half" : "");
     const std::string pipeline = suffix.empty() ? "sssr_intersect" : "sssr_intersect." + suffix.substr(1);
-    Pass pass = sssrPass("intersect", pipeline.c_str(), GLINT_SSSR_RAYS_PER_GROUP, 1, constants);
+    Pass pass = core::sssrPass("intersect", pipeline, GLINT_SSSR_RAYS_PER_GROUP, 1, constants);
     pass.dispatch = IndirectDispatch{"sssr_indirect_args", 0};
-    pass.uses = {{"g_glint_depth", "depth", Access::Read},
-                 {"g_glint_depth_pyramid", "depth_pyramid", Access::Read},
-                 {"g_glint_normals", "normals", Access::Read},
-                 {"g_glint_roughness", "sssr_roughness", Access::Read},
-                 {"g_glint_blue_noise", "sssr_blue_noise", Access::Read},
-                 {"g_glint_color", "color", Access::Read},
-                 {"g_glint_motion", "motion", Access::Read},
-                 {"g_glint_environment", "environment", Access::Read},
-                 {"g_glint_counters", "sssr_counters", Access::Read},
-                 {"g_glint_ray_list", "sssr_ray_list", Access::Read},
-                 {"g_glint_radiance", "sssr_radiance", Access::ReadWrite},
-                 {"g_glint_confidence", "sssr_confidence", Access::ReadWrite}};
+    pass.uses = core::sssrIntersectUses();
+    pass.uses.insert(pass.uses.end(), {{"g_glint_counters", "sssr_counters", Access::Read},
+                                       {"g_glint_ray_list", "sssr_ray_list", Access::Read}});
     if (desc.debugOutput) pass.uses.push_back({"g_glint_ray_info", "sssr_ray_info", Access::Write});
     if (desc.storeRays) pass.uses.push_back({"g_glint_rays", "sssr_rays", Access::Write});
     return pass;
@@ -234,7 +237,7 @@ Result planSssr(const SssrDesc& desc, EffectPlan& plan, std::string* error) {
     plan.buffers.push_back({"sssr_indirect_args", GLINT_SSSR_ARGUMENT_WORDS * 4u, true});
 
     plan.passes.push_back(classifyPass(desc, constants));
-    plan.passes.push_back(blueNoisePass(constants));
+    plan.passes.push_back(core::sssrBlueNoisePass(constants, "sssr_counters", "sssr_indirect_args"));
     plan.passes.push_back(intersectPass(desc, constants));
     if (desc.composite) {
         plan.images.push_back({"composite", w, h, 1, Format::RGBA32Float});

@@ -50,6 +50,13 @@ std::vector<SettingDesc> hybridSettings() {
     return settings;
 }
 
+// The reflections' images and the scene the ray tracer traces.
+std::vector<InputDesc> hybridInputs() {
+    std::vector<InputDesc> inputs = core::reflectionsInputs();
+    inputs.push_back({"scene_primitives", InputKind::SceneGeometry, ""});
+    return inputs;
+}
+
 Result planFrame(const FrameInfo& frame, const SettingValues& settings, EffectPlan& plan,
                  std::string* error) {
     HybridDesc desc;
@@ -89,14 +96,7 @@ const EffectDescriptor& hybridEffect() {
         "hybrid",
         "reflections traced in screen space first and by the scene's ray tracer where that fails, per tile",
         hybridSettings(),
-        {{"depth", InputKind::Depth, ""},
-         {"normals", InputKind::Normals, ""},
-         {"material", InputKind::Material, ""},
-         {"color", InputKind::Color, "", "input"},
-         {"motion", InputKind::Motion, ""},
-         {"environment", InputKind::Environment, ""},
-         {"scene_primitives", InputKind::SceneGeometry, ""},
-         {"base_color_metallic", InputKind::BaseColorMetallic, "composite"}},
+        hybridInputs(),
         planFrame,
         {"composite", "halfPrecisionStorage", "denoise"},
         "",

@@ -5,6 +5,7 @@
 // variance history for variance-guided tracing.
 #include "core/effects/effect_tables.h"
 #include "core/effects/reflections_settings.h"
+#include "core/pass_model.h"
 #include "core/sssr_table_images.h"
 
 #include "glint/glint_effect.h"
@@ -98,6 +99,16 @@ template <typename Desc> Desc cameraDesc(const FrameInfo& frame) {
     return desc;
 }
 
+std::vector<InputDesc> reflectionsInputs() {
+    return {{"depth", InputKind::Depth, ""},
+            {"normals", InputKind::Normals, ""},
+            {"material", InputKind::Material, ""},
+            {"color", InputKind::Color, "", "input"},
+            {"motion", InputKind::Motion, ""},
+            {"environment", InputKind::Environment, ""},
+            {"base_color_metallic", InputKind::BaseColorMetallic, "composite"}};
+}
+
 SssrDesc sssrDesc(const FrameInfo& frame, const SettingValues& settings) {
     SssrDesc desc = cameraDesc<SssrDesc>(frame);
     desc.materialChannel = frame.materialChannel;
@@ -148,12 +159,6 @@ namespace {
 using core::reflectionsDenoiserDesc;
 using core::reflectionsSettings;
 using core::sssrDesc;
-
-void renameResource(EffectPlan& plan, const std::string& from, const std::string& to) {
-    for (Pass& pass : plan.passes)
-        for (ResourceUse& use : pass.uses)
-            if (use.resource == from) use.resource = to;
-}
 
 void addOutputs(EffectPlan& plan, const SssrDesc& sssr, const ReflectionsDenoiserDesc* denoiser) {
     const char* denoisedBy =
@@ -214,11 +219,12 @@ Result planReflections(const SssrDesc& sssr, const ReflectionsDenoiserDesc* deno
     if (!sssr.denoise) {
         // Without a denoiser there is no variance to guide by: a zero history.
         plan.images.push_back({"sssr_zero_variance", 1, 1, 1, Format::R32Float});
-        renameResource(plan, "sssr_variance_history", "sssr_zero_variance");
+        core::renameResource(plan.passes, "sssr_variance_history", "sssr_zero_variance");
         addOutputs(plan, sssr, nullptr);
         return Result::Ok;
     }
-    renameResource(plan, "sssr_variance_history", reflectionsDenoiserVariance(sssr.frameIndex + 1));
+    core::renameResource(plan.passes, "sssr_variance_history",
+                         reflectionsDenoiserVariance(sssr.frameIndex + 1));
     // With denoise but no denoiser desc this frame: the denoiser's resources, none of its passes.
     ReflectionsDenoiserDesc resourcesOnly;
     resourcesOnly.size = sssr.size;
@@ -242,13 +248,7 @@ const EffectDescriptor& reflectionsEffect() {
         "reflections",
         "stochastic screen-space reflections, optionally denoised and composited",
         reflectionsSettings(),
-        {{"depth", InputKind::Depth, ""},
-         {"normals", InputKind::Normals, ""},
-         {"material", InputKind::Material, ""},
-         {"color", InputKind::Color, "", "input"},
-         {"motion", InputKind::Motion, ""},
-         {"environment", InputKind::Environment, ""},
-         {"base_color_metallic", InputKind::BaseColorMetallic, "composite"}},
+        core::reflectionsInputs(),
         planFrame,
         {"thicknessAware", "debugOutput", "composite", "halfPrecisionStorage", "denoise",
          "denoiser.spatialPath"},

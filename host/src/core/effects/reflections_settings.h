@@ -12,6 +12,8 @@
 namespace glint::core {
 
 std::vector<SettingDesc> reflectionsSettings();
+// The application images SSSR, the denoiser and the composite read.
+std::vector<InputDesc> reflectionsInputs();
 SssrDesc sssrDesc(const FrameInfo& frame, const SettingValues& settings);
 ReflectionsDenoiserDesc reflectionsDenoiserDesc(const FrameInfo& frame, const SettingValues& settings,
                                                 const SssrDesc& sssr);
