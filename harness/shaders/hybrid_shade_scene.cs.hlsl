@@ -7,13 +7,7 @@
 #include "glint/hybrid/glint_hybrid_shade.hlsli"
 #include "entry/sssr/sssr_environment.hlsli"
 
-GLINT_BINDING(0, 0) cbuffer g_glint_constants { GLINT_SssrConstants g_glint_sssr; GLINT_HybridConstants g_glint_hybrid; };
-GLINT_BINDING(1, 0) Texture2D<float> g_glint_depth;
-GLINT_BINDING(2, 0) Texture2D<float4> g_glint_normals;
-GLINT_BINDING(3, 0) Texture2D<float> g_glint_roughness;
-GLINT_BINDING(4, 0) Texture2D<float2> g_glint_blue_noise;
-GLINT_BINDING(5, 0) StructuredBuffer<uint> g_glint_counters;
-GLINT_BINDING(6, 0) StructuredBuffer<uint> g_glint_hw_ray_list;
+#include "../harness/shaders/hybrid_ray_bindings.hlsli"
 GLINT_BINDING(7, 0) StructuredBuffer<uint4> g_glint_hits;
 GLINT_BINDING(8, 0) Texture2D<float4> g_glint_environment;
 GLINT_BINDING(9, 0) SamplerState g_glint_linear_clamp;
@@ -33,18 +27,12 @@ GLINT_BINDING(24, 0) StructuredBuffer<SceneLight> g_scene_lights;
 #include "../harness/shaders/scene_light.hlsli"
 #include "../harness/shaders/scene_shading.hlsli"
 
-float GLINT_SSSR_LoadDepth(int2 texel, int mip) { return g_glint_depth.Load(int3(texel, 0)); }
-float3 GLINT_SSSR_LoadNormal(int2 pixel) { return g_glint_normals.Load(int3(pixel, 0)).xyz; }
-float GLINT_SSSR_LoadRoughness(int2 pixel) { return g_glint_roughness.Load(int3(pixel, 0)); }
-float2 GLINT_SSSR_LoadBlueNoise(int2 pixel) { return g_glint_blue_noise.Load(int3(pixel & 127, 0)); }
 float3 GLINT_SSSR_SampleEnvironment(float3 direction, float lod)
 {
     return SSSR_EntrySampleLatLong(g_glint_environment, g_glint_linear_clamp, direction, lod);
 }
 void GLINT_SSSR_StoreRadiance(int2 pixel, float4 value) { g_glint_radiance[pixel] = value; }
 void GLINT_SSSR_StoreConfidence(int2 pixel, float confidence) { g_glint_confidence[pixel] = confidence; }
-uint GLINT_HYBRID_LoadRayTracedCount() { return g_glint_counters[GLINT_HYBRID_COUNTER_HW_RAYS_COPY]; }
-uint GLINT_HYBRID_LoadRayTracedRay(uint index) { return g_glint_hw_ray_list[index]; }
 uint4 GLINT_HYBRID_LoadHit(uint index) { return g_glint_hits[index]; }
 float3 GLINT_HYBRID_ShadeHit(GLINT_HYBRID_Hit hit, float3 origin, float3 direction)
 {
@@ -56,6 +44,5 @@ float3 GLINT_HYBRID_ShadeHit(GLINT_HYBRID_Hit hit, float3 origin, float3 directi
 
 [numthreads(64, 1, 1)] void main(uint3 groupId : SV_GroupID, uint groupIndex : SV_GroupIndex)
 {
-    GLINT_HYBRID_ShadeRays(g_glint_sssr, g_glint_hybrid,
-                           (groupId.y * GLINT_SSSR_GROUPS_PER_ROW + groupId.x) * GLINT_SSSR_RAYS_PER_GROUP + groupIndex);
+    GLINT_HYBRID_ShadeRays(g_glint_sssr, g_glint_hybrid, HybridRayIndex(groupId, groupIndex));
 }
