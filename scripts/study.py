@@ -46,7 +46,7 @@ def mean_flip(directory, row):
     reference = load_rgb(directory / row["reference"])
     output = load_rgb(directory / row["output"])
     mask = load_rgb(directory / row["mask"])[..., 0] > 0.5
-    if row["effect"] == "reflections":
+    if row["effect"] != "shadows":  # reflections and hybrid are HDR radiance
         error, _, _ = flip.evaluate(np.maximum(reference, 0), np.maximum(output, 0), "HDR", applyMagma=False)
     else:
         error, _, _ = flip.evaluate(np.clip(reference, 0, 1), np.clip(output, 0, 1), "LDR", applyMagma=False)
@@ -110,14 +110,18 @@ def study_tables(rows):
     lines = []
     for effect in sorted({r["effect"] for r in rows}):
         shadows = effect == "shadows"  # the penumbra error is where a shadow denoiser shows
+        hybrid = effect == "hybrid"  # its cost follows the fraction of rays it ray traces
         lines += [f"### {effect}", "",
-                  "| scene | point | settings | time (µs) | FLIP | mean error | RMSE |"
-                  + (" penumbra |" if shadows else "") + " non-finite | Pareto |",
-                  "|---|---|---|---|---|---|---|" + ("---|" if shadows else "") + "---|---|"]
+                  "| scene | point | settings | time (µs) |" + (" RT rays |" if hybrid else "")
+                  + " FLIP | mean error | RMSE |" + (" penumbra |" if shadows else "") + " non-finite | Pareto |",
+                  "|---|---|---|---|" + ("---|" if hybrid else "") + "---|---|---|" + ("---|" if shadows else "")
+                  + "---|---|"]
         for r in (r for r in rows if r["effect"] == effect):
             penumbra = f" {r['penumbra']:.4f} |" if shadows else ""
-            lines.append(f"| {r['scene']} | {r['label']} | `{' '.join(r['settings']) or '-'}` | {r['time_us']:.1f} "
-                         f"| {r['flip']:.4f} | {r['error_mean']:.4f} | {r['rmse']:.4f} |{penumbra} "
+            fraction = r.get("traced_fraction", "")  # the share of rays ray traced
+            traced = (f" {100 * float(fraction):.1f} % |" if fraction != "" else " - |") if hybrid else ""
+            lines.append(f"| {r['scene']} | {r['label']} | `{' '.join(r['settings']) or '-'}` | {r['time_us']:.1f} |"
+                         f"{traced} {r['flip']:.4f} | {r['error_mean']:.4f} | {r['rmse']:.4f} |{penumbra} "
                          f"{r['non_finite']:g} | {'**yes**' if r['pareto'] else ''} |")
         lines.append("")
     return lines

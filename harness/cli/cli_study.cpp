@@ -60,6 +60,23 @@ std::vector<Point> pointsFor(const std::string& effect, bool quick) {
                 {"bias_0.6", {"importanceSampleBias=0.6"}},
                 {"half_storage", {"halfPrecisionStorage=true"}}};
     }
+    if (effect == "hybrid") {
+        // The three paths an engine with ray tracing chooses between, then the hybrid's own
+        // trade-offs (RT ray fraction in the traced_fraction column).
+        if (quick)
+            return {{"defaults", {}},
+                    {"ss_only", {"hybrid.rayTracing=false"}},
+                    {"rt_only", {"hybrid.screenSpace=false"}}};
+        return {{"defaults", {}},
+                {"ss_only", {"hybrid.rayTracing=false"}},
+                {"rt_only", {"hybrid.screenSpace=false"}},
+                {"no_denoiser", {"denoise=false"}},
+                {"screen_colour", {"hybrid.reshade=false"}},
+                {"mirrors_rt", {"hybrid.mirrorsRayTraced=true"}},
+                {"confidence_0.5", {"hybrid.confidenceThreshold=0.5"}},
+                {"rt_threshold_0.1", {"hybrid.rayTracingThreshold=0.1"}},
+                {"no_feedback", {"hybrid.feedback=false"}}};
+    }
     if (quick) return {{"defaults", {}}, {"filter_off", {"shadows.filter=false"}}};
     return {{"defaults", {}},
             {"filter_off", {"shadows.filter=false"}},
@@ -74,7 +91,7 @@ std::vector<Point> pointsFor(const std::string& effect, bool quick) {
 }
 
 std::vector<std::string> defaultScenes(const std::string& effect, bool quick) {
-    if (effect == "reflections") {
+    if (effect == "reflections" || effect == "hybrid") {
         if (quick) return {"harness/scenes/glossy_room.toml"};
         return {"harness/scenes/glossy_room.toml", "harness/scenes/mirror_corridor.toml",
                 "harness/scenes/thin_pillars.toml"};
@@ -88,8 +105,9 @@ std::vector<std::string> defaultScenes(const std::string& effect, bool quick) {
 // binary visibility needs them (a 64-sample penumbra is still ~0.06 off).
 std::uint32_t referenceSpp(const Plan& plan, const std::string& effect) {
     if (plan.spp > 0) return plan.spp;
-    if (plan.quick) return effect == "reflections" ? 4 : 16;
-    return effect == "reflections" ? 64 : 256;
+    const bool reflections = effect != "shadows";
+    if (plan.quick) return reflections ? 4 : 16;
+    return reflections ? 64 : 256;
 }
 
 // The base settings with the point's applied over them; a name set twice keeps its last value
@@ -155,6 +173,7 @@ std::vector<Row> sweep(const gpu::Context& context, const Plan& plan, const std:
         replay::SessionOptions options;
         options.effects = {effect};
         options.settings = settingsOf(effect, point);
+        options.scene = scene.file; // the hybrid's ray tracer traces the scene's geometry
         replay::FrameResult result;
         Row row{.scene = scene.name,
                 .effect = effect,
@@ -181,6 +200,20 @@ std::vector<Row> sweep(const gpu::Context& context, const Plan& plan, const std:
     return rows;
 }
 
+// The hybrid's share of rays that went to the ray tracer (those that missed in screen space
+// first included), "" without its counters.
+std::string rayTracedShare(const Measurement& measurement) {
+    double traced = -1.0, answered = -1.0;
+    for (const replay::Counter& counter : measurement.counters) {
+        if (counter.name == "hybrid/ray_traced_rays") traced = counter.value;
+        if (counter.name == "hybrid/screen_space_answers") answered = counter.value;
+    }
+    if (traced < 0.0 || answered < 0.0) return "";
+    char value[32];
+    std::snprintf(value, sizeof value, "%.6g", traced + answered > 0.0 ? traced / (traced + answered) : 0.0);
+    return value;
+}
+
 void writeResults(const Plan& plan, const gpu::Context& context, const std::vector<Row>& rows) {
     const nlohmann::json device = deviceJson(context);
     nlohmann::json json{{"device", device},      {"width", plan.width}, {"height", plan.height},
@@ -189,7 +222,9 @@ void writeResults(const Plan& plan, const gpu::Context& context, const std::vect
     csv << "scene,effect,label,settings,time_us,time_min_us,time_max_us,passes,error_mean,rmse,penumbra,"
            "non_finite,traced_fraction,output,reference,mask,device\n";
     for (const Row& row : rows) {
-        const std::string traced = counterValue(row.measurement, "reflections/traced_fraction");
+        const std::string traced = row.effect == "hybrid"
+                                       ? rayTracedShare(row.measurement)
+                                       : counterValue(row.measurement, "reflections/traced_fraction");
         csv << row.scene << "," << row.effect << "," << row.label << "," << joined(row.settings) << ","
             << row.measurement.total.medianUs << "," << row.measurement.total.minUs << ","
             << row.measurement.total.maxUs << "," << passesField(row.measurement) << "," << row.error.mean
@@ -207,6 +242,7 @@ void writeResults(const Plan& plan, const gpu::Context& context, const std::vect
                       {"penumbra", row.error.penumbra},
                       {"non_finite", row.error.nonFinite},
                       {"pixels", row.error.pixels},
+                      {"traced_fraction", traced},
                       {"output", row.output},
                       {"reference", row.reference},
                       {"mask", row.mask}});
@@ -221,11 +257,11 @@ Plan resolve(const StudyOptions& options) {
     plan.out = options.outDir;
     plan.quick = options.quick;
     if (options.effect == "all")
-        plan.effects = {"reflections", "shadows"};
-    else if (options.effect == "reflections" || options.effect == "shadows")
+        plan.effects = {"reflections", "shadows", "hybrid"};
+    else if (options.effect == "reflections" || options.effect == "shadows" || options.effect == "hybrid")
         plan.effects = {options.effect};
     else
-        throw std::invalid_argument("study: --effect must be reflections, shadows or all, got '" +
+        throw std::invalid_argument("study: --effect must be reflections, shadows, hybrid or all, got '" +
                                     options.effect + "'");
     plan.scenes = options.scenes;
     for (const std::string& scene : plan.scenes)
@@ -248,21 +284,23 @@ SimulatedScene simulateFor(const gpu::Context& context, const std::string& path,
     scene.width = width;
     scene.height = height;
     scene.frameCount = frames;
-    scene.effects = {effect == "reflections" ? scene::Effect::Reflections : scene::Effect::Shadows};
+    scene.effects = {effect == "reflections" ? scene::Effect::Reflections
+                     : effect == "hybrid"    ? scene::Effect::Hybrid
+                                             : scene::Effect::Shadows};
     scene.reference = {};
     if (referenceSpp > 0) {
-        scene.reference.reflections = effect == "reflections";
+        scene.reference.reflections = effect != "shadows";
         scene.reference.shadows = effect == "shadows";
         scene.reference.samplesPerPixel = referenceSpp;
     }
     scene::Simulation simulation = scene::simulate(context, scene);
-    return {std::filesystem::path(path).stem().string(), std::move(simulation.frames),
-            simulation.environment.value_or(blackEnvironment())};
+    return {std::filesystem::path(path).stem().string(), std::filesystem::absolute(path).string(),
+            std::move(simulation.frames), simulation.environment.value_or(blackEnvironment())};
 }
 
 std::vector<std::string> baseSettings(const std::string& effect) {
     // SSSR alone leaves one noisy ray per quad; the effect an engine ships includes the denoiser.
-    if (effect == "reflections") return {"denoise=true"};
+    if (effect == "reflections" || effect == "hybrid") return {"denoise=true"};
     return {};
 }
 

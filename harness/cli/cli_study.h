@@ -20,7 +20,7 @@ namespace glint::cli::study {
 // StudyOptions with every default filled in.
 struct Plan {
     std::filesystem::path out;
-    std::vector<std::string> effects; // "reflections", "shadows"
+    std::vector<std::string> effects; // "reflections", "shadows", "hybrid"
     std::vector<std::string> scenes;  // --scenes; empty: the bundled ones per effect
     std::uint32_t width = 0, height = 0, frames = 0, runs = 0;
     std::uint32_t spp = 0; // 0: per-effect default
@@ -29,6 +29,7 @@ struct Plan {
 
 struct SimulatedScene {
     std::string name; // the file's stem, "glossy_room"
+    std::string file; // the scene file, absolute (the hybrid's geometry)
     std::vector<capture::Frame> frames;
     capture::Environment environment;
 };

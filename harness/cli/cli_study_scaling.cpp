@@ -123,6 +123,11 @@ int runScaling(const Plan& plan, const gpu::Context& context) {
     std::printf("scaling: %u timed runs per point; fractions at %ux%u\n", plan.runs, plan.width, plan.height);
     std::vector<Row> rows;
     for (const std::string& effect : plan.effects) {
+        if (effect == "hybrid") {
+            // Its cost follows the fraction of rays it ray traces, which the sweep reports.
+            std::printf("scaling: the hybrid is not scaled (see the sweep's traced_fraction)\n");
+            continue;
+        }
         const std::string path = sceneFor(plan, effect);
         for (const Size& size : sizes)
             rows.push_back(measure(context, plan, effect,

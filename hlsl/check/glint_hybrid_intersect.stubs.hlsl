@@ -22,7 +22,15 @@ uint GLINT_HYBRID_AddRayTracedRays(uint count)
     InterlockedAdd(g_glint_check_words[4], count, previous);
     return previous;
 }
+uint GLINT_HYBRID_AddReshadedHits(uint count)
+{
+    uint previous;
+    InterlockedAdd(g_glint_check_words[6], count, previous);
+    return previous;
+}
+void GLINT_HYBRID_CountScreenSpaceAnswers(uint count) { InterlockedAdd(g_glint_check_words[7], count); }
 void GLINT_HYBRID_StoreRayTracedRay(uint index, uint entry) { g_glint_check_words[index + 64] = entry; }
+void GLINT_HYBRID_StoreHit(uint index, uint4 record) { g_glint_check[index + 32] = asfloat(record); }
 void GLINT_HYBRID_AddFeedback(int2 tile, uint value) { InterlockedAdd(g_glint_check_words[tile.x + 8], value); }
 
 [numthreads(64, 1, 1)] void main(uint3 groupId : SV_GroupID, uint groupIndex : SV_GroupIndex)

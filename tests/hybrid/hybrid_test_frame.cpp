@@ -126,6 +126,18 @@ HybridFrame runHybridFrame(const HybridDesc& desc, const SssrTestView& view,
     out.radiance = gpu::readbackImage(context, runner.image("sssr_radiance"));
     out.confidence = gpu::readbackImage(context, runner.image("sssr_confidence"));
     if (addScene) out.hits = runner.readWords("hybrid_hits", 4 * out.hwList.size());
+    const std::uint32_t reshaded = out.counters.at(rayTracedArguments ? 7 : 6);
+    if (reshaded > 0) {
+        const std::vector<std::uint32_t> list = runner.readWords("hybrid_hw_ray_list");
+        const std::vector<std::uint32_t> records = runner.readWords("hybrid_hits");
+        const std::size_t capacity = std::size_t{desc.sssr.size.width} * desc.sssr.size.height;
+        for (std::size_t k = 0; k < reshaded; ++k) {
+            const std::size_t slot = capacity - 1 - k;
+            out.reshadedList.push_back(list.at(slot));
+            for (std::size_t word = 0; word < 4; ++word)
+                out.reshadedHits.push_back(records.at(4 * slot + word));
+        }
+    }
     return out;
 }
 

@@ -43,6 +43,9 @@ struct HybridFrame {
     std::vector<std::uint32_t> tileList;            // counter 3 entries
     std::vector<float> radiance, confidence;        // RGBA, R
     std::vector<std::uint32_t> hits;                // 4 words per ray-traced ray (GLINT_HYBRID_PackHit)
+    // The screen-space hits to re-shade (counter 7 entries, counter 6 without hw_args), in
+    // append order (from the ray-traced list's end down), and their 4-word records.
+    std::vector<std::uint32_t> reshadedList, reshadedHits;
 };
 
 // Uploads the view's non-empty inputs (and its environment) and names them as the plans do.

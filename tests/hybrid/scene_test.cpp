@@ -74,9 +74,17 @@ TEST_CASE("on the mirror corridor the hybrid's error is at least 2x lower than S
     desc.feedback = false; // frame 0 has no statistics: every tile tries screen space first
     scene::SceneBuffers buffers(test::testContext(), scene);
     const std::uint32_t tiles = ((160 + 7) / 8) * ((90 + 7) / 8);
-    const test::HybridFrame hybrid =
-        test::runHybridFrame(desc, view, std::vector<std::uint32_t>(tiles, 0u), {},
-                             [&](vk::ResourceTable& table) { buffers.addTo(table); });
+    const auto run = [&](const HybridDesc& d) {
+        return test::runHybridFrame(d, view, std::vector<std::uint32_t>(tiles, 0u), {},
+                                    [&](vk::ResourceTable& table) { buffers.addTo(table); });
+    };
+    // Screen-colour mode with SSSR's own thickness: its screen-space half is SSSR exactly.
+    HybridDesc screenColour = desc;
+    screenColour.reshade = false;
+    screenColour.thicknessRoughnessGrowth = 0.0f;
+    screenColour.thicknessDistanceGrowth = 0.0f;
+    const test::HybridFrame hybrid = run(screenColour);
+    const test::HybridFrame reshaded = run(desc); // the defaults
 
     // The glossy pixels (the ones both trace), from the capture alone.
     std::vector<bool> glossy(std::size_t{160} * 90, false), confident = glossy;
@@ -91,15 +99,26 @@ TEST_CASE("on the mirror corridor the hybrid's error is at least 2x lower than S
     REQUIRE(glossyCount > 1000);
     const double sssrError = relativeError(screenSpace.radiance, reference, glossy);
     const double hybridError = relativeError(hybrid.radiance, reference, glossy);
+    const double reshadedError = relativeError(reshaded.radiance, reference, glossy);
+    const double sssrConfidentError = relativeError(screenSpace.radiance, reference, confident);
+    const double reshadedConfidentError = relativeError(reshaded.radiance, reference, confident);
     INFO("glossy pixels " << glossyCount << ", SSSR error " << sssrError << ", hybrid error " << hybridError
-                          << ", ray traced " << hybrid.hwList.size() << ", SSSR-confident "
-                          << confidentCount);
+                          << " (re-shaded " << reshadedError << "), ray traced " << hybrid.hwList.size()
+                          << " (re-shaded run " << reshaded.hwList.size() << ", re-shaded hits "
+                          << reshaded.reshadedList.size() << "), SSSR-confident " << confidentCount
+                          << " at error " << sssrConfidentError << " (re-shaded " << reshadedConfidentError
+                          << ")");
     CHECK(hybrid.hwList.size() > 0);
     CHECK(hybridError * 2.0 <= sssrError);
-    // Where SSSR was confident the hybrid keeps its result: the same error there.
-    CHECK(relativeError(hybrid.radiance, reference, confident) ==
-          Approx(relativeError(screenSpace.radiance, reference, confident)).margin(1e-9));
+    CHECK(reshadedError * 2.0 <= sssrError);
+    // Where SSSR was confident the screen-colour hybrid keeps its result: the same error there.
+    CHECK(relativeError(hybrid.radiance, reference, confident) == Approx(sssrConfidentError).margin(1e-9));
+    // Re-shading evaluates the reference's own shading at the surface the colour buffer shows, but
+    // toward the reflection ray instead of the camera: no worse than the colour buffer there.
+    CHECK(reshaded.reshadedList.size() > 0);
+    CHECK(reshadedConfidentError <= sssrConfidentError);
     for (const float value : hybrid.radiance) REQUIRE(std::isfinite(value));
+    for (const float value : reshaded.radiance) REQUIRE(std::isfinite(value));
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }
 

@@ -11,6 +11,7 @@
 #include "glint/hybrid/glint_hybrid_classify.hlsli"
 #include "entry/sssr/sssr_environment.hlsli"
 #include "entry/sssr/sssr_classify_bindings.hlsli"
+#include "entry/hybrid/hybrid_entry_counters.hlsli"
 
 GLINT_BINDING(12, 0) RWStructuredBuffer<uint> g_glint_sw_ray_list;
 GLINT_BINDING(14, 0) RWStructuredBuffer<uint> g_glint_hw_ray_list;
@@ -27,19 +28,9 @@ uint GLINT_HYBRID_MaterialRoute(int2 pixel, float alpha)
     return mirror && (g_glint_hybrid.flags & GLINT_HYBRID_FLAG_MIRRORS_RAY_TRACED) != 0 ? GLINT_HYBRID_ROUTE_RAY_TRACED
                                                                                         : GLINT_HYBRID_ROUTE_AUTO;
 }
-uint GLINT_HYBRID_AddScreenSpaceRays(uint count)
-{
-    uint previous;
-    InterlockedAdd(g_glint_counters[0], count, previous);
-    return previous;
-}
+uint GLINT_HYBRID_AddScreenSpaceRays(uint count) { return HybridEntryAddToCounter(0, count); }
 void GLINT_HYBRID_StoreScreenSpaceRay(uint index, uint entry) { g_glint_sw_ray_list[index] = entry; }
-uint GLINT_HYBRID_AddRayTracedRays(uint count)
-{
-    uint previous;
-    InterlockedAdd(g_glint_counters[GLINT_HYBRID_COUNTER_HW_RAYS], count, previous);
-    return previous;
-}
+uint GLINT_HYBRID_AddRayTracedRays(uint count) { return HybridEntryAddToCounter(GLINT_HYBRID_COUNTER_HW_RAYS, count); }
 void GLINT_HYBRID_StoreRayTracedRay(uint index, uint entry) { g_glint_hw_ray_list[index] = entry; }
 
 [numthreads(8, 8, 1)] void main(uint3 groupId : SV_GroupID, uint3 groupThreadId : SV_GroupThreadID)

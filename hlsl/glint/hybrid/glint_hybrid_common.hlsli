@@ -64,4 +64,33 @@ uint GLINT_HYBRID_ScreenSpaceAllocation(uint count)
     return count == 0u ? 0u : count <= GLINT_HYBRID_RAY_BLOCK ? GLINT_HYBRID_RAY_BLOCK : 2u * GLINT_HYBRID_RAY_BLOCK;
 }
 
+// The re-shaded screen-space hits fill the ray-traced list (W H entries) from its end down, so
+// the ray-traced rays (from its start) and they never overlap: together they are at most one
+// ray per pixel.
+uint GLINT_HYBRID_ReshadedSlot(uint2 inputSize, uint index) { return inputSize.x * inputSize.y - 1u - index; }
+
+// A screen-space hit to re-shade: the pixel it hit, the world distance along the ray to it and
+// its confidence (roughness fade included).
+struct GLINT_HYBRID_ScreenHit
+{
+    int2 pixel;
+    float distance;
+    float confidence;
+};
+
+// Its 16-byte record in the hit records buffer, at the same index as its list entry.
+uint4 GLINT_HYBRID_PackScreenHit(GLINT_HYBRID_ScreenHit hit)
+{
+    return uint4(asuint(hit.distance), uint(hit.pixel.x) | (uint(hit.pixel.y) << 16), asuint(hit.confidence), 0u);
+}
+
+GLINT_HYBRID_ScreenHit GLINT_HYBRID_UnpackScreenHit(uint4 record)
+{
+    GLINT_HYBRID_ScreenHit hit;
+    hit.distance = asfloat(record.x);
+    hit.pixel = int2(record.y & 0xFFFFu, record.y >> 16);
+    hit.confidence = asfloat(record.z);
+    return hit;
+}
+
 #endif // GLINT_HYBRID_COMMON_HLSLI

@@ -26,14 +26,21 @@
 #define GLINT_HYBRID_PADDING_ENTRY 0xFFFFFFFFu
 
 // Counters buffer words: [0] SW rays, [1] SW rays (copy), [2] denoiser tiles, [3] tiles (copy),
-// [4] HW rays, [5] HW rays (copy). The first four are the SSSR layout, so the SSSR passes and
-// the denoiser read them unchanged.
+// [4] HW rays, [5] HW rays (copy), [6] screen-space hits to re-shade, [7] their copy, [8] rays
+// answered in screen space (statistics: with [5], the share of rays ray traced), [9] its copy.
+// The first four are the SSSR layout, so the SSSR passes and the denoiser read them unchanged.
 #define GLINT_HYBRID_COUNTER_HW_RAYS 4u
 #define GLINT_HYBRID_COUNTER_HW_RAYS_COPY 5u
-#define GLINT_HYBRID_COUNTER_WORDS 8
-// Indirect arguments words: [0..2] SW intersection, [3..5] denoiser, [6..8] HW trace.
-#define GLINT_HYBRID_ARGUMENT_WORDS 9
-#define GLINT_HYBRID_HW_ARGUMENTS_OFFSET 24 // bytes
+#define GLINT_HYBRID_COUNTER_RESHADED 6u
+#define GLINT_HYBRID_COUNTER_RESHADED_COPY 7u
+#define GLINT_HYBRID_COUNTER_SCREEN_SPACE_ANSWERS 8u
+#define GLINT_HYBRID_COUNTER_SCREEN_SPACE_ANSWERS_COPY 9u
+#define GLINT_HYBRID_COUNTER_WORDS 10
+// Indirect arguments words: [0..2] SW intersection, [3..5] denoiser, [6..8] HW trace, [9..11]
+// deferred shading (the ray-traced rays and the re-shaded screen-space hits).
+#define GLINT_HYBRID_ARGUMENT_WORDS 12
+#define GLINT_HYBRID_HW_ARGUMENTS_OFFSET 24    // bytes
+#define GLINT_HYBRID_SHADE_ARGUMENTS_OFFSET 36 // bytes
 
 // Flags.
 #define GLINT_HYBRID_FLAG_SCREEN_SPACE 1u   // screen-space tracing on (off: every ray is ray traced)
@@ -43,6 +50,9 @@
 // Read by glint's entry files' GLINT_HYBRID_MaterialRoute, an example of a per-material
 // override: mirrors (alpha below the SSSR mirror threshold) always ray traced.
 #define GLINT_HYBRID_FLAG_MIRRORS_RAY_TRACED 16u
+// Screen-space hits are shaded by the application's shading pass (GLINT_HYBRID_ShadeScreenHit),
+// like ray-traced ones, instead of taking the colour buffer's radiance.
+#define GLINT_HYBRID_FLAG_RESHADE 32u
 
 #ifdef __cplusplus
 namespace glint::shaders {
@@ -59,7 +69,8 @@ GLINT_CONSTANTS_BEGIN(GLINT_HybridConstants)
     float confidenceThreshold;    // a screen-space hit below this confidence is ray traced instead
     float maxRayDistance;         // world units: the ray tracer's t_max (environment beyond it)
     float rayOffset;              // world units: origin offset along the normal for ray tracing
-    float2 padding;
+    float thicknessRoughnessGrowth; // screen-space thickness scales by (1 + this * alpha)
+    float thicknessDistanceGrowth;  // plus this times the ray's view-space length to the hit
 GLINT_CONSTANTS_END(GLINT_HybridConstants);
 
 #ifdef __cplusplus

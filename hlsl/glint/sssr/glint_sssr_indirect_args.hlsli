@@ -25,15 +25,21 @@ uint GLINT_SSSR_LoadCounter(uint index);
 void GLINT_SSSR_StoreCounter(uint index, uint value);
 void GLINT_SSSR_StoreArgument(uint index, uint value);
 
+// The dispatch of one thread per ray, 64 per group, at arguments firstArgument..+2. Rows of at
+// most 1024 groups keep every dimension under the guaranteed 65535 at any size.
+void GLINT_SSSR_StoreRayArguments(uint firstArgument, uint rays)
+{
+    uint groups = (rays + GLINT_SSSR_RAYS_PER_GROUP - 1) / GLINT_SSSR_RAYS_PER_GROUP;
+    GLINT_SSSR_StoreArgument(firstArgument, min(groups, GLINT_SSSR_GROUPS_PER_ROW));
+    GLINT_SSSR_StoreArgument(firstArgument + 1, (groups + GLINT_SSSR_GROUPS_PER_ROW - 1) / GLINT_SSSR_GROUPS_PER_ROW);
+    GLINT_SSSR_StoreArgument(firstArgument + 2, 1);
+}
+
 void GLINT_SSSR_WriteIndirectArguments()
 {
     uint rays = GLINT_SSSR_LoadCounter(0);
     uint tiles = GLINT_SSSR_LoadCounter(2);
-    // Rows of at most 1024 groups keep every dimension under the guaranteed 65535 at any size.
-    uint groups = (rays + GLINT_SSSR_RAYS_PER_GROUP - 1) / GLINT_SSSR_RAYS_PER_GROUP;
-    GLINT_SSSR_StoreArgument(0, min(groups, GLINT_SSSR_GROUPS_PER_ROW));
-    GLINT_SSSR_StoreArgument(1, (groups + GLINT_SSSR_GROUPS_PER_ROW - 1) / GLINT_SSSR_GROUPS_PER_ROW);
-    GLINT_SSSR_StoreArgument(2, 1);
+    GLINT_SSSR_StoreRayArguments(0, rays);
     GLINT_SSSR_StoreArgument(3, tiles);
     GLINT_SSSR_StoreArgument(4, 1);
     GLINT_SSSR_StoreArgument(5, 1);

@@ -348,8 +348,11 @@ struct GLINT_SSSR_RayResult
 };
 
 // Traces the ray of list entry `entry` (when `valid`). Every thread of the group calls it: it
-// synchronizes the group (all its barriers are before any thread returns).
-GLINT_SSSR_RayResult GLINT_SSSR_TraceEntry(GLINT_SssrConstants c, uint groupIndex, bool valid, uint entry)
+// synchronizes the group (all its barriers are before any thread returns). The hit's
+// thickness is SSSR's times (1 + thicknessGrowth.x alpha) plus thicknessGrowth.y times the ray's
+// view-space length to the hit; SSSR passes (0, 0), the hybrid its growth settings.
+GLINT_SSSR_RayResult GLINT_SSSR_TraceEntry(GLINT_SssrConstants c, uint groupIndex, bool valid, uint entry,
+                                           float2 thicknessGrowth)
 {
     GLINT_SSSR_RayResult r = (GLINT_SSSR_RayResult)0;
     r.valid = false;
@@ -479,7 +482,14 @@ GLINT_SSSR_RayResult GLINT_SSSR_TraceEntry(GLINT_SssrConstants c, uint groupInde
             float planeDepth = hitDepth + dot(slope, hit.xy - (float2(hitPixel) + 0.5));
             gap = min(gap, abs(rayDepth - GLINT_SSSR_ViewDepth(c, planeDepth)));
             gap = GLINT_FiniteOr(gap, 3.0e38);
-            float fit = 1.0 - smoothstep(0.0, GLINT_SSSR_Thickness(c, surface), gap);
+            float thickness = GLINT_SSSR_Thickness(c, surface);
+            if (any(thicknessGrowth != 0.0))
+            {
+                float rayLength = length(GLINT_SSSR_ViewPosition(c, hitUv, hit.z) - viewPosition);
+                thickness = thickness * (1.0 + thicknessGrowth.x * alpha) +
+                            thicknessGrowth.y * GLINT_FiniteOr(rayLength, 0.0);
+            }
+            float fit = 1.0 - smoothstep(0.0, thickness, gap);
             float vignette = GLINT_SSSR_Vignette(c, hitUv);
             if ((c.flags & GLINT_SSSR_FLAG_PREVIOUS_FRAME_COLOR) != 0)
             {
@@ -563,7 +573,7 @@ void GLINT_SSSR_Intersect(GLINT_SssrConstants c, uint groupIndex, uint rayIndex)
     uint entry = 0u;
     if (valid)
         entry = GLINT_SSSR_LoadRay(rayIndex);
-    GLINT_SSSR_RayResult r = GLINT_SSSR_TraceEntry(c, groupIndex, valid, entry);
+    GLINT_SSSR_RayResult r = GLINT_SSSR_TraceEntry(c, groupIndex, valid, entry, float2(0.0, 0.0));
     if (r.valid)
         GLINT_SSSR_StoreResult(r.entry, r.result, r.confidence, r);
 }

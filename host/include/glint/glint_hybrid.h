@@ -26,6 +26,10 @@ struct HybridDesc {
     bool feedback = true;              // off: every tile is FULL_SW (screen space first everywhere)
     bool alternateCheckerboard = true; // HALF_SW's checkerboard flips every frame
     bool mirrorsRayTraced = false;     // per-material override example: mirrors always ray traced
+    // Screen-space hits are shaded by the shading module's GLINT_HYBRID_ShadeScreenHit, the same
+    // lighting as ray-traced hits, so both paths agree; off: they take "color" as SSSR's do
+    // (sssr.previousFrameColor: last frame's colour through the motion at the hit).
+    bool reshade = true;
 
     float spawnRate = 0.02f;           // s: chance a tile without statistics tries screen space
     float missWeight = 0.5f;           // w: a miss against a hit in u <= s + h - w m
@@ -33,11 +37,17 @@ struct HybridDesc {
     float confidenceThreshold = 0.9f;  // screen-space hits below it are ray traced instead
     float maxRayDistance = 100.0f;     // world units, the ray tracer's t_max
     float rayOffset = 1e-3f;           // world units along the normal, the ray tracer's origin offset
+    // A screen-space hit's thickness: SSSR's (sssr.thickness, thicknessFloor) times
+    // (1 + thicknessRoughnessGrowth alpha), plus thicknessDistanceGrowth times the ray's length
+    // to the hit (view-depth units per world unit): rough rays blur what they find, long rays
+    // cross more depth per pixel.
+    float thicknessRoughnessGrowth = 10.0f;
+    float thicknessDistanceGrowth = 0.01f;
 
     // The application's modules for the two ray-traced passes: GLINT_HYBRID_TraceRay
-    // (glint/hybrid/glint_hybrid_trace.hlsli) and GLINT_HYBRID_ShadeHit (_shade.hlsli; ".half"
-    // is appended with halfPrecisionStorage). glint's harness provides these over its simulated
-    // scenes; their scene resources are the application's inputs.
+    // (glint/hybrid/glint_hybrid_trace.hlsli) and GLINT_HYBRID_ShadeHit, _ShadeScreenHit
+    // (_shade.hlsli; ".half" is appended with halfPrecisionStorage). glint's harness provides these over its
+    // simulated scenes; their scene resources are the application's inputs.
     std::string tracePipeline = "hybrid_trace_bvh";
     std::string shadePipeline = "hybrid_shade_scene";
 };
@@ -47,11 +57,11 @@ struct HybridDesc {
 //                                          parity: frame f writes feedback[f & 1], reads the other
 //   "hybrid_tile_class"   R32_UINT ceil(W/8) x ceil(H/8): GLINT_HYBRID_TILE_* of this frame
 //   "hybrid_sw_ray_list"  ceil(W/8) ceil(H/8) 64 entries, padded per tile (0xFFFFFFFF)
-//   "hybrid_hw_ray_list"  W H entries
+//   "hybrid_hw_ray_list"  W H entries: ray-traced rays from the start, re-shaded hits from the end
 //   "sssr_tile_list", "sssr_roughness", "sssr_radiance", "sssr_confidence" as in glint_sssr.h
-//   "hybrid_counters"     8 words, "hybrid_indirect_args" 9 words (glint_hybrid_constants.h)
+//   "hybrid_counters"     10 words, "hybrid_indirect_args" 12 words (glint_hybrid_constants.h)
 //   "sssr_blue_noise_source" (owned, glint::sssrBlueNoise()), "sssr_blue_noise", "depth_pyramid"
-//   "hybrid_hits"         16 bytes per ray-traced ray (GLINT_HYBRID_PackHit)
+//   "hybrid_hits"         16 bytes per list entry (GLINT_HYBRID_PackHit, _PackScreenHit)
 // and the application's scene for its trace and shade modules (the harness's: "scene_constants",
 // "scene_nodes", "scene_primitives", "scene_materials", "scene_lights").
 Result planHybrid(const HybridDesc& desc, EffectPlan& plan, std::string* error);

@@ -30,6 +30,9 @@ std::string checkHybrid(const HybridDesc& desc) {
     if (!(std::isfinite(desc.maxRayDistance) && desc.maxRayDistance > 0.0f))
         return "maxRayDistance must be positive and finite";
     if (!finiteIn(desc.rayOffset, 0.0f, 1e3f)) return "rayOffset must be 0..1000";
+    if (!finiteIn(desc.thicknessRoughnessGrowth, 0.0f, 1e3f))
+        return "thicknessRoughnessGrowth must be 0..1000";
+    if (!finiteIn(desc.thicknessDistanceGrowth, 0.0f, 1e3f)) return "thicknessDistanceGrowth must be 0..1000";
     if (desc.tracePipeline.empty() || desc.shadePipeline.empty())
         return "tracePipeline and shadePipeline must name modules";
     return {};
@@ -43,7 +46,8 @@ shaders::GLINT_HybridConstants makeConstants(const HybridDesc& desc) {
               (desc.rayTracing ? GLINT_HYBRID_FLAG_RAY_TRACING : 0u) |
               (desc.feedback ? GLINT_HYBRID_FLAG_FEEDBACK : 0u) |
               (desc.alternateCheckerboard ? GLINT_HYBRID_FLAG_ALTERNATE_CHECKER : 0u) |
-              (desc.mirrorsRayTraced ? GLINT_HYBRID_FLAG_MIRRORS_RAY_TRACED : 0u);
+              (desc.mirrorsRayTraced ? GLINT_HYBRID_FLAG_MIRRORS_RAY_TRACED : 0u) |
+              (desc.reshade ? GLINT_HYBRID_FLAG_RESHADE : 0u);
     c.frameIndex = desc.sssr.frameIndex;
     c.spawnRate = desc.spawnRate;
     c.missWeight = desc.missWeight;
@@ -51,6 +55,8 @@ shaders::GLINT_HybridConstants makeConstants(const HybridDesc& desc) {
     c.confidenceThreshold = desc.confidenceThreshold;
     c.maxRayDistance = desc.maxRayDistance;
     c.rayOffset = desc.rayOffset;
+    c.thicknessRoughnessGrowth = desc.thicknessRoughnessGrowth;
+    c.thicknessDistanceGrowth = desc.thicknessDistanceGrowth;
     return c;
 }
 
@@ -91,7 +97,8 @@ Pass intersectPass(const HybridDesc& desc, const std::vector<std::byte>& constan
                                        {"g_glint_ray_list", "hybrid_sw_ray_list", Access::Read},
                                        {"g_glint_hw_ray_list", "hybrid_hw_ray_list", Access::ReadWrite},
                                        {"g_glint_feedback", hybridFeedbackImages(desc.sssr.frameIndex).first,
-                                        Access::ReadWrite}});
+                                        Access::ReadWrite},
+                                       {"g_glint_hits", "hybrid_hits", Access::Write}});
     return pass;
 }
 
@@ -127,7 +134,7 @@ Pass shadePass(const HybridDesc& desc, const std::vector<std::byte>& constants) 
     Pass pass = core::sssrPass(
         "shade", desc.sssr.halfPrecisionStorage ? desc.shadePipeline + ".half" : desc.shadePipeline,
         GLINT_SSSR_RAYS_PER_GROUP, 1, constants);
-    pass.dispatch = IndirectDispatch{"hybrid_indirect_args", GLINT_HYBRID_HW_ARGUMENTS_OFFSET};
+    pass.dispatch = IndirectDispatch{"hybrid_indirect_args", GLINT_HYBRID_SHADE_ARGUMENTS_OFFSET};
     pass.uses = rayTracedSurfaceUses();
     pass.uses.insert(pass.uses.end(), {{"g_glint_hits", "hybrid_hits", Access::Read},
                                        {"g_glint_environment", "environment", Access::Read},

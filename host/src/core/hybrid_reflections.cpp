@@ -35,6 +35,10 @@ void addOutputs(EffectPlan& plan, const HybridDesc& desc, const ReflectionsDenoi
     plan.counters.push_back(
         {"ray_traced_rays", "hybrid_counters", GLINT_HYBRID_COUNTER_HW_RAYS_COPY, "ray_traced_fraction"});
     plan.counters.push_back({"listed_tiles", "hybrid_counters", 3, ""});
+    plan.counters.push_back({"reshaded_hits", "hybrid_counters", GLINT_HYBRID_COUNTER_RESHADED_COPY, ""});
+    // With ray_traced_rays: the share of the rays that went to the ray tracer.
+    plan.counters.push_back(
+        {"screen_space_answers", "hybrid_counters", GLINT_HYBRID_COUNTER_SCREEN_SPACE_ANSWERS_COPY, ""});
 }
 
 } // namespace

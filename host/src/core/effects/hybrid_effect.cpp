@@ -30,6 +30,9 @@ std::vector<SettingDesc> hybridSettings() {
                     "HybridDesc::alternateCheckerboard"),
         boolSetting("hybrid.mirrorsRayTraced", h.mirrorsRayTraced, "mirrors are always ray traced",
                     "HybridDesc::mirrorsRayTraced"),
+        boolSetting("hybrid.reshade", h.reshade,
+                    "screen-space hits are shaded like ray-traced ones (off: the colour buffer)",
+                    "HybridDesc::reshade"),
         floatSetting("hybrid.spawnRate", h.spawnRate, 0, 1,
                      "chance a tile without statistics tries screen space", "HybridDesc::spawnRate"),
         floatSetting("hybrid.missWeight", h.missWeight, 0, 64,
@@ -45,6 +48,12 @@ std::vector<SettingDesc> hybridSettings() {
                      "HybridDesc::maxRayDistance"),
         floatSetting("hybrid.rayOffset", h.rayOffset, 0, 1e3,
                      "world units the ray tracer's origin leaves the surface", "HybridDesc::rayOffset"),
+        floatSetting("hybrid.thicknessRoughnessGrowth", h.thicknessRoughnessGrowth, 0, 1e3,
+                     "screen-space thickness grows by this times alpha (relative)",
+                     "HybridDesc::thicknessRoughnessGrowth"),
+        floatSetting("hybrid.thicknessDistanceGrowth", h.thicknessDistanceGrowth, 0, 1e3,
+                     "screen-space thickness grows by this per world unit of ray length",
+                     "HybridDesc::thicknessDistanceGrowth"),
     };
     settings.insert(settings.end(), own.begin(), own.end());
     return settings;
@@ -72,11 +81,12 @@ Result planFrame(const FrameInfo& frame, const SettingValues& settings, EffectPl
     desc.confidenceThreshold = settings.real("hybrid.confidenceThreshold");
     desc.maxRayDistance = settings.real("hybrid.maxRayDistance");
     desc.rayOffset = settings.real("hybrid.rayOffset");
-    if (desc.sssr.debugOutput || desc.sssr.thicknessAware || desc.sssr.previousFrameColor) {
+    desc.reshade = settings.flag("hybrid.reshade");
+    desc.thicknessRoughnessGrowth = settings.real("hybrid.thicknessRoughnessGrowth");
+    desc.thicknessDistanceGrowth = settings.real("hybrid.thicknessDistanceGrowth");
+    if (desc.sssr.debugOutput || desc.sssr.thicknessAware) {
         if (error)
-            *error =
-                "hybrid: debugOutput, thicknessAware and previousFrameColor are not supported by the hybrid "
-                "effect yet";
+            *error = "hybrid: debugOutput and thicknessAware are not supported by the hybrid effect yet";
         return Result::InvalidArgument;
     }
     const ReflectionsDenoiserDesc denoiser = core::reflectionsDenoiserDesc(frame, settings, desc.sssr);
