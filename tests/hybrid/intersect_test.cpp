@@ -66,12 +66,14 @@ std::vector<std::uint32_t> noHistory(std::uint32_t width, std::uint32_t height) 
 }
 
 // `bothOutcomes`: the view is large enough that some rays hit on screen and some do not.
+// `previousFrameColor`: SSSR's option, hits fetch "color" through the motion at the hit.
 void checkIntersection(std::uint32_t width, std::uint32_t height, float rayTracingThreshold, bool reshade,
-                       bool bothOutcomes) {
-    INFO(width << "x" << height << " ray-tracing threshold " << rayTracingThreshold << " re-shade "
-               << reshade);
+                       bool bothOutcomes, bool previousFrameColor = false) {
+    INFO(width << "x" << height << " ray-tracing threshold " << rayTracingThreshold << " re-shade " << reshade
+               << " previous frame's colour " << previousFrameColor);
     test::SssrTestView view = intersectView(width, height, width * 3 + height);
     view.desc.frameIndex = 5;
+    view.desc.previousFrameColor = previousFrameColor;
     const gpu::SssrFrameOutputs expected = sssrAlone(view);
 
     const HybridDesc desc = intersectDesc(view, rayTracingThreshold, reshade);
@@ -161,6 +163,7 @@ TEST_CASE("the hybrid screen-space intersection keeps SSSR's confident results a
         checkIntersection(61, 37, 0.08f, reshade, true); // glossier rays only: the rest keep the blend
         checkIntersection(8, 8, 0.22f, reshade, false);  // one tile
     }
+    checkIntersection(61, 37, 0.22f, false, true, true); // screen colour from last frame's colour
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }
 
