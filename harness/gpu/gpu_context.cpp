@@ -5,13 +5,42 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <cstring>
 #include <stdexcept>
 #include <string_view>
 #include <vector>
 
+#if defined(__SANITIZE_ADDRESS__)
+#include <dlfcn.h>
+#include <link.h>
+#endif
+
 namespace glint::gpu {
 
 namespace {
+
+#if defined(__SANITIZE_ADDRESS__)
+// LeakSanitizer checks for leaks after the Vulkan loader has unloaded the drivers and layers at
+// exit. Mesa's lavapipe (libvulkan_lvp.so) keeps a 128-byte block it reallocs in a static of its
+// own; once the library is unmapped nothing points at the block any more, and it is reported as a
+// direct leak "from an unknown module". Keeping Mesa's drivers and the validation layer mapped
+// until the process ends (RTLD_NODELETE on the already loaded library) keeps such statics, and
+// the report, truthful: a block a library really loses is still reported, with its module's name
+// (which is what tests/sanitizers/lsan.supp matches for the validation layer's own leaks).
+void keepVulkanLibrariesLoaded() {
+    dl_iterate_phdr(
+        [](dl_phdr_info* object, std::size_t, void*) {
+            const char* name = object->dlpi_name;
+            if (name && (std::strstr(name, "/libvulkan_") != nullptr ||
+                         std::strstr(name, "/libVkLayer_khronos_validation") != nullptr))
+                dlopen(name, RTLD_LAZY | RTLD_NOLOAD | RTLD_NODELETE);
+            return 0;
+        },
+        nullptr);
+}
+#else
+void keepVulkanLibrariesLoaded() {}
+#endif
 
 constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
 // A fence wait this long means the device hung; failing beats hanging a test run forever.
@@ -127,6 +156,7 @@ void createInstance(const ContextOptions& options, Context& context) {
     info.enabledExtensionCount = static_cast<uint32_t>(extensions.size());
     info.ppEnabledExtensionNames = extensions.data();
     GLINT_VK_CHECK(vkCreateInstance(&info, nullptr, &context.instance));
+    keepVulkanLibrariesLoaded();
 
     if (options.validation) context.messenger = createMessenger(context.instance, *context.validation);
 }

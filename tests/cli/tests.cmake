@@ -10,6 +10,17 @@ function(glint_cli_test)
   set_tests_properties("cli: ${ARG_NAME}" PROPERTIES LABELS "${ARG_LABELS}" FIXTURES_REQUIRED cli_samples)
 endfunction()
 
+# Every verb exits without a LeakSanitizer report (sanitizer builds only; issue 24, item 6).
+if(GLINT_SANITIZE)
+  add_test(NAME "cli: glint's verbs exit without a leak report"
+    COMMAND "${CMAKE_COMMAND}" "-DGLINT=$<TARGET_FILE:glint>"
+            "-DSUPPRESSIONS=${CMAKE_CURRENT_SOURCE_DIR}/sanitizers/lsan.supp"
+            "-DSAMPLE=${GLINT_CLI_SAMPLE_DIR}/sample" "-DSCENE=${PROJECT_SOURCE_DIR}/harness/scenes/mirror_corridor.toml"
+            "-DOUT=${PROJECT_BINARY_DIR}/test-output/cli/leaks" -P "${CMAKE_CURRENT_SOURCE_DIR}/cli/leak_check.cmake")
+  set_tests_properties("cli: glint's verbs exit without a leak report" PROPERTIES LABELS "gpu"
+                       FIXTURES_REQUIRED cli_samples)
+endif()
+
 # Blender-style renders of the sample frames (tests/capture/blender_capture.h).
 add_executable(glint_make_blender_sample cli/make_blender_sample.cpp capture/blender_capture.cpp)
 target_link_libraries(glint_make_blender_sample PRIVATE glint_capture)
