@@ -6,6 +6,7 @@ glint_add_test_suite(NAME hybrid LABELS gpu
     hybrid/trace_test.cpp
     hybrid/composed_test.cpp
     hybrid/scene_test.cpp
+    hybrid/sequence_test.cpp
     hybrid/hybrid_test_frame.cpp
     sssr/sssr_test_scene.cpp
     sssr/sssr_classify_view.cpp
