@@ -89,6 +89,7 @@ Target openTarget(const std::string& path, const BenchOptions& options) {
     return target;
 }
 
+// The target's own scene for the effects that ray trace (options.geometry, from --geometry, wins).
 replay::SessionOptions withScene(replay::SessionOptions options, const Target& target) {
     options.scene = target.sceneFile;
     return options;
@@ -181,6 +182,7 @@ int runBenchCaptures(const BenchOptions& options) {
     replay::SessionOptions sessionOptions;
     sessionOptions.effects = options.effects;
     sessionOptions.settings = replay::parseSettings(options.settings);
+    setGeometry(sessionOptions, {}, options.geometry); // withScene keeps it: it wins over the targets' scenes
     std::vector<Target> targets;
     for (const std::string& path : options.captures) targets.push_back(openTarget(path, options));
     // With the JSON on stdout, the table goes to stderr so that stdout parses.

@@ -5,6 +5,7 @@
 #include "capture/channel_map.h"
 #include "capture/frame_io.h"
 #include "capture/sequence_io.h"
+#include "scene/scene_file.h"
 
 #include <algorithm>
 #include <cctype>
@@ -178,6 +179,17 @@ capture::Environment blackEnvironment() {
     environment.height = 8;
     environment.rgb.assign(16 * 8 * 3, 0.0f);
     return environment;
+}
+
+void setGeometry(replay::SessionOptions& options, const std::string& manifestScene,
+                 const std::string& geometryPath) {
+    options.scene = manifestScene;
+    options.geometry.reset();
+    if (geometryPath.empty()) return;
+    std::vector<std::string> warnings;
+    options.geometry = scene::loadGeometryScene(geometryPath, &warnings);
+    for (const std::string& warning : warnings)
+        std::fprintf(stderr, "glint: %s: warning: %s\n", geometryPath.c_str(), warning.c_str());
 }
 
 FrameRange parseFrames(const std::string& text, std::size_t count) {

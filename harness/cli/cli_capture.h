@@ -64,6 +64,14 @@ void requireManifest(const std::filesystem::path& folder);
 // A black 16x8 lat-long environment, for captures and scenes without one.
 capture::Environment blackEnvironment();
 
+// The geometry the effects that ray trace see: `geometryPath` (--geometry, a glTF of the
+// capture's scene in its world space) when given, which wins over the manifest's scene; else
+// `manifestScene`, the scene file of a capture written by glint simulate. The file is read and
+// checked here, before any device work (a SceneError of one line naming it); what it leaves out
+// (an ambient light, a spot light's cone) is one warning line each on stderr.
+void setGeometry(replay::SessionOptions& options, const std::string& manifestScene,
+                 const std::string& geometryPath);
+
 // "a..b" (inclusive), "a.." (to the end), "a" (one frame) or "" (all) -> [first, last] indices
 // within `count` frames. Throws std::invalid_argument naming the range.
 struct FrameRange {

@@ -58,7 +58,7 @@ int runCheck(const ReplayOptions& options) {
     const CaptureSource source(options.capture, options.mapPath);
     replay::SessionOptions sessionOptions;
     sessionOptions.effects = options.effects;
-    sessionOptions.scene = source.sceneFile();
+    setGeometry(sessionOptions, source.sceneFile(), options.geometry);
     sessionOptions.settings = replay::parseSettings(options.settings);
     return withContext(options.validate, [&](const gpu::Context& context) {
         std::size_t frame = 0;

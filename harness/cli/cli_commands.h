@@ -32,6 +32,7 @@ struct BenchOptions {
     std::vector<std::string> effects; // --effects; empty: the capture's declared effects
     std::string json;                 // --json FILE, "-" for stdout (the table then goes to stderr)
     bool sizeGiven = false;           // --size/--resolution named: captures must match it
+    std::string geometry;             // --geometry FILE: the scene the effects that ray trace see
 };
 
 struct SimulateOptions {
@@ -48,6 +49,7 @@ struct SimulateOptions {
 struct ReplayOptions {
     std::string capture;                 // frame .exr, sequence folder, or foreign EXR(s) with mapPath
     std::string mapPath;                 // --map: channel map of a foreign capture
+    std::string geometry;                // --geometry: a glTF of the capture's scene (docs/replay.md)
     std::string outDir;                  // run, dump
     std::string expectedDir;             // check
     std::vector<std::string> effects;    // empty: the capture's declared effects

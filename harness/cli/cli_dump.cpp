@@ -18,7 +18,7 @@ int runDump(const ReplayOptions& options) {
     const CaptureSource source(options.capture, options.mapPath);
     replay::SessionOptions sessionOptions;
     sessionOptions.effects = options.effects;
-    sessionOptions.scene = source.sceneFile();
+    setGeometry(sessionOptions, source.sceneFile(), options.geometry);
     sessionOptions.settings = replay::parseSettings(options.settings);
     const std::filesystem::path out(options.outDir);
     return withContext(options.validate, [&](const gpu::Context& context) {

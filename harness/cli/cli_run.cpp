@@ -44,7 +44,7 @@ int runRun(const ReplayOptions& options) {
     const FrameRange range = parseFrames(options.frames, source.frameCount());
     replay::SessionOptions sessionOptions;
     sessionOptions.effects = options.effects;
-    sessionOptions.scene = source.sceneFile();
+    setGeometry(sessionOptions, source.sceneFile(), options.geometry);
     sessionOptions.settings = replay::parseSettings(options.settings);
     const std::filesystem::path out(options.outDir);
 

@@ -63,6 +63,11 @@ int main(int argc, char** argv) {
         ->delimiter(',');
     benchCommand->add_option("--json", bench.json,
                              "captures: also write the results as JSON to FILE ('-': stdout)");
+    benchCommand->add_option(
+        "--geometry", bench.geometry,
+        "captures: a glTF (.gltf/.glb, or anything assimp reads) of the captures' scene in "
+        "their world space, for the effects that ray trace (hybrid); wins over a "
+        "manifest's or scene file's own scene (docs/replay.md)");
 
     glint::cli::StudyOptions study;
     std::string studySize;
@@ -106,6 +111,11 @@ int main(int argc, char** argv) {
                          "frame .exr, sequence folder, or foreign EXR(s) with --map")
             ->required();
         command->add_option("--map", options.mapPath, "channel map of a foreign capture (docs/replay.md)");
+        command->add_option(
+            "--geometry", options.geometry,
+            "a glTF (.gltf/.glb, or anything assimp reads) of the capture's scene in its world "
+            "space, for the effects that ray trace (hybrid): its meshes with their materials "
+            "and its punctual lights; wins over the scene a manifest records (docs/replay.md)");
         command->add_option("--effects", options.effects, glint::cli::effectNames() + " (default: declared)")
             ->delimiter(',');
         command->add_option("--set", options.settings, "a setting, name=value (repeatable; glint settings)");
@@ -183,6 +193,10 @@ int main(int argc, char** argv) {
             else
                 bench.captures = benchTargets;
             if (!bench.captures.empty()) return glint::cli::runBenchCaptures(bench);
+            if (!bench.geometry.empty())
+                throw std::invalid_argument("bench: --geometry is for captures and scene files, not the "
+                                            "synthetic effect '" +
+                                            bench.effect + "'");
             return glint::cli::runBench(bench);
         }
         if (*studyCommand) {

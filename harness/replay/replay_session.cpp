@@ -123,12 +123,17 @@ Session::Session(const gpu::Context& context, const capture::Frame& first,
         running->descriptor = findEffect(name);
         for (const InputDesc& input : running->descriptor->inputs)
             if (input.kind == InputKind::SceneGeometry && !scene_) {
-                if (options_.scene.empty())
+                if (options_.geometry)
+                    scene_ = std::make_unique<scene::SceneBuffers>(context_, *options_.geometry);
+                else if (options_.scene.empty())
                     throw std::invalid_argument(
                         "effect '" + name +
-                        "' ray traces the scene's geometry, which this capture does not name: replay a "
+                        "' ray traces the scene's geometry, which this capture does not name: give it with "
+                        "--geometry FILE (a glTF of the scene in the capture's world space), or replay a "
                         "capture written by glint simulate (its manifest records the scene file)");
-                scene_ = std::make_unique<scene::SceneBuffers>(context_, scene::loadScene(options_.scene));
+                else
+                    scene_ =
+                        std::make_unique<scene::SceneBuffers>(context_, scene::loadScene(options_.scene));
             }
         if (options_.intermediates && !running->descriptor->debugSetting.empty())
             options_.settings.set(running->descriptor->debugSetting, 1.0);

@@ -16,6 +16,7 @@
 
 #include "glint/glint_effect.h"
 #include "report/report_image.h"
+#include "scene/scene_types.h"
 
 #include <gpu/gpu_context.h>
 #include <gpu/gpu_input_images.h>
@@ -84,8 +85,12 @@ struct SessionOptions {
     bool intermediates = false; // also every intermediate (glint dump)
     bool readback = true;       // false: timings and counters only (benchmarks)
     // The scene file the capture was simulated from (its manifest's "scene"): the geometry of
-    // the effects that ray trace (InputKind::SceneGeometry). Empty: such effects are refused.
+    // the effects that ray trace (InputKind::SceneGeometry). Empty, and no `geometry`: such
+    // effects are refused.
     std::string scene;
+    // The geometry given apart from the capture (glint run --geometry FILE:
+    // scene::loadGeometryScene), in the capture's world space. Wins over `scene`.
+    std::optional<scene::Scene> geometry;
 };
 
 class Session {

@@ -101,6 +101,9 @@ struct ObjectDesc {
     float radius = 0.5f;         // sphere
     std::filesystem::path file;  // mesh (glTF 2.0 or anything assimp reads)
     float fitSize = 0.0f;        // mesh: > 0 scales the model so its largest extent is this
+    // mesh: -1 every triangle of the file; k >= 0 only the triangles the file gives its
+    // material k (assimp's material order), as loadGeometryScene makes one object per material.
+    std::int32_t fileMaterial = -1;
     std::vector<ObjectKey> keys{ObjectKey{}};
 };
 

@@ -49,6 +49,41 @@ add_test(NAME "cli: hybrid end to end: the mirror corridor at half SSSR's error,
           -P "${CMAKE_CURRENT_SOURCE_DIR}/cli/hybrid_e2e.cmake")
 set_tests_properties("cli: hybrid end to end: the mirror corridor at half SSSR's error, a capture without its scene refused"
   PROPERTIES LABELS gpu FIXTURES_REQUIRED cli_samples)
+
+# --geometry FILE (docs/replay.md): a glTF for the effects that ray trace a capture without a
+# scene. glint_export_geometry writes a scene file's geometry as glTF (tests/scene/scene_gltf_export.h).
+add_executable(glint_export_geometry cli/export_geometry.cpp scene/scene_gltf_export.cpp)
+target_link_libraries(glint_export_geometry PRIVATE glint_scene)
+target_include_directories(glint_export_geometry PRIVATE "${CMAKE_CURRENT_SOURCE_DIR}")
+glint_target_defaults(glint_export_geometry)
+add_test(NAME "cli: geometry end to end: the hybrid with --geometry equals the hybrid with the manifest's scene"
+  COMMAND "${CMAKE_COMMAND}" "-DGLINT=$<TARGET_FILE:glint>" "-DEXPORT=$<TARGET_FILE:glint_export_geometry>"
+          "-DSCENE=${CMAKE_CURRENT_SOURCE_DIR}/cli/scenes/geometry_corridor.toml"
+          "-DOUT=${PROJECT_BINARY_DIR}/test-output/cli/geometry" -P "${CMAKE_CURRENT_SOURCE_DIR}/cli/geometry_e2e.cmake")
+set_tests_properties("cli: geometry end to end: the hybrid with --geometry equals the hybrid with the manifest's scene"
+  PROPERTIES LABELS gpu)
+set(GLINT_GEOMETRY_DIR "${CMAKE_CURRENT_SOURCE_DIR}/data/geometry")
+glint_cli_test(NAME "run --geometry with a missing file prints one line naming it and exits 2" LABELS unit EXIT 2
+  STDERR_ONE_LINE "^glint: [^ ]*no_such_geometry.gltf: no such file$"
+  COMMAND run "${GLINT_CLI_SAMPLE_DIR}/sample" --effects hybrid --geometry "${GLINT_GEOMETRY_DIR}/no_such_geometry.gltf"
+          --out "${PROJECT_BINARY_DIR}/test-output/cli/run_bad")
+glint_cli_test(NAME "run --geometry with a malformed glTF prints one line naming it and exits 2" LABELS unit EXIT 2
+  STDERR_ONE_LINE "^glint: [^ ]*malformed.gltf: cannot read as a model: malformed glTF JSON: line 3, column 1: "
+  COMMAND run "${GLINT_CLI_SAMPLE_DIR}/sample" --effects hybrid --geometry "${GLINT_GEOMETRY_DIR}/malformed.gltf"
+          --out "${PROJECT_BINARY_DIR}/test-output/cli/run_bad")
+glint_cli_test(NAME "dump --geometry with a glTF without triangles prints one line naming it and exits 2" LABELS unit
+  EXIT 2
+  STDERR_ONE_LINE "^glint: [^ ]*points_only.gltf: no triangles"
+  COMMAND dump "${GLINT_CLI_SAMPLE_DIR}/sample" --effects hybrid --geometry "${GLINT_GEOMETRY_DIR}/points_only.gltf"
+          --out "${PROJECT_BINARY_DIR}/test-output/cli/dump_bad")
+glint_cli_test(NAME "check --geometry with a binary glTF whose chunk overruns the file prints one line and exits 2"
+  LABELS unit EXIT 2
+  STDERR_ONE_LINE "^glint: [^ ]*assimp-glb-json-chunk-2.1GB.glb: cannot read as a model: binary glTF "
+  COMMAND check "${GLINT_CLI_SAMPLE_DIR}/sample" --effects hybrid --expected "${GLINT_CLI_SAMPLE_DIR}"
+          --geometry "${CMAKE_CURRENT_SOURCE_DIR}/fuzz/third_party_crashes/gltf/assimp-glb-json-chunk-2.1GB.glb")
+glint_cli_test(NAME "bench --geometry with a folder prints one line naming it and exits 2" LABELS unit EXIT 2
+  STDERR_ONE_LINE "^glint: [^ ]*geometry: is a folder, not a model file$"
+  COMMAND bench "${GLINT_CLI_SAMPLE_DIR}/sample" --runs 1 --geometry "${GLINT_GEOMETRY_DIR}")
 glint_cli_test(NAME "run with a missing channel map names the map file" LABELS unit EXIT 2
   STDERR_ONE_LINE "no_such_map.toml"
   COMMAND run "${GLINT_CLI_SAMPLE_DIR}/sample" --map "${GLINT_CLI_SAMPLE_DIR}/no_such_map.toml"

@@ -4,6 +4,8 @@ glint_add_test_suite(NAME scene_unit LABELS unit
   SOURCES
     scene/bvh_test.cpp
     scene/scene_file_test.cpp
+    scene/geometry_file_test.cpp
+    scene/scene_gltf_export.cpp
   LIBS glint_scene)
 
 glint_add_test_suite(NAME scene LABELS gpu
