@@ -321,11 +321,11 @@ ChannelMap parseMap(const toml::table& root, const std::string& file) {
 
     ChannelMap map;
     map.path = file;
-    map.effects = r.texts(root, "", "effects", 1, 3);
+    map.effects = r.texts(root, "", "effects", 1, 4);
     for (const std::string& effect : map.effects) {
         if (!isKnownEffect(effect))
             r.fail(root.get("effects"), "effects",
-                   "unknown effect '" + effect + "' (known: reflections, shadows, depth_pyramid)");
+                   "unknown effect '" + effect + "' (known: reflections, hybrid, shadows, depth_pyramid)");
         if (std::count(map.effects.begin(), map.effects.end(), effect) > 1)
             r.fail(root.get("effects"), "effects", "effect '" + effect + "' is listed twice");
     }

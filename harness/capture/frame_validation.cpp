@@ -11,7 +11,7 @@
 namespace glint::capture {
 
 namespace {
-constexpr std::array<std::string_view, 3> kEffects{"reflections", "shadows", "depth_pyramid"};
+constexpr std::array<std::string_view, 4> kEffects{"reflections", "hybrid", "shadows", "depth_pyramid"};
 
 // Appends rather than "'" + s + "'": GCC 12 at -O3 reports a false -Wrestrict (GCC bug
 // 105329) on operator+(const char*, std::string&&).
@@ -44,7 +44,7 @@ std::vector<std::string> requiredChannels(std::string_view layer, NormalEncoding
 }
 
 std::vector<std::string> layersFor(std::string_view effect) {
-    if (effect == "reflections") return {"color", "depth", "normal", "motion"};
+    if (effect == "reflections" || effect == "hybrid") return {"color", "depth", "normal", "motion"};
     if (effect == "shadows") return {"depth", "normal", "motion", "shadow"};
     return {"depth"};
 }
@@ -85,7 +85,7 @@ std::optional<std::string> checkRoughness(const FrameHeader& h, bool required) {
     const RoughnessSource& r = h.roughness;
     if (r.layer.empty() && r.channel.empty()) {
         if (required)
-            return "no roughness source declared (glint.roughnessSource) but effect 'reflections' needs one";
+            return "no roughness source declared (glint.roughnessSource) but the reflection effects need one";
         return std::nullopt;
     }
     if (r.layer.empty() || r.channel.empty())
@@ -93,7 +93,7 @@ std::optional<std::string> checkRoughness(const FrameHeader& h, bool required) {
     if (!required) return std::nullopt;
     const LayerInfo* layer = findLayer(h, r.layer);
     if (!layer)
-        return "missing layer " + quoted(r.layer) + " (roughness source) required by effect 'reflections'";
+        return "missing layer " + quoted(r.layer) + " (roughness source) required by the reflection effects";
     if (channelIndex(layer->channels, r.channel) < 0)
         return "layer " + quoted(r.layer) + " lacks channel " + quoted(r.channel) + " (roughness source)";
     return std::nullopt;
@@ -145,9 +145,10 @@ std::optional<std::string> checkHeader(const FrameHeader& h) {
     std::set<std::string, std::less<>> seen;
     for (const std::string& effect : h.effects) {
         if (!isKnownEffect(effect))
-            return "unknown effect " + quoted(effect) + " (known: reflections, shadows, depth_pyramid)";
+            return "unknown effect " + quoted(effect) +
+                   " (known: reflections, hybrid, shadows, depth_pyramid)";
         if (!seen.insert(effect).second) return "effect " + quoted(effect) + " is declared twice";
-        needsRoughness = needsRoughness || effect == "reflections";
+        needsRoughness = needsRoughness || effect == "reflections" || effect == "hybrid";
         for (const std::string& layer : layersFor(effect)) {
             if (!findLayer(h, layer))
                 return "missing layer " + quoted(layer) + " required by effect " + quoted(effect);

@@ -75,7 +75,8 @@ int main(int argc, char** argv) {
         "study", "Sweep effect settings on scenes with references: GPU time and error per setting");
     studyCommand->add_option("--out", study.outDir, "output folder (study.csv, study.json, images/)")
         ->required();
-    studyCommand->add_option("--effect", study.effect, "reflections | shadows | all")->capture_default_str();
+    studyCommand->add_option("--effect", study.effect, "reflections | shadows | hybrid | all")
+        ->capture_default_str();
     studyCommand
         ->add_option("--scenes", study.scenes, "scene files (default: three bundled scenes per effect)")
         ->delimiter(',');
