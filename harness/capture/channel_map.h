@@ -172,6 +172,11 @@ Camera mappedCamera(const std::string& framePath, const ChannelMap& map, std::ui
 // returns it with frame index `frameIndex`.
 Frame readMappedFrame(const std::string& framePath, const ChannelMap& map, std::uint32_t frameIndex);
 
+// Everything readMappedFrame checks before it reads pixels: every source file's header and
+// mapped channels, that the files agree in size and can hold their pixel data, and the frame's
+// camera. Returns whether the mapped depth channel is stored as HALF.
+bool checkMappedFrame(const std::string& framePath, const ChannelMap& map);
+
 // The environment file the map names, resolved in the capture folder of `dirOrFile` (a
 // sequence folder or one of its frames); empty when the map names none.
 std::filesystem::path mappedEnvironmentFile(const ChannelMap& map, const std::string& dirOrFile);

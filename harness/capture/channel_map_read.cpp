@@ -52,8 +52,10 @@ std::string channelList(const Imf::ChannelList& channels) {
 }
 
 // Reads every requested channel, one InputFile per source file; all files must have one size.
+// With readPixels false, everything but the pixels: headers, channels, sizes, file lengths.
 std::map<std::string, Plane> readPlanes(const std::string& framePath, const ChannelMap& map,
-                                        const std::vector<Request>& requests, ExrSize& size) {
+                                        const std::vector<Request>& requests, ExrSize& size,
+                                        bool readPixels = true) {
     std::map<std::filesystem::path, std::vector<const Request*>> byFile;
     for (const Request& r : requests)
         byFile[locate(framePath, r.ref, map.framesAreFolders).file].push_back(&r);
@@ -92,6 +94,7 @@ std::map<std::string, Plane> readPlanes(const std::string& framePath, const Chan
             present.push_back(r);
         }
         checkPixelData(file, header, layout); // before the planes are allocated
+        if (!readPixels) continue;
         const std::size_t pixels = std::size_t{size.width} * size.height;
         translateErrors(file, "cannot read pixel data", [&] {
             Imf::InputFile input(file.c_str());
@@ -114,7 +117,7 @@ std::map<std::string, Plane> readPlanes(const std::string& framePath, const Chan
             input.readPixels(0, static_cast<int>(size.height) - 1);
         });
     }
-    if (map.flipVertical) {
+    if (map.flipVertical && readPixels) {
         for (auto& [ref, plane] : planes)
             for (std::size_t y = 0; y < size.height / 2; ++y)
                 std::swap_ranges(plane.samples.begin() + static_cast<std::ptrdiff_t>(y * size.width),
@@ -322,6 +325,15 @@ std::vector<Request> requestsOf(const ChannelMap& map) {
     return out;
 }
 } // namespace
+
+bool checkMappedFrame(const std::string& framePath, const ChannelMap& map) {
+    ExrSize size;
+    const std::map<std::string, Plane> planes = readPlanes(framePath, map, requestsOf(map), size, false);
+    mappedCamera(framePath, map, size.width, size.height);
+    if (!map.depth) return false;
+    const auto depth = planes.find(map.depth->channel);
+    return depth != planes.end() && depth->second.half;
+}
 
 Frame readMappedFrame(const std::string& framePath, const ChannelMap& map, std::uint32_t frameIndex) {
     ExrSize size;

@@ -53,6 +53,15 @@ FrameHeader readFrameHeader(const std::filesystem::path& file) {
     return parseHeader(file, exr, size);
 }
 
+FrameHeader checkFrameFile(const std::filesystem::path& file) {
+    ExrSize size;
+    ExrLayout layout;
+    const Imf::Header exr = readExrHeader(file, size, &layout);
+    FrameHeader header = parseHeader(file, exr, size);
+    checkPixelData(file, exr, layout);
+    return header;
+}
+
 Frame readFrame(const std::filesystem::path& file) {
     ExrSize size;
     ExrLayout layout;

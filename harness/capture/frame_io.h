@@ -19,6 +19,11 @@ Frame readFrame(const std::filesystem::path& file);
 // The motion convention is reported as declared in the file.
 FrameHeader readFrameHeader(const std::filesystem::path& file);
 
+// Everything readFrame checks before it reads pixels: the header as readFrameHeader checks it,
+// and that the file is large enough for the pixel data the header declares. Cheap (no pixels
+// are read or allocated), so a replay can check every frame before it writes anything.
+FrameHeader checkFrameFile(const std::filesystem::path& file);
+
 // Validates (checkFrame) and writes one single-part scanline file with ZIP compression.
 // Each layer is stored as its Layer::storage says; depth and motion must be Float. The file
 // appears under its final name only once complete.

@@ -158,6 +158,37 @@ std::vector<std::string> CaptureSource::checkEffects(const capture::Frame& frame
     throw std::invalid_argument(message);
 }
 
+void CaptureSource::checkFrames(std::size_t first, std::size_t last,
+                                const replay::SessionOptions& options) const {
+    bool halfDepth = false;
+    std::string halfDepthFile;
+    for (std::size_t index = first; index <= last && index < frameCount(); ++index) {
+        if (impl_->map) {
+            if (capture::checkMappedFrame(impl_->mappedFiles.at(index), *impl_->map) && !halfDepth) {
+                halfDepth = true;
+                halfDepthFile = impl_->mappedFiles.at(index);
+            }
+            continue; // the map names the same layers for every frame: checkEffects saw them
+        }
+        const capture::FrameHeader header = capture::checkFrameFile(impl_->paths.at(index));
+        // The layers' shapes without pixels are what checkEffects reads.
+        capture::Frame shape = capture::frameFromHeader(header);
+        for (const capture::LayerInfo& info : header.layers) {
+            shape.layers.push_back({info.name, info.channels, {}, 0, info.storage});
+            if (info.name == "depth" && info.storage == capture::SampleType::Half && !halfDepth) {
+                halfDepth = true;
+                halfDepthFile = impl_->paths.at(index);
+            }
+        }
+        checkEffects(shape, index, options);
+    }
+    if (halfDepth)
+        std::fprintf(stderr,
+                     "glint: %s: warning: depth is stored as 16-bit float (HALF): it quantises geometry "
+                     "(about 3 significant digits) and view depths beyond 65504 turn into Inf\n",
+                     halfDepthFile.c_str());
+}
+
 std::string frameFolderName(std::size_t number) {
     char name[32];
     std::snprintf(name, sizeof name, "frame_%04zu", number);
@@ -250,6 +281,7 @@ replay::FrameResult replayUntil(const gpu::Context& context, const CaptureSource
         frameText.empty() ? source.frameCount() - 1 : parseFrames(frameText, source.frameCount()).first;
     if (frameIndex) *frameIndex = last;
     options.intermediates = true;
+    source.checkFrames(0, last, options);
     const capture::Frame first = source.frame(0);
     source.checkEffects(first, 0, options);
     replay::Session session(context, first, source.environment(), options);

@@ -47,6 +47,12 @@ class CaptureSource {
     std::vector<std::string> checkEffects(const capture::Frame& frame, std::size_t index,
                                           const replay::SessionOptions& options) const;
 
+    // Checks frames first..last as far as can be done without reading their pixels (header,
+    // camera, the layers the effects need, a file large enough for the pixel data it declares),
+    // so that a bad frame late in a sequence fails at once, before anything is written: one
+    // line naming its file. Depth stored as HALF (legal but lossy) gets one warning line.
+    void checkFrames(std::size_t first, std::size_t last, const replay::SessionOptions& options) const;
+
   private:
     struct Impl;
     Impl* impl_ = nullptr;

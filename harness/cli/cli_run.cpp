@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <exception>
 #include <fstream>
 #include <map>
 #include <unistd.h>
@@ -48,6 +49,8 @@ int runRun(const ReplayOptions& options) {
     sessionOptions.settings = replay::parseSettings(options.settings);
     const std::filesystem::path out(options.outDir);
 
+    // Every frame's header, camera and layers before anything is written.
+    source.checkFrames(range.first, range.last, sessionOptions);
     const capture::Frame first = source.frame(range.first);
     source.checkEffects(first, range.first, sessionOptions);
 
@@ -68,6 +71,13 @@ int runRun(const ReplayOptions& options) {
         std::size_t nonFiniteFrames = 0;
 
         const std::size_t total = range.last - range.first + 1;
+        // An error after the progress bar has started goes on a line of its own.
+        struct EndProgressLine {
+            bool shown;
+            ~EndProgressLine() {
+                if (shown && std::uncaught_exceptions() > 0) std::fprintf(stderr, "\n");
+            }
+        } endProgressLine{false};
         for (std::size_t index = range.first; index <= range.last; ++index) {
             const capture::Frame frame = index == range.first ? first : source.frame(index);
             const replay::FrameResult result = session.run(frame);
@@ -102,6 +112,7 @@ int runRun(const ReplayOptions& options) {
             }
             summary["frames"].push_back(record);
             progress(index - range.first + 1, total);
+            endProgressLine.shown = total >= 2 && index < range.last; // the last one ends its line
         }
 
         std::printf("device: %s, driver %s %s, subgroup %u\n", context.info.name.c_str(),

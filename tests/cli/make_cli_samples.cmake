@@ -27,3 +27,11 @@ if(NOT manifest MATCHES "1e999")
   message(FATAL_ERROR "could not write overflow_manifest/manifest.json")
 endif()
 file(WRITE "${DIR}/overflow_manifest/manifest.json" "${manifest}")
+# The sample sequence with its last frame truncated (header intact): replays must fail on it
+# before they write anything for the frames before it.
+file(COPY "${DIR}/sample/" DESTINATION "${DIR}/truncated_last_frame")
+execute_process(COMMAND head -c ${keep} "${DIR}/sample/frame_0001.exr"
+                OUTPUT_FILE "${DIR}/truncated_last_frame/frame_0001.exr" RESULT_VARIABLE status)
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "could not write truncated_last_frame/frame_0001.exr")
+endif()

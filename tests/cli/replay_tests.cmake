@@ -7,6 +7,13 @@ glint_cli_test(NAME "run replays the sample capture under validation" LABELS gpu
 glint_cli_test(NAME "run on a missing capture prints one line and exits 2" LABELS unit EXIT 2
   STDERR_ONE_LINE "does_not_exist: no such file or folder"
   COMMAND run "${GLINT_CLI_SAMPLE_DIR}/does_not_exist" --out "${PROJECT_BINARY_DIR}/test-output/cli/run_missing")
+# Errors before output (issue 24, item 2): the bad frame is found before frame 0 is written.
+add_test(NAME "cli: run with a truncated last frame fails in one line before writing anything"
+  COMMAND "${CMAKE_COMMAND}" "-DGLINT=$<TARGET_FILE:glint>" "-DCAPTURE=${GLINT_CLI_SAMPLE_DIR}/truncated_last_frame"
+          "-DOUT=${PROJECT_BINARY_DIR}/test-output/cli/run_truncated_last"
+          -P "${CMAKE_CURRENT_SOURCE_DIR}/cli/nothing_written.cmake")
+set_tests_properties("cli: run with a truncated last frame fails in one line before writing anything"
+                     PROPERTIES LABELS "unit" FIXTURES_REQUIRED cli_samples)
 glint_cli_test(NAME "run on a truncated capture prints one line and exits 2" LABELS unit EXIT 2
   STDERR_ONE_LINE "truncated.exr"
   COMMAND run "${GLINT_CLI_SAMPLE_DIR}/truncated.exr" --out "${PROJECT_BINARY_DIR}/test-output/cli/run_truncated")
