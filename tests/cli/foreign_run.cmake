@@ -3,13 +3,7 @@
 # glint's own captures keep theirs (frame_0000, frame_0001), --frames stays a position, and
 # report finds the last frame's images.
 file(REMOVE_RECURSE "${OUT}")
-function(glint_expect code)
-  execute_process(COMMAND "${GLINT}" ${ARGN} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  message(STATUS "glint ${ARGN}: exit ${status}\n${out}${err}")
-  if(NOT "${status}" STREQUAL "${code}")
-    message(FATAL_ERROR "glint ${ARGN}: expected exit ${code}, got ${status}")
-  endif()
-endfunction()
+include("${CMAKE_CURRENT_LIST_DIR}/run_glint.cmake")
 function(require_files)
   foreach(file IN LISTS ARGN)
     if(NOT EXISTS "${OUT}/${file}")
@@ -26,7 +20,7 @@ function(require_no_files)
 endfunction()
 
 # Without the Diffuse Color pass and without world.exr: replays, composite off.
-glint_expect(0 --validate run "${SAMPLES}/blender" --map "${MAP}" --out "${OUT}/plain")
+run_glint(0 --validate run "${SAMPLES}/blender" --map "${MAP}" --out "${OUT}/plain")
 require_files(plain/frame_0001/reflections_input.exr plain/frame_0002/reflections_noisy.png)
 require_no_files(plain/frame_0000)
 file(READ "${OUT}/plain/summary.json" json)
@@ -38,16 +32,16 @@ if(NOT folder STREQUAL "frame_0001" OR NOT number EQUAL 2 OR NOT index EQUAL 1)
 endif()
 
 # With the pass and the world panorama: composite runs; --frames 1 is the second frame, 0002.exr.
-glint_expect(0 --validate run "${SAMPLES}/blender_full" --map "${MAP}" --set composite=true --set denoise=true
+run_glint(0 --validate run "${SAMPLES}/blender_full" --map "${MAP}" --set composite=true --set denoise=true
              --frames 1 --out "${OUT}/full")
 require_files(full/frame_0002/reflections_composite.png full/frame_0002/reflections_denoised.exr)
 require_no_files(full/frame_0001)
-glint_expect(0 report "${OUT}/full" --out "${OUT}/report.html")
+run_glint(0 report "${OUT}/full" --out "${OUT}/report.html")
 file(READ "${OUT}/report.html" html)
 if(NOT html MATCHES "Images of the last frame [(]frame_0002[)]" OR NOT html MATCHES "data:image/png;base64,")
   message(FATAL_ERROR "report.html does not show frame_0002's images")
 endif()
 
 # glint's own capture (frame_0000.exr, frame_0001.exr): unchanged names.
-glint_expect(0 run "${SAMPLES}/sample" --out "${OUT}/glint")
+run_glint(0 run "${SAMPLES}/sample" --out "${OUT}/glint")
 require_files(glint/frame_0000/reflections_input.exr glint/frame_0001/reflections_input.exr)

@@ -8,15 +8,7 @@
 # shading, bit for bit. Then: --geometry wins over a manifest scene that cannot be loaded; the
 # capture without a scene and without --geometry is refused in one line naming --geometry.
 file(REMOVE_RECURSE "${OUT}")
-function(run_glint expected)
-  execute_process(COMMAND "${GLINT}" ${ARGN} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  message(STATUS "glint ${ARGN}: exit ${status}\n${out}${err}")
-  if(NOT "${status}" STREQUAL "${expected}")
-    message(FATAL_ERROR "glint ${ARGN}: expected exit ${expected}, got ${status}")
-  endif()
-  set(run_out "${out}" PARENT_SCOPE)
-  set(run_err "${err}" PARENT_SCOPE)
-endfunction()
+include("${CMAKE_CURRENT_LIST_DIR}/run_glint.cmake")
 
 run_glint(0 --validate simulate "${SCENE}" --out "${OUT}/capture")
 execute_process(COMMAND "${EXPORT}" "${SCENE}" "${OUT}/corridor.gltf" RESULT_VARIABLE status)

@@ -4,14 +4,7 @@
 # the hybrid's error against reference.reflection must be at most half of SSSR's on every frame.
 # Then the bundled sample (a capture with no scene) refused in one line with exit 2.
 file(REMOVE_RECURSE "${OUT}")
-function(run_glint expected)
-  execute_process(COMMAND "${GLINT}" ${ARGN} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  message(STATUS "glint ${ARGN}: exit ${status}\n${out}${err}")
-  if(NOT "${status}" STREQUAL "${expected}")
-    message(FATAL_ERROR "glint ${ARGN}: expected exit ${expected}, got ${status}")
-  endif()
-  set(run_err "${err}" PARENT_SCOPE)
-endfunction()
+include("${CMAKE_CURRENT_LIST_DIR}/run_glint.cmake")
 
 run_glint(0 --validate simulate "${SCENES}/mirror_corridor.toml" --size 96x54 --frame-count 3 --spp 8
           --out "${OUT}/capture")
