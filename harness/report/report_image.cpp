@@ -301,9 +301,13 @@ void writeExr(const std::string& path, const Image& image, const std::vector<std
 
 Image readExr(const std::string& path, std::vector<std::string>* channelNames) {
     // readExrHeader refuses missing, non-EXR, multi-part, deep and oversized files, and
-    // windows not at (0,0), before OpenEXR allocates anything from the header's claims.
+    // windows not at (0,0), before OpenEXR allocates anything from the header's claims;
+    // checkPixelData refuses a file too short for the pixel data it declares before the image
+    // is allocated, so what a file makes the reader allocate is bounded by its size.
     capture::ExrSize size;
-    const Imf::Header header = capture::readExrHeader(path, size);
+    capture::ExrLayout layout;
+    const Imf::Header header = capture::readExrHeader(path, size, &layout);
+    capture::checkPixelData(path, header, layout);
 
     std::vector<std::string> names;
     for (auto it = header.channels().begin(); it != header.channels().end(); ++it) {

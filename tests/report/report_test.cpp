@@ -304,6 +304,17 @@ TEST_CASE("EXR errors are one line naming the path", "[report]") {
     const std::string truncatedMessage = messageOf([&] { (void)readExr(truncated); });
     CHECK(truncatedMessage.find(truncated) == 0);
     CHECK(truncatedMessage.find('\n') == std::string::npos);
+    // Incompressible pixels cut to a third: refused by the check of the file's length against the pixel data
+    // its header declares, before the image is allocated (issue 24: memory bounded by the file).
+    const std::string headerOnly = (dir / "header_only.exr").string();
+    std::vector<float> noise(64 * 64 * 4);
+    std::uint32_t state = 1;
+    for (float& value : noise) value = static_cast<float>((state = state * 1664525u + 1013904223u) >> 8);
+    writeExr(headerOnly, makeImage(64, 64, 4, noise), {"R", "G", "B", "A"});
+    std::filesystem::resize_file(headerOnly, std::filesystem::file_size(headerOnly) / 3);
+    const std::string headerOnlyMessage = messageOf([&] { (void)readExr(headerOnly); });
+    INFO(headerOnlyMessage);
+    CHECK(headerOnlyMessage.find(headerOnly + ": file is truncated or incomplete") == 0);
 
     const std::string out = (dir / "out.exr").string();
     const Image rg = makeImage(1, 1, 2, {0.0f, 0.0f});
