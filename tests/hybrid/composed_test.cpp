@@ -139,3 +139,29 @@ TEST_CASE("the composed hybrid effect keeps every output finite through poisoned
     checkPoisoned(33, 17, false); // odd sizes: partial tiles on both edges
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }
+
+TEST_CASE("the composed hybrid composites the denoised reflection", "[hybrid][composed]") {
+    // The denoiser writes its result into sssr_radiance, which the composite reads: its passes
+    // must all run before the composite (they once ran after it, compositing the noisy result).
+    const test::SssrTestView view = test::makeSssrTestView(32, 16, false);
+    HybridDesc desc;
+    desc.sssr = view.desc;
+    desc.sssr.denoise = true;
+    desc.sssr.composite = true;
+    ReflectionsDenoiserDesc denoiser;
+    denoiser.size = view.desc.size;
+    denoiser.projection = view.desc.projection;
+    denoiser.viewFromWorld = view.desc.viewFromWorld;
+    denoiser.previousClipFromWorld = view.desc.projection;
+    EffectPlan plan;
+    std::string error;
+    REQUIRE(planHybridReflections(desc, &denoiser, plan, &error) == Result::Ok);
+    const auto position = [&](const std::string& name) {
+        for (std::size_t i = 0; i < plan.passes.size(); ++i)
+            if (plan.passes[i].name == name) return i;
+        FAIL("no pass " << name);
+        return plan.passes.size();
+    };
+    CHECK(position("resolve") < position("composite"));
+    CHECK(position("composite") == plan.passes.size() - 1);
+}

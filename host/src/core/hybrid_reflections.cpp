@@ -67,8 +67,12 @@ Result planHybridReflections(const HybridDesc& desc, const ReflectionsDenoiserDe
         // The hybrid counters and arguments start with SSSR's layout: the denoiser's tile count
         // is word 3 and its arguments are at byte 12.
         core::renameResource(denoiserPlan.passes, "sssr_indirect_args", "hybrid_indirect_args");
-        if (denoiser)
-            plan.passes.insert(plan.passes.end(), denoiserPlan.passes.begin(), denoiserPlan.passes.end());
+        // Before the composite, which must read the denoised reflection.
+        if (denoiser) {
+            const auto composite = std::find_if(plan.passes.begin(), plan.passes.end(),
+                                                [](const Pass& pass) { return pass.name == "composite"; });
+            plan.passes.insert(composite, denoiserPlan.passes.begin(), denoiserPlan.passes.end());
+        }
         plan.images.insert(plan.images.end(), denoiserPlan.images.begin(), denoiserPlan.images.end());
         plan.buffers.insert(plan.buffers.end(), denoiserPlan.buffers.begin(), denoiserPlan.buffers.end());
     }
