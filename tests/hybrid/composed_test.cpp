@@ -22,6 +22,28 @@ shaders::float3 point(float x, float y, float z) {
     return {x, y, z};
 }
 
+// The hybrid with the denoiser and the composite, and the denoiser's desc, for the view.
+HybridDesc denoisedHybrid(const test::SssrTestView& view) {
+    HybridDesc desc;
+    desc.sssr = view.desc;
+    desc.sssr.denoise = true;
+    desc.sssr.composite = true;
+    return desc;
+}
+
+ReflectionsDenoiserDesc denoiserFor(const test::SssrTestView& view) {
+    ReflectionsDenoiserDesc denoiser;
+    denoiser.size = view.desc.size;
+    denoiser.projection = view.desc.projection;
+    denoiser.viewFromWorld = view.desc.viewFromWorld;
+    denoiser.previousClipFromWorld = view.desc.projection;
+    denoiser.depth = view.desc.depth;
+    denoiser.nearPlane = view.desc.nearPlane;
+    denoiser.farPlane = view.desc.farPlane;
+    denoiser.vulkanNdc = view.desc.vulkanNdc;
+    return denoiser;
+}
+
 // A wall behind the camera and one beside it (what screen space cannot see), lit by a sun.
 test::HybridTestScene litWalls() {
     std::vector<shaders::ScenePrimitive> walls;
@@ -65,19 +87,8 @@ void checkPoisoned(std::uint32_t width, std::uint32_t height, bool bothPaths) {
     const test::HybridTestScene scene = litWalls();
     const gpu::Context& context = test::testContext();
 
-    HybridDesc desc;
-    desc.sssr = view.desc;
-    desc.sssr.denoise = true;
-    desc.sssr.composite = true;
-    ReflectionsDenoiserDesc denoiser;
-    denoiser.size = view.desc.size;
-    denoiser.projection = view.desc.projection;
-    denoiser.viewFromWorld = view.desc.viewFromWorld;
-    denoiser.previousClipFromWorld = view.desc.projection;
-    denoiser.depth = view.desc.depth;
-    denoiser.nearPlane = view.desc.nearPlane;
-    denoiser.farPlane = view.desc.farPlane;
-    denoiser.vulkanNdc = view.desc.vulkanNdc;
+    HybridDesc desc = denoisedHybrid(view);
+    ReflectionsDenoiserDesc denoiser = denoiserFor(view);
     EffectPlan plan;
     std::string error;
     REQUIRE(planHybridReflections(desc, &denoiser, plan, &error) == Result::Ok);
@@ -144,15 +155,8 @@ TEST_CASE("the composed hybrid composites the denoised reflection", "[hybrid][co
     // The denoiser writes its result into sssr_radiance, which the composite reads: its passes
     // must all run before the composite (they once ran after it, compositing the noisy result).
     const test::SssrTestView view = test::makeSssrTestView(32, 16, false);
-    HybridDesc desc;
-    desc.sssr = view.desc;
-    desc.sssr.denoise = true;
-    desc.sssr.composite = true;
-    ReflectionsDenoiserDesc denoiser;
-    denoiser.size = view.desc.size;
-    denoiser.projection = view.desc.projection;
-    denoiser.viewFromWorld = view.desc.viewFromWorld;
-    denoiser.previousClipFromWorld = view.desc.projection;
+    const HybridDesc desc = denoisedHybrid(view);
+    const ReflectionsDenoiserDesc denoiser = denoiserFor(view);
     EffectPlan plan;
     std::string error;
     REQUIRE(planHybridReflections(desc, &denoiser, plan, &error) == Result::Ok);

@@ -268,8 +268,11 @@ Recovery recoveryOf(const std::string& output) {
     // The hybrid: a tile the poison sent to the ray tracer (or to screen space) stays there until
     // its statistics say otherwise or the spawn lottery (spawnRate 0.02 per frame and lottery
     // number) sends it back: not a fixed number of frames, so the classes must have coupled by the
-    // window's end (70+ frames); the denoiser as above from 32 frames after the coupling.
-    if (output == "hybrid/denoised") return {false, 32, kDenoiser, 1e-5, false};
+    // window's end (70+ frames); the denoiser (and the composite of its result) as above from 32
+    // frames after the coupling.
+    // The composite reads the denoised reflection, so it recovers as that does.
+    if (output == "hybrid/denoised" || output == "hybrid/composite")
+        return {false, 32, kDenoiser, 1e-5, false};
     return {false, 0, 1.0, 1e-5, true};
 }
 
@@ -310,7 +313,7 @@ void checkRecovery(const test::HardCase& hard, const std::vector<Burst>& bursts,
                 continue;
             }
             std::uint32_t from = clean + r.bound;
-            if (name == "hybrid/denoised") {
+            if (name == "hybrid/denoised" || name == "hybrid/composite") {
                 const std::vector<double>& noisy = differences.at("hybrid/noisy");
                 std::uint32_t coupled = end;
                 while (coupled > clean && noisy[coupled - 1] == 0.0) --coupled;
