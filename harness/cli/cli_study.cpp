@@ -19,6 +19,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -203,15 +204,10 @@ std::vector<Row> sweep(const gpu::Context& context, const Plan& plan, const std:
 // The hybrid's share of rays that went to the ray tracer (those that missed in screen space
 // first included), "" without its counters.
 std::string rayTracedShare(const Measurement& measurement) {
-    double traced = -1.0, answered = -1.0;
-    for (const replay::Counter& counter : measurement.counters) {
-        if (counter.name == "hybrid/ray_traced_rays") traced = counter.value;
-        if (counter.name == "hybrid/screen_space_answers") answered = counter.value;
-    }
-    if (traced < 0.0 || answered < 0.0) return "";
-    char value[32];
-    std::snprintf(value, sizeof value, "%.6g", traced + answered > 0.0 ? traced / (traced + answered) : 0.0);
-    return value;
+    const std::optional<double> traced = counterNumber(measurement, "hybrid/ray_traced_rays");
+    const std::optional<double> answered = counterNumber(measurement, "hybrid/screen_space_answers");
+    if (!traced || !answered) return "";
+    return formatNumber(*traced + *answered > 0.0 ? *traced / (*traced + *answered) : 0.0);
 }
 
 void writeResults(const Plan& plan, const gpu::Context& context, const std::vector<Row>& rows) {
@@ -320,14 +316,21 @@ std::string passesField(const Measurement& measurement) {
     return joined(passes);
 }
 
-std::string counterValue(const Measurement& measurement, const std::string& name) {
+std::optional<double> counterNumber(const Measurement& measurement, const std::string& name) {
     for (const replay::Counter& counter : measurement.counters)
-        if (counter.name == name) {
-            char value[32];
-            std::snprintf(value, sizeof value, "%.6g", counter.value);
-            return value;
-        }
-    return "";
+        if (counter.name == name) return counter.value;
+    return std::nullopt;
+}
+
+std::string formatNumber(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.6g", value);
+    return text;
+}
+
+std::string counterValue(const Measurement& measurement, const std::string& name) {
+    const std::optional<double> value = counterNumber(measurement, name);
+    return value ? formatNumber(*value) : "";
 }
 
 std::string csvField(const std::string& text) {

@@ -12,6 +12,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -47,6 +48,8 @@ std::vector<std::string> baseSettings(const std::string& effect);
 // "a;b;c": lists inside one CSV field.
 std::string joined(const std::vector<std::string>& items, const char* separator = ";");
 std::string passesField(const Measurement& measurement); // "reflections/classify:12.3;..."
+std::optional<double> counterNumber(const Measurement& measurement, const std::string& name);
+std::string formatNumber(double value);                                            // "%.6g"
 std::string counterValue(const Measurement& measurement, const std::string& name); // "" when absent
 // Quotes a CSV field that holds a comma or a quote.
 std::string csvField(const std::string& text);
