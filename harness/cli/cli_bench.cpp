@@ -9,6 +9,7 @@
 
 #include <gpu/gpu_context.h>
 #include <gpu/gpu_effect_runner.h>
+#include <gpu/gpu_sustained.h>
 #include <gpu/gpu_transfer.h>
 
 #include <algorithm>
@@ -148,12 +149,20 @@ int runBench(const BenchOptions& options) {
         gpu::EffectRunner runner(context, setup.plan);
         vk::ResourceTable table;
         table.images = external;
-        // Warm-up runs settle clocks and pipeline creation before anything is measured.
+        // Warm-up runs settle pipeline creation; the measured runs are sustained
+        // (gpu::timeSustained) so that the clocks follow the load.
         for (uint32_t run = 0; run < std::min(options.runs, 10u); ++run) runner.run(setup.plan, table);
-        for (uint32_t run = 0; run < options.runs; ++run) {
-            gpu::FrameRun frame = runner.run(setup.plan, table);
-            passes = frame.passes;
-            if (!frame.milliseconds.empty()) times.push_back(std::move(frame.milliseconds));
+        passes = gpu::passNames(setup.plan);
+        if (context.device.timestamps) {
+            runner.beginFrames();
+            times = gpu::timeSustained(context, gpu::kSustainedFramesPerBuffer,
+                                       gpu::sustainedSubmissions(options.runs),
+                                       static_cast<uint32_t>(2 * passes.size()),
+                                       [&](VkCommandBuffer cmd, gpu::TimestampPool& timestamps, uint32_t) {
+                                           runner.record(cmd, setup.plan, table, &timestamps);
+                                       })
+                        .frames;
+            times.resize(options.runs);
         }
     }
     const auto median = [&](std::size_t pass) {

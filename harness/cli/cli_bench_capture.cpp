@@ -11,6 +11,8 @@
 #include "scene/scene_file.h"
 #include "scene/scene_simulate.h"
 
+#include <gpu/gpu_sustained.h>
+
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -115,14 +117,19 @@ Measurement measureFrames(const gpu::Context& context, const std::vector<capture
     std::map<std::string, std::vector<double>> times;
     std::vector<double> totals;
     // Every frame once (uploads, histories), then the warm-up and the measured runs repeat the
-    // last frame back to back: uploads between timed frames would let the GPU clock down and
-    // charge the passes for it (docs/performance.md).
+    // last frame, submitted so that the GPU never waits for the host: the clocks follow the
+    // load, and a GPU left idle between frames runs them several times slower
+    // (docs/performance.md).
     for (const capture::Frame& frame : frames) session.run(frame);
     const std::uint32_t all = measurement.warmup + runs;
-    for (std::uint32_t run = 0; run < all; ++run) {
-        const replay::FrameResult result = session.repeat();
-        if (run + 1 == all) measurement.counters = result.counters;
-        if (run < measurement.warmup || result.timings.empty()) continue;
+    const replay::SustainedResult sustained =
+        session.repeatSustained(gpu::kSustainedFramesPerBuffer, gpu::sustainedSubmissions(all));
+    const std::vector<replay::FrameResult>& results = sustained.frames;
+    measurement.wallPerRunUs = 1000.0 * sustained.wallMilliseconds / static_cast<double>(results.size());
+    measurement.counters = results.back().counters;
+    for (std::uint32_t run = measurement.warmup; run < all; ++run) {
+        const replay::FrameResult& result = results[run];
+        if (result.timings.empty()) continue;
         double total = 0.0;
         for (const replay::PassTime& time : result.timings) {
             if (!times.contains(time.pass)) order.push_back(time.pass);
@@ -133,6 +140,7 @@ Measurement measureFrames(const gpu::Context& context, const std::vector<capture
     }
     for (const std::string& pass : order) measurement.passes.push_back(statsOf(pass, times[pass]));
     if (!totals.empty()) measurement.total = statsOf("total", totals);
+    measurement.memory = gpu::deviceMemoryUse(context);
     return measurement;
 }
 
@@ -151,7 +159,10 @@ nlohmann::json measurementJson(const Measurement& measurement) {
                         {"runs", measurement.runs},
                         {"passes", nlohmann::json::array()},
                         {"total", stats(measurement.total)},
+                        {"wallPerRunUs", measurement.wallPerRunUs},
                         {"counters", nlohmann::json::object()}};
+    if (measurement.memory.known)
+        json["deviceMemoryMiB"] = static_cast<double>(measurement.memory.usedBytes) / 1048576.0;
     for (const PassStats& pass : measurement.passes) json["passes"].push_back(stats(pass));
     for (const replay::Counter& counter : measurement.counters)
         json["counters"][counter.name] = counter.value;
@@ -170,6 +181,11 @@ void printMeasurement(std::FILE* out, const Measurement& measurement) {
     const PassStats& total = measurement.total;
     std::fprintf(out, "  %-34s %12.2f %12.2f %12.2f\n", "total (sum of a run's passes)", total.medianUs,
                  total.minUs, total.maxUs);
+    std::fprintf(out, "  %-34s %12.2f\n", "wall time a run (sustained)", measurement.wallPerRunUs);
+    if (measurement.memory.known)
+        std::fprintf(out, "  device-local memory in use: %.1f MiB of a %.1f MiB budget\n",
+                     static_cast<double>(measurement.memory.usedBytes) / 1048576.0,
+                     static_cast<double>(measurement.memory.budgetBytes) / 1048576.0);
 }
 
 bool isSyntheticBenchEffect(const std::string& name) {

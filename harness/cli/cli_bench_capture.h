@@ -28,12 +28,13 @@ struct Measurement {
     PassStats total{"total"};              // statistics of the per-run sums
     std::vector<replay::Counter> counters; // of the last run
     std::uint32_t warmup = 0, runs = 0;
+    double wallPerRunUs = 0.0;   // wall time of the sustained runs over their count
+    gpu::DeviceMemoryUse memory; // held while the runs were measured
 };
 
-// min(runs, 10) warm-up runs, then `runs` measured ones, of a Session created with
-// options.readback = false. Run k replays frames[k % frames.size()]: histories carry on across
-// the wrap-around as across a fast camera move, so every run does the work of a running
-// sequence rather than of a first frame.
+// Every frame once, then min(runs, 10) warm-up runs and `runs` measured ones, of a Session
+// created with options.readback = false: the last frame repeated (Session::repeatSustained),
+// so that every run does the work of a running sequence at the clocks a frame loop keeps.
 Measurement measureFrames(const gpu::Context& context, const std::vector<capture::Frame>& frames,
                           const capture::Environment& environment, replay::SessionOptions options,
                           std::uint32_t runs);

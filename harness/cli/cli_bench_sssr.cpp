@@ -10,6 +10,7 @@
 
 #include <gpu/gpu_effect_runner.h>
 #include <gpu/gpu_input_images.h>
+#include <gpu/gpu_sustained.h>
 #include <gpu/gpu_transfer.h>
 
 #include "glint/common/glint_wire_formats.h"
@@ -87,14 +88,29 @@ int runBenchSssr(const BenchOptions& options, const gpu::Context& context) {
     gpu::EffectRunner runner(context, plan);
     const std::vector<std::string> passes = gpu::passNames(plan);
     std::vector<std::vector<double>> times(passes.size());
-    for (std::uint32_t run = 0; run < std::min(options.runs, 10u) + options.runs; ++run) {
+    const std::uint32_t warmup = std::min(options.runs, 10u);
+    for (std::uint32_t run = 0; run < warmup; ++run) {
         info.frameIndex = run;
         info.resetHistory = run == 0;
         if (effect.plan(info, settings, plan, &error) != Result::Ok) throw std::invalid_argument(error);
-        const gpu::FrameRun timing = runner.run(plan, table);
-        if (run < std::min(options.runs, 10u)) continue; // warm-up
-        for (std::size_t pass = 0; pass < std::min(timing.milliseconds.size(), passes.size()); ++pass)
-            times[pass].push_back(timing.milliseconds[pass]);
+        runner.run(plan, table);
+    }
+    if (context.device.timestamps) {
+        // Sustained, so that the clocks follow the load (gpu::timeSustained).
+        runner.beginFrames();
+        info.resetHistory = false;
+        const gpu::SustainedTimes sustained = gpu::timeSustained(
+            context, gpu::kSustainedFramesPerBuffer, gpu::sustainedSubmissions(options.runs),
+            static_cast<std::uint32_t>(2 * passes.size()),
+            [&](VkCommandBuffer cmd, gpu::TimestampPool& timestamps, std::uint32_t index) {
+                info.frameIndex = warmup + index;
+                if (effect.plan(info, settings, plan, &error) != Result::Ok)
+                    throw std::invalid_argument(error);
+                runner.record(cmd, plan, table, &timestamps);
+            });
+        for (std::size_t run = 0; run < std::min<std::size_t>(sustained.frames.size(), options.runs); ++run)
+            for (std::size_t pass = 0; pass < passes.size(); ++pass)
+                times[pass].push_back(sustained.frames[run][pass]);
     }
     const std::vector<std::uint32_t> counters = runner.readWords("sssr_counters", 4);
     const double pixels = static_cast<double>(options.width) * options.height;

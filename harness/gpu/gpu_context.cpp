@@ -251,6 +251,9 @@ void createDevice(Context& context, VkPhysicalDevice physical) {
     if (float16Extension) extensions.push_back(VK_KHR_SHADER_FLOAT16_INT8_EXTENSION_NAME);
     // The spec requires enabling it wherever it is offered (MoltenVK and similar layers).
     if (contains(available, "VK_KHR_portability_subset")) extensions.push_back("VK_KHR_portability_subset");
+    // Lets benchmarks report how much device memory the process holds (deviceMemoryUse).
+    const bool memoryBudget = contains(available, VK_EXT_MEMORY_BUDGET_EXTENSION_NAME);
+    if (memoryBudget) extensions.push_back(VK_EXT_MEMORY_BUDGET_EXTENSION_NAME);
     const bool executableExtension =
         pipelineStatisticsRequested() &&
         contains(available, VK_KHR_PIPELINE_EXECUTABLE_PROPERTIES_EXTENSION_NAME);
@@ -288,6 +291,7 @@ void createDevice(Context& context, VkPhysicalDevice physical) {
     device.timestampValidBits = context.info.timestampValidBits;
     device.timestamps = device.timestampValidBits > 0;
     device.pipelineStatistics = pipelineStatistics;
+    context.memoryBudget = memoryBudget;
 
     // What DeviceInfo reports must be what the device has enabled.
     context.info.float16 = vulkan12 ? enabled.v12.shaderFloat16 : enabled.float16.shaderFloat16;
@@ -297,6 +301,24 @@ void createDevice(Context& context, VkPhysicalDevice physical) {
 }
 
 } // namespace
+
+DeviceMemoryUse deviceMemoryUse(const Context& context) {
+    DeviceMemoryUse use;
+    if (!context.memoryBudget) return use;
+    VkPhysicalDeviceMemoryBudgetPropertiesEXT budget{
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MEMORY_BUDGET_PROPERTIES_EXT};
+    VkPhysicalDeviceMemoryProperties2 properties{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MEMORY_PROPERTIES_2};
+    properties.pNext = &budget;
+    vkGetPhysicalDeviceMemoryProperties2(context.device.physical, &properties);
+    for (uint32_t heap = 0; heap < properties.memoryProperties.memoryHeapCount; ++heap) {
+        if ((properties.memoryProperties.memoryHeaps[heap].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT) == 0)
+            continue;
+        use.usedBytes += budget.heapUsage[heap];
+        use.budgetBytes += budget.heapBudget[heap];
+    }
+    use.known = true;
+    return use;
+}
 
 std::string deviceSelectorFromEnvironment() {
     const char* value = std::getenv("GLINT_DEVICE");
@@ -378,6 +400,56 @@ void submitAndWait(const Context& context, const std::function<void(VkCommandBuf
     }
     vkDestroyFence(device, fence, nullptr);
     vkFreeCommandBuffers(device, context.commandPool, 1, &commandBuffer);
+}
+
+RecordedCommands recordCommands(const Context& context, const std::function<void(VkCommandBuffer)>& record) {
+    VkDevice device = context.device.device;
+    RecordedCommands recorded;
+    VkCommandBufferAllocateInfo allocateInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    allocateInfo.commandPool = context.commandPool;
+    allocateInfo.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    allocateInfo.commandBufferCount = 1;
+    GLINT_VK_CHECK(vkAllocateCommandBuffers(device, &allocateInfo, &recorded.commands));
+    try {
+        VkCommandBufferBeginInfo beginInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+        GLINT_VK_CHECK(vkBeginCommandBuffer(recorded.commands, &beginInfo));
+        record(recorded.commands);
+        GLINT_VK_CHECK(vkEndCommandBuffer(recorded.commands));
+        VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+        GLINT_VK_CHECK(vkCreateFence(device, &fenceInfo, nullptr, &recorded.fence));
+    } catch (...) {
+        destroyRecorded(context, recorded);
+        throw;
+    }
+    return recorded;
+}
+
+void submitRecorded(const Context& context, RecordedCommands& recorded) {
+    if (recorded.pending)
+        throw std::logic_error("glint::gpu::submitRecorded: the last submission is pending");
+    GLINT_VK_CHECK(vkResetFences(context.device.device, 1, &recorded.fence));
+    VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+    submit.commandBufferCount = 1;
+    submit.pCommandBuffers = &recorded.commands;
+    GLINT_VK_CHECK(vkQueueSubmit(context.device.queue, 1, &submit, recorded.fence));
+    recorded.pending = true;
+}
+
+void waitRecorded(const Context& context, RecordedCommands& recorded) {
+    if (!recorded.pending) return;
+    GLINT_VK_CHECK(vkWaitForFences(context.device.device, 1, &recorded.fence, VK_TRUE, kFenceTimeoutNs));
+    recorded.pending = false;
+}
+
+void destroyRecorded(const Context& context, RecordedCommands& recorded) {
+    VkDevice device = context.device.device;
+    // After a failed wait the buffer may still be executing; idling keeps the frees valid.
+    if (recorded.pending &&
+        vkWaitForFences(device, 1, &recorded.fence, VK_TRUE, kFenceTimeoutNs) != VK_SUCCESS)
+        (void)vkDeviceWaitIdle(device);
+    if (recorded.fence) vkDestroyFence(device, recorded.fence, nullptr);
+    if (recorded.commands) vkFreeCommandBuffers(device, context.commandPool, 1, &recorded.commands);
+    recorded = RecordedCommands{};
 }
 
 } // namespace glint::gpu

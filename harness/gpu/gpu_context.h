@@ -37,7 +37,17 @@ struct Context {
     VkCommandPool commandPool = VK_NULL_HANDLE; // for submitAndWait; resettable buffers
     // Non-null when validation is on. Heap-allocated because the messenger holds its address.
     std::unique_ptr<ValidationStats> validation;
+    bool memoryBudget = false; // VK_EXT_memory_budget is enabled
 };
+
+// Device-local memory the process holds and may hold, summed over the device-local heaps
+// (VK_EXT_memory_budget); `known` is false where the device lacks the extension.
+struct DeviceMemoryUse {
+    bool known = false;
+    uint64_t usedBytes = 0;
+    uint64_t budgetBytes = 0;
+};
+DeviceMemoryUse deviceMemoryUse(const Context& context);
 
 // Throws glint::vk::VulkanError or std::runtime_error with a one-line message on failure,
 // having destroyed whatever it had created.
@@ -49,5 +59,19 @@ void destroyContext(Context& context);
 // Records one command buffer with `record`, submits it to the context's queue and waits for
 // it to finish. Not thread-safe: the harness drives the queue from one thread.
 void submitAndWait(const Context& context, const std::function<void(VkCommandBuffer)>& record);
+
+// A command buffer recorded once and submitted any number of times (sustained benchmarks),
+// with the fence of its latest submission.
+struct RecordedCommands {
+    VkCommandBuffer commands = VK_NULL_HANDLE;
+    VkFence fence = VK_NULL_HANDLE;
+    bool pending = false; // submitted and not yet waited for
+};
+RecordedCommands recordCommands(const Context& context, const std::function<void(VkCommandBuffer)>& record);
+// Submits without waiting; the previous submission must have been waited for.
+void submitRecorded(const Context& context, RecordedCommands& recorded);
+void waitRecorded(const Context& context, RecordedCommands& recorded);
+// Waits for a pending submission first.
+void destroyRecorded(const Context& context, RecordedCommands& recorded);
 
 } // namespace glint::gpu

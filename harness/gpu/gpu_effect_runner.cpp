@@ -122,61 +122,80 @@ void EffectRunner::initialize() {
     submitAndWait(context_, [&](VkCommandBuffer cmd) { vk::initializeEffect(effect_, cmd); });
 }
 
-FrameRun EffectRunner::run(const EffectPlan& plan, const vk::ResourceTable& inputs, bool snapshots,
-                           const vk::PassHooks* extraHooks) {
+void EffectRunner::beginFrames() {
+    vk::resetExecutor(executor_);
+}
+
+void EffectRunner::record(VkCommandBuffer cmd, const EffectPlan& plan, const vk::ResourceTable& inputs,
+                          TimestampPool* timestamps, const vk::PassHooks* extraHooks) {
     // Copies to take after their pass: (pass index, source, target).
     std::vector<std::tuple<std::size_t, const vk::Image*, const vk::Image*>> copies;
-    if (snapshots)
-        for (const OutputDesc& output : plan.outputs) {
-            if (!needsSnapshot(plan, output) || !effect_.images.contains(output.resource)) continue;
-            const vk::Image& source = effect_.images.at(output.resource);
-            vk::Image& target = snapshots_[output.name];
-            if (target.image == VK_NULL_HANDLE || target.format != source.format ||
-                target.width != source.width) {
-                vk::destroyImage(context_.device, target);
-                target = vk::createImage2D(context_.device, source.width, source.height, source.format);
-                clearImage(context_, target, VkClearColorValue{});
-            }
-            copies.emplace_back(passIndex(plan, output.pass), &source, &target);
+    for (const auto& [name, target] : snapshotTargets_)
+        for (const OutputDesc& output : plan.outputs)
+            if (output.name == name)
+                copies.emplace_back(passIndex(plan, output.pass), &image(output.resource), target);
+    vk::PassHooks hooks;
+    // Top of pipe before and bottom of pipe after: the dispatch's own duration, with the
+    // barriers before it and the copies after it outside the interval.
+    hooks.beforeDispatch = [&](VkCommandBuffer commands, std::size_t index) {
+        if (extraHooks && extraHooks->beforeDispatch) extraHooks->beforeDispatch(commands, index);
+        if (timestamps) writeTimestamp(commands, *timestamps, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
+    };
+    hooks.afterDispatch = [&](VkCommandBuffer commands, std::size_t index) {
+        if (timestamps) writeTimestamp(commands, *timestamps, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT);
+        for (const auto& [pass, source, target] : copies)
+            if (pass == index) recordCopy(commands, *source, *target);
+        if (extraHooks && extraHooks->afterDispatch) extraHooks->afterDispatch(commands, index);
+    };
+    std::string error;
+    if (vk::dispatchEffect(effect_, executor_, cmd, plan, inputs, hooks, &error) != Result::Ok)
+        throw std::runtime_error(error);
+}
+
+void EffectRunner::prepareSnapshots(const EffectPlan& plan, bool snapshots) {
+    snapshotTargets_.clear();
+    if (!snapshots) return;
+    for (const OutputDesc& output : plan.outputs) {
+        if (!needsSnapshot(plan, output) || !effect_.images.contains(output.resource)) continue;
+        const vk::Image& source = effect_.images.at(output.resource);
+        vk::Image& target = snapshots_[output.name];
+        if (target.image == VK_NULL_HANDLE || target.format != source.format ||
+            target.width != source.width) {
+            vk::destroyImage(context_.device, target);
+            target = vk::createImage2D(context_.device, source.width, source.height, source.format);
+            clearImage(context_, target, VkClearColorValue{});
         }
+        snapshotTargets_.emplace_back(output.name, &target);
+    }
+}
+
+FrameRun EffectRunner::run(const EffectPlan& plan, const vk::ResourceTable& inputs, bool snapshots,
+                           const vk::PassHooks* extraHooks) {
+    prepareSnapshots(plan, snapshots);
     FrameRun result;
     result.passes = passNames(plan);
     const bool timed = context_.device.timestamps;
     TimestampPool pool;
     if (timed)
         pool = createTimestampPool(context_.device, static_cast<std::uint32_t>(2 * plan.passes.size()));
-    vk::PassHooks hooks;
-    // Top of pipe before and bottom of pipe after: the dispatch's own duration, with the
-    // barriers before it and the copies after it outside the interval.
-    hooks.beforeDispatch = [&](VkCommandBuffer cmd, std::size_t index) {
-        if (extraHooks && extraHooks->beforeDispatch) extraHooks->beforeDispatch(cmd, index);
-        if (timed) writeTimestamp(cmd, pool, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT);
-    };
-    hooks.afterDispatch = [&](VkCommandBuffer cmd, std::size_t index) {
-        if (timed) writeTimestamp(cmd, pool, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT);
-        for (const auto& [pass, source, target] : copies)
-            if (pass == index) recordCopy(cmd, *source, *target);
-        if (extraHooks && extraHooks->afterDispatch) extraHooks->afterDispatch(cmd, index);
-    };
-    vk::resetExecutor(executor_);
-    std::string error;
-    Result status = Result::Ok;
+    beginFrames();
     try {
         submitAndWait(context_, [&](VkCommandBuffer cmd) {
             if (timed) resetTimestamps(cmd, pool);
-            status = vk::dispatchEffect(effect_, executor_, cmd, plan, inputs, hooks, &error);
+            record(cmd, plan, inputs, timed ? &pool : nullptr, extraHooks);
         });
-        if (timed && status == Result::Ok) {
+        if (timed) {
             const std::vector<std::uint64_t> ticks = readTimestamps(context_.device, pool);
             for (std::size_t i = 0; i + 1 < ticks.size(); i += 2)
                 result.milliseconds.push_back(timestampMilliseconds(pool, ticks[i], ticks[i + 1]));
         }
     } catch (...) {
+        snapshotTargets_.clear();
         if (timed) destroyTimestampPool(context_.device, pool);
         throw;
     }
+    snapshotTargets_.clear();
     if (timed) destroyTimestampPool(context_.device, pool);
-    if (status != Result::Ok) throw std::runtime_error(error);
     return result;
 }
 

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <gpu/gpu_context.h>
+#include <gpu/gpu_timestamps.h>
 
 #include "glint/glint_pass.h"
 #include "glint/vulkan/vk_effect.h"
@@ -53,6 +54,15 @@ class EffectRunner {
     FrameRun run(const EffectPlan& plan, const vk::ResourceTable& inputs, bool snapshots = false,
                  const vk::PassHooks* extraHooks = nullptr);
 
+    // Frames recorded by the caller into its own command buffers (sustained benchmarks, which
+    // submit several frames at once): beginFrames releases the descriptor sets and constants
+    // of earlier frames, none of which may still be pending; then each record() adds one
+    // frame, with a timestamp pair around every dispatch in `timestamps` (when not null).
+    // Throws std::runtime_error with the backend's message.
+    void beginFrames();
+    void record(VkCommandBuffer cmd, const EffectPlan& plan, const vk::ResourceTable& inputs,
+                TimestampPool* timestamps, const vk::PassHooks* extraHooks = nullptr);
+
     // The plan's outputs after the last run (intermediates only with `intermediates`).
     std::vector<DecodedOutput> readOutputs(const EffectPlan& plan, bool intermediates) const;
     // The plan's counters: (name, value) pairs, fractions included.
@@ -66,10 +76,12 @@ class EffectRunner {
 
   private:
     const vk::Image& outputImage(const OutputDesc& output) const;
+    void prepareSnapshots(const EffectPlan& plan, bool snapshots);
     const Context& context_;
     vk::EffectInstance effect_;
     vk::Executor executor_;
-    std::map<std::string, vk::Image> snapshots_; // by output name
+    std::map<std::string, vk::Image> snapshots_;                            // by output name
+    std::vector<std::pair<std::string, const vk::Image*>> snapshotTargets_; // of the run being recorded
     Extent2D size_;
 };
 

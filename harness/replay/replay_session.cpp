@@ -3,6 +3,7 @@
 #include "replay/replay_frame.h"
 
 #include <gpu/gpu_effect_runner.h>
+#include <gpu/gpu_sustained.h>
 #include <gpu/gpu_transfer.h>
 #include <scene/scene_buffers.h>
 #include <scene/scene_file.h>
@@ -177,13 +178,24 @@ void Session::uploadInputs(const capture::Frame& frame, bool reset) {
             }
 }
 
-void Session::dispatch(Running& effect, const FrameInfo& info, FrameResult& result) {
-    effect.plan = planOrThrow(*effect.descriptor, info, options_.settings);
+namespace {
+
+// The application's images (and the scene, for effects that ray trace) by the effect's names.
+vk::ResourceTable inputsOf(const Session::Running& effect, const gpu::InputImages& images,
+                           const scene::SceneBuffers* scene) {
     vk::ResourceTable inputs;
     for (const InputDesc& input : effect.descriptor->inputs) {
-        if (input.kind == InputKind::SceneGeometry && scene_) scene_->addTo(inputs);
-        if (const vk::Image* image = inputs_->find(input.kind)) inputs.images[input.resource] = image;
+        if (input.kind == InputKind::SceneGeometry && scene) scene->addTo(inputs);
+        if (const vk::Image* image = images.find(input.kind)) inputs.images[input.resource] = image;
     }
+    return inputs;
+}
+
+} // namespace
+
+void Session::dispatch(Running& effect, const FrameInfo& info, FrameResult& result) {
+    effect.plan = planOrThrow(*effect.descriptor, info, options_.settings);
+    const vk::ResourceTable inputs = inputsOf(effect, *inputs_, scene_.get());
     const std::string& name = effect.descriptor->name;
     const gpu::FrameRun run = effect.runner->run(effect.plan, inputs, options_.readback);
     for (std::size_t i = 0; i < std::min(run.passes.size(), run.milliseconds.size()); ++i)
@@ -195,13 +207,55 @@ void Session::dispatch(Running& effect, const FrameInfo& info, FrameResult& resu
 FrameResult Session::repeat() {
     if (frame_ == 0) throw std::logic_error("replay: repeat() needs a frame run first");
     FrameResult result;
+    const FrameInfo info = nextRepeat();
+    for (const auto& running : running_) dispatch(*running, info, result);
+    return result;
+}
+
+FrameInfo Session::nextRepeat() {
     FrameInfo info = last_;
     info.frameIndex = frame_;
     info.resetHistory = false;
     holdCamera(info);
-    for (const auto& running : running_) dispatch(*running, info, result);
     last_ = info;
     ++frame_;
+    return info;
+}
+
+SustainedResult Session::repeatSustained(std::uint32_t framesPerBuffer, std::uint32_t submissions) {
+    if (frame_ == 0) throw std::logic_error("replay: repeatSustained() needs a frame run first");
+    SustainedResult result;
+    std::vector<FrameResult>& results = result.frames;
+    if (!context_.device.timestamps) {
+        for (std::uint32_t run = 0; run < framesPerBuffer * submissions; ++run) results.push_back(repeat());
+        return result;
+    }
+    // Pass names of one frame, effect by effect, in recording order; the plans of the last run
+    // say how many there are.
+    std::vector<std::string> names;
+    for (const auto& running : running_)
+        for (const std::string& pass : gpu::passNames(running->plan))
+            names.push_back(running->descriptor->name + "/" + pass);
+    for (const auto& running : running_) running->runner->beginFrames();
+    const auto recordFrame = [&](VkCommandBuffer cmd, gpu::TimestampPool& timestamps, std::uint32_t) {
+        const FrameInfo info = nextRepeat();
+        for (const auto& running : running_) {
+            running->plan = planOrThrow(*running->descriptor, info, options_.settings);
+            running->runner->record(cmd, running->plan, inputsOf(*running, *inputs_, scene_.get()),
+                                    &timestamps);
+        }
+    };
+    const gpu::SustainedTimes times = gpu::timeSustained(
+        context_, framesPerBuffer, submissions, static_cast<std::uint32_t>(2 * names.size()), recordFrame);
+    result.wallMilliseconds = times.wallMilliseconds;
+    for (const std::vector<double>& frame : times.frames) {
+        FrameResult& measured = results.emplace_back();
+        for (std::size_t pass = 0; pass < names.size(); ++pass)
+            measured.timings.push_back({names[pass], frame[pass]});
+    }
+    for (const auto& running : running_)
+        for (const auto& [counter, value] : running->runner->readCounters(running->plan))
+            results.back().counters.push_back({running->descriptor->name + "/" + counter, value});
     return result;
 }
 

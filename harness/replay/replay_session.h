@@ -79,6 +79,11 @@ struct FrameResult {
     const NamedImage* find(const std::string& name) const;
 };
 
+struct SustainedResult {
+    std::vector<FrameResult> frames; // timings of every measured frame; counters with the last
+    double wallMilliseconds = 0.0;   // of the measured frames, host clock
+};
+
 struct SessionOptions {
     std::vector<std::string> effects; // empty: the first frame's declared effects
     SettingValues settings = defaultSettings(effectRegistry());
@@ -109,12 +114,19 @@ class Session {
     // GPU work for benchmarks (uploads between timed frames let the GPU clock down). Timings
     // and counters only; the camera is treated as static.
     FrameResult repeat();
+    // Sustained repeats, as a frame loop keeps the GPU busy (gpu::timeSustained, its warm-up
+    // included): `framesPerBuffer` repeats recorded into each of two command buffers, then
+    // `submissions` measured submissions (at least 2). Without timestamps, that many plain
+    // repeats. The two buffers hold 2 * framesPerBuffer
+    // consecutive frame indices, replayed as a cycle (the ping-pong parity alternates across it).
+    SustainedResult repeatSustained(std::uint32_t framesPerBuffer, std::uint32_t submissions);
     const std::vector<std::string>& effects() const { return effects_; }
 
     struct Running;
 
   private:
     void dispatch(Running& effect, const FrameInfo& info, FrameResult& result);
+    FrameInfo nextRepeat(); // the last frame again, as the next frame index
     void uploadInputs(const capture::Frame& frame, bool reset);
 
     const gpu::Context& context_;

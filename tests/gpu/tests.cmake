@@ -20,6 +20,7 @@ glint_add_test_suite(NAME gpu LABELS gpu
     gpu/buffer_transfer_test.cpp
     gpu/context_test.cpp
     gpu/image_transfer_test.cpp
+    gpu/sustained_test.cpp
     gpu/timestamps_test.cpp
     gpu/validation_test.cpp
   LIBS glint_gpu_test_support)
