@@ -79,8 +79,11 @@ report::Section runSection(const std::filesystem::path& dir, const nlohmann::jso
             {"effect", "error, first frame", "error, last frame", "its noisy input, last frame"}, {}};
         for (const auto& [effect, values] : summary.at("error").items()) {
             const double noisy = values.value("noisyLast", -1.0);
-            errors.rows.push_back({effect, fixed(values.at("first").get<double>(), 4),
-                                   fixed(values.at("last").get<double>(), 4),
+            // null: that frame's error mask held no pixel (glint run wrote nothing to score).
+            const auto scored = [](const nlohmann::json& value) {
+                return value.is_number() ? fixed(value.get<double>(), 4) : std::string("not scored");
+            };
+            errors.rows.push_back({effect, scored(values.at("first")), scored(values.at("last")),
                                    noisy >= 0.0 ? fixed(noisy, 4) : "-"});
         }
         section.tables.push_back(std::move(errors));

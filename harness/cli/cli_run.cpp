@@ -12,9 +12,11 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <exception>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <unistd.h>
 
@@ -66,8 +68,9 @@ int runRun(const ReplayOptions& options) {
         summary["frames"] = nlohmann::json::array();
         std::vector<std::string> passOrder;
         std::map<std::string, std::vector<double>> passTimes;
-        std::map<std::string, std::vector<double>> errors; // effect -> mean error per frame
-        std::map<std::string, double> noisyErrors;         // effect -> its noisy input's, last frame
+        // effect -> mean error per frame; NaN where the frame's mask held no pixel (nothing scored)
+        std::map<std::string, std::vector<double>> errors;
+        std::map<std::string, double> noisyErrors; // effect -> its noisy input's, last frame
         std::size_t nonFiniteFrames = 0;
 
         const std::size_t total = range.last - range.first + 1;
@@ -103,7 +106,8 @@ int runRun(const ReplayOptions& options) {
             for (const replay::ReferenceError& error :
                  replay::referenceErrors(frame, result, sessionOptions.settings.real("roughnessThreshold"))) {
                 writeImageFiles(dir, error.effect + "_error", error.effect + "/error", error.map, true);
-                errors[error.effect].push_back(error.mean);
+                errors[error.effect].push_back(error.pixels > 0 ? error.mean
+                                                                : std::numeric_limits<double>::quiet_NaN());
                 noisyErrors[error.effect] = error.noisyMean;
                 record["errors"][error.effect] = {
                     {"image", error.image}, {"pixels", error.pixels},     {"mean", error.mean},
@@ -138,14 +142,26 @@ int runRun(const ReplayOptions& options) {
             std::printf("(no timestamps on this queue)\n");
         else
             std::printf("%-28s %12.2f\n", "all passes (sum of medians)", 1000.0 * sum);
+        // A frame whose mask held no pixel scored nothing: said so, and null in summary.json,
+        // rather than an error of 0 that reads as a perfect result.
+        const auto scored = [](double value) {
+            char text[32];
+            std::snprintf(text, sizeof text, "%.4f", value);
+            return std::isnan(value) ? std::string("not scored") : std::string(text);
+        };
+        const auto scoredJson = [](double value) {
+            return std::isnan(value) ? nlohmann::json(nullptr) : nlohmann::json(value);
+        };
         for (const auto& [effect, values] : errors) {
-            const double noisy = noisyErrors[effect];
-            std::printf("error of %s against the reference: first frame %.4f, last frame %.4f",
-                        effect.c_str(), values.front(), values.back());
+            const double noisy = std::isnan(values.back()) ? -1.0 : noisyErrors[effect];
+            std::printf("error of %s against the reference: first frame %s, last frame %s", effect.c_str(),
+                        scored(values.front()).c_str(), scored(values.back()).c_str());
             if (noisy >= 0.0) std::printf(" (its noisy input %.4f)", noisy);
+            if (std::isnan(values.back())) std::printf(" (no pixel of the last frame is in its error mask)");
             std::printf("\n");
-            summary["error"][effect] = {
-                {"first", values.front()}, {"last", values.back()}, {"noisyLast", noisy}};
+            summary["error"][effect] = {{"first", scoredJson(values.front())},
+                                        {"last", scoredJson(values.back())},
+                                        {"noisyLast", noisy}};
         }
         if (nonFiniteFrames > 0) std::printf("non-finite output pixels in %zu frame(s)\n", nonFiniteFrames);
         std::filesystem::create_directories(out);

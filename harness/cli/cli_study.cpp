@@ -59,7 +59,7 @@ std::vector<Point> pointsFor(const std::string& effect, bool quick) {
                 {"half_res", {"halfResolution=true"}},
                 {"bias_0.3", {"importanceSampleBias=0.3"}},
                 {"bias_0.6", {"importanceSampleBias=0.6"}},
-                {"half_storage", {"halfPrecisionStorage=true"}}};
+                {"full_storage", {"halfPrecisionStorage=false"}}};
     }
     if (effect == "hybrid") {
         // The three paths an engine with ray tracing chooses between, then the hybrid's own

@@ -43,7 +43,7 @@ glint_cli_test(NAME "report without summary.json names the file" LABELS unit EXI
   COMMAND report "${GLINT_CLI_SAMPLE_DIR}" --out "${PROJECT_BINARY_DIR}/test-output/cli/report_bad.html")
 
 # Simulated scenes with references through run (bounds in replay_e2e.cmake), then dump/check.
-foreach(case IN ITEMS reflections shadows roundtrip)
+foreach(case IN ITEMS reflections shadows roundtrip unscored)
   add_test(NAME "cli: replay end to end: ${case}"
     COMMAND "${CMAKE_COMMAND}" "-DGLINT=$<TARGET_FILE:glint>" "-DCASE=${case}"
             "-DSCENES=${PROJECT_SOURCE_DIR}/harness/scenes" "-DOUT=${PROJECT_BINARY_DIR}/test-output/cli/replay_${case}"

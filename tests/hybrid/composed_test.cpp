@@ -33,6 +33,7 @@ HybridDesc denoisedHybrid(const test::SssrTestView& view) {
 
 ReflectionsDenoiserDesc denoiserFor(const test::SssrTestView& view) {
     ReflectionsDenoiserDesc denoiser;
+    denoiser.halfPrecisionStorage = view.desc.halfPrecisionStorage;
     denoiser.size = view.desc.size;
     denoiser.projection = view.desc.projection;
     denoiser.viewFromWorld = view.desc.viewFromWorld;

@@ -150,6 +150,7 @@ TEST_CASE("the ratio-estimator path: reconstruct instead of prefilter, cleanup a
 TEST_CASE("SSSR stores its rays only when asked, in a permutation of the intersection",
           "[reflections_denoiser]") {
     SssrDesc desc;
+    desc.halfPrecisionStorage = false; // 32-bit first, then the 16-bit permutation
     desc.size = {64, 32};
     EffectPlan plan;
     REQUIRE(planSssr(desc, plan, nullptr) == Result::Ok);

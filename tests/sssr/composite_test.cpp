@@ -66,6 +66,7 @@ TEST_CASE("the composite applies the reflection with split-sum specular per pixe
     gpu::SssrRunner runner(test::testContext(), view.desc);
     runner.upload(view.inputs);
     ReflectionsDenoiserDesc denoiser;
+    denoiser.halfPrecisionStorage = view.desc.halfPrecisionStorage;
     denoiser.size = view.desc.size;
     denoiser.projection = view.desc.projection;
     denoiser.viewFromWorld = view.desc.viewFromWorld;

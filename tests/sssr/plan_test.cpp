@@ -13,6 +13,7 @@ namespace {
 
 SssrDesc validDesc() {
     SssrDesc desc;
+    desc.halfPrecisionStorage = false; // the permutations named below are the 32-bit ones
     desc.size = {1920, 1080};
     desc.projection = {1.0, 0, 0, 0, 0, 1.7, 0, 0, 0, 0, -1.0001, -0.10001, 0, 0, -1, 0};
     return desc;

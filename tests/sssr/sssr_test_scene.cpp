@@ -50,6 +50,7 @@ double sssrDeviceDepth(double z, double n, double f, bool reversed) {
 SssrTestView makeSssrTestView(std::uint32_t width, std::uint32_t height, bool reversed) {
     SssrTestView view;
     SssrDesc& desc = view.desc;
+    desc.halfPrecisionStorage = false; // the CPU references' 32-bit permutation
     desc.size = {width, height};
     desc.depth = reversed ? DepthConvention::Reversed : DepthConvention::Standard;
     desc.nearPlane = 0.1f;

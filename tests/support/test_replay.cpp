@@ -23,6 +23,7 @@ void sssrFromFrame(const capture::Frame& frame, const capture::Environment& envi
     inputs.environmentHeight = environment.height;
 
     const FrameInfo info = frameInfo(frame, environment, 0, false);
+    desc.halfPrecisionStorage = false; // the CPU references' 32-bit permutation
     desc.size = info.size;
     desc.projection = info.projection;
     desc.viewFromWorld = info.viewFromWorld;

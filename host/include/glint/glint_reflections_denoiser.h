@@ -47,9 +47,9 @@ struct ReflectionsDenoiserDesc {
     float mirrorThreshold = 1e-4f;   // alpha: no spatial filter below
     float historyClipScale = 0.7f;   // scale of the resolve's clip box (FidelityFX's "temporal stability")
     std::uint32_t maxHistoryLength = 32;
-    bool halfPrecisionStorage = false; // 16-bit radiance, variance and length; must match SSSR's
-    bool resetHistory = false;         // first frame, camera cut or resize: every history is ignored
-    std::uint32_t frameIndex = 0;      // histories ping-pong on its parity
+    bool halfPrecisionStorage = true; // 16-bit radiance, variance and length; must match SSSR's
+    bool resetHistory = false;        // first frame, camera cut or resize: every history is ignored
+    std::uint32_t frameIndex = 0;     // histories ping-pong on its parity
     SpatialPath spatialPath = SpatialPath::Prefilter;
     // RatioEstimator only: the reconstruction's disk radius at perceptual roughness >= 0.2, in
     // pixels (1..8; smoother roughness scales it by 5 r), and the cleanup's spatial sigma in

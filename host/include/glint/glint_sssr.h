@@ -59,8 +59,9 @@ struct SssrDesc {
     bool previousFrameColor = false;   // "color" is last frame's final colour, fetched through motion
     bool debugOutput = false;          // writes "sssr_ray_info": (hit x, hit y, class, iterations)
     bool storeRays = false; // writes "sssr_rays": direction and pdf (the denoiser's ratio-estimator path)
-    bool halfPrecisionStorage =
-        false; // roughness, radiance, confidence in 16-bit float (radiance clamped to 65504)
+    // Roughness, radiance and confidence stored in 16-bit float (radiance clamped to 65504),
+    // arithmetic in 32 bits; false stores them in 32 bits (the CPU references' permutation).
+    bool halfPrecisionStorage = true;
 
     // Environment (the application's prefiltered map behind GLINT_SSSR_SampleEnvironment).
     float iblFactor = 1.0f;
