@@ -126,8 +126,9 @@ void EffectRunner::beginFrames() {
     vk::resetExecutor(executor_);
 }
 
-void EffectRunner::record(VkCommandBuffer cmd, const EffectPlan& plan, const vk::ResourceTable& inputs,
-                          TimestampPool* timestamps, const vk::PassHooks* extraHooks) {
+std::string EffectRunner::recordFrame(VkCommandBuffer cmd, const EffectPlan& plan,
+                                      const vk::ResourceTable& inputs, TimestampPool* timestamps,
+                                      const vk::PassHooks* extraHooks) {
     // Copies to take after their pass: (pass index, source, target).
     std::vector<std::tuple<std::size_t, const vk::Image*, const vk::Image*>> copies;
     for (const auto& [name, target] : snapshotTargets_)
@@ -149,6 +150,13 @@ void EffectRunner::record(VkCommandBuffer cmd, const EffectPlan& plan, const vk:
     };
     std::string error;
     if (vk::dispatchEffect(effect_, executor_, cmd, plan, inputs, hooks, &error) != Result::Ok)
+        return error.empty() ? plan.effect + ": the frame could not be recorded" : error;
+    return {};
+}
+
+void EffectRunner::record(VkCommandBuffer cmd, const EffectPlan& plan, const vk::ResourceTable& inputs,
+                          TimestampPool* timestamps, const vk::PassHooks* extraHooks) {
+    if (const std::string error = recordFrame(cmd, plan, inputs, timestamps, extraHooks); !error.empty())
         throw std::runtime_error(error);
 }
 
@@ -179,12 +187,15 @@ FrameRun EffectRunner::run(const EffectPlan& plan, const vk::ResourceTable& inpu
     if (timed)
         pool = createTimestampPool(context_.device, static_cast<std::uint32_t>(2 * plan.passes.size()));
     beginFrames();
+    std::string error;
     try {
+        // What was recorded before a failure is still submitted: the effect's initialization
+        // (recorded once, then marked done) must run.
         submitAndWait(context_, [&](VkCommandBuffer cmd) {
             if (timed) resetTimestamps(cmd, pool);
-            record(cmd, plan, inputs, timed ? &pool : nullptr, extraHooks);
+            error = recordFrame(cmd, plan, inputs, timed ? &pool : nullptr, extraHooks);
         });
-        if (timed) {
+        if (timed && error.empty()) {
             const std::vector<std::uint64_t> ticks = readTimestamps(context_.device, pool);
             for (std::size_t i = 0; i + 1 < ticks.size(); i += 2)
                 result.milliseconds.push_back(timestampMilliseconds(pool, ticks[i], ticks[i + 1]));
@@ -196,6 +207,7 @@ FrameRun EffectRunner::run(const EffectPlan& plan, const vk::ResourceTable& inpu
     }
     snapshotTargets_.clear();
     if (timed) destroyTimestampPool(context_.device, pool);
+    if (!error.empty()) throw std::runtime_error(error);
     return result;
 }
 

@@ -77,6 +77,9 @@ class EffectRunner {
   private:
     const vk::Image& outputImage(const OutputDesc& output) const;
     void prepareSnapshots(const EffectPlan& plan, bool snapshots);
+    // record() without the throw: the backend's message, empty when the frame was recorded.
+    std::string recordFrame(VkCommandBuffer cmd, const EffectPlan& plan, const vk::ResourceTable& inputs,
+                            TimestampPool* timestamps, const vk::PassHooks* extraHooks);
     const Context& context_;
     vk::EffectInstance effect_;
     vk::Executor executor_;
