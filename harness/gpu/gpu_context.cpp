@@ -367,39 +367,15 @@ void destroyContext(Context& context) {
 }
 
 void submitAndWait(const Context& context, const std::function<void(VkCommandBuffer)>& record) {
-    VkDevice device = context.device.device;
-    VkCommandBufferAllocateInfo allocateInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-    allocateInfo.commandPool = context.commandPool;
-    allocateInfo.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-    allocateInfo.commandBufferCount = 1;
-    VkCommandBuffer commandBuffer = VK_NULL_HANDLE;
-    GLINT_VK_CHECK(vkAllocateCommandBuffers(device, &allocateInfo, &commandBuffer));
-    VkFence fence = VK_NULL_HANDLE;
-
+    RecordedCommands recorded = recordCommands(context, record);
     try {
-        VkCommandBufferBeginInfo beginInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-        beginInfo.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-        GLINT_VK_CHECK(vkBeginCommandBuffer(commandBuffer, &beginInfo));
-        record(commandBuffer);
-        GLINT_VK_CHECK(vkEndCommandBuffer(commandBuffer));
-
-        VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-        GLINT_VK_CHECK(vkCreateFence(device, &fenceInfo, nullptr, &fence));
-        VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
-        submit.commandBufferCount = 1;
-        submit.pCommandBuffers = &commandBuffer;
-        GLINT_VK_CHECK(vkQueueSubmit(context.device.queue, 1, &submit, fence));
-        GLINT_VK_CHECK(vkWaitForFences(device, 1, &fence, VK_TRUE, kFenceTimeoutNs));
+        submitRecorded(context, recorded);
+        waitRecorded(context, recorded);
     } catch (...) {
-        // After a failed wait the buffer may still be executing; idling first keeps the
-        // frees below valid.
-        (void)vkDeviceWaitIdle(device);
-        if (fence) vkDestroyFence(device, fence, nullptr);
-        vkFreeCommandBuffers(device, context.commandPool, 1, &commandBuffer);
+        destroyRecorded(context, recorded);
         throw;
     }
-    vkDestroyFence(device, fence, nullptr);
-    vkFreeCommandBuffers(device, context.commandPool, 1, &commandBuffer);
+    destroyRecorded(context, recorded);
 }
 
 RecordedCommands recordCommands(const Context& context, const std::function<void(VkCommandBuffer)>& record) {
@@ -443,10 +419,9 @@ void waitRecorded(const Context& context, RecordedCommands& recorded) {
 
 void destroyRecorded(const Context& context, RecordedCommands& recorded) {
     VkDevice device = context.device.device;
-    // After a failed wait the buffer may still be executing; idling keeps the frees valid.
-    if (recorded.pending &&
-        vkWaitForFences(device, 1, &recorded.fence, VK_TRUE, kFenceTimeoutNs) != VK_SUCCESS)
-        (void)vkDeviceWaitIdle(device);
+    // Still pending (an error came between submit and wait, or the wait failed): idling first
+    // keeps the frees valid.
+    if (recorded.pending) (void)vkDeviceWaitIdle(device);
     if (recorded.fence) vkDestroyFence(device, recorded.fence, nullptr);
     if (recorded.commands) vkFreeCommandBuffers(device, context.commandPool, 1, &recorded.commands);
     recorded = RecordedCommands{};

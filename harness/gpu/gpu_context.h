@@ -71,7 +71,7 @@ RecordedCommands recordCommands(const Context& context, const std::function<void
 // Submits without waiting; the previous submission must have been waited for.
 void submitRecorded(const Context& context, RecordedCommands& recorded);
 void waitRecorded(const Context& context, RecordedCommands& recorded);
-// Waits for a pending submission first.
+// Idles the device first when a submission is still pending (after an error).
 void destroyRecorded(const Context& context, RecordedCommands& recorded);
 
 } // namespace glint::gpu

@@ -128,13 +128,7 @@ void EffectRunner::beginFrames() {
 
 std::string EffectRunner::recordFrame(VkCommandBuffer cmd, const EffectPlan& plan,
                                       const vk::ResourceTable& inputs, TimestampPool* timestamps,
-                                      const vk::PassHooks* extraHooks) {
-    // Copies to take after their pass: (pass index, source, target).
-    std::vector<std::tuple<std::size_t, const vk::Image*, const vk::Image*>> copies;
-    for (const auto& [name, target] : snapshotTargets_)
-        for (const OutputDesc& output : plan.outputs)
-            if (output.name == name)
-                copies.emplace_back(passIndex(plan, output.pass), &image(output.resource), target);
+                                      const vk::PassHooks* extraHooks, const SnapshotCopies& copies) {
     vk::PassHooks hooks;
     // Top of pipe before and bottom of pipe after: the dispatch's own duration, with the
     // barriers before it and the copies after it outside the interval.
@@ -156,13 +150,12 @@ std::string EffectRunner::recordFrame(VkCommandBuffer cmd, const EffectPlan& pla
 
 void EffectRunner::record(VkCommandBuffer cmd, const EffectPlan& plan, const vk::ResourceTable& inputs,
                           TimestampPool* timestamps, const vk::PassHooks* extraHooks) {
-    if (const std::string error = recordFrame(cmd, plan, inputs, timestamps, extraHooks); !error.empty())
+    if (const std::string error = recordFrame(cmd, plan, inputs, timestamps, extraHooks, {}); !error.empty())
         throw std::runtime_error(error);
 }
 
-void EffectRunner::prepareSnapshots(const EffectPlan& plan, bool snapshots) {
-    snapshotTargets_.clear();
-    if (!snapshots) return;
+EffectRunner::SnapshotCopies EffectRunner::prepareSnapshots(const EffectPlan& plan) {
+    SnapshotCopies copies;
     for (const OutputDesc& output : plan.outputs) {
         if (!needsSnapshot(plan, output) || !effect_.images.contains(output.resource)) continue;
         const vk::Image& source = effect_.images.at(output.resource);
@@ -173,13 +166,14 @@ void EffectRunner::prepareSnapshots(const EffectPlan& plan, bool snapshots) {
             target = vk::createImage2D(context_.device, source.width, source.height, source.format);
             clearImage(context_, target, VkClearColorValue{});
         }
-        snapshotTargets_.emplace_back(output.name, &target);
+        copies.emplace_back(passIndex(plan, output.pass), &source, &target);
     }
+    return copies;
 }
 
 FrameRun EffectRunner::run(const EffectPlan& plan, const vk::ResourceTable& inputs, bool snapshots,
                            const vk::PassHooks* extraHooks) {
-    prepareSnapshots(plan, snapshots);
+    const SnapshotCopies copies = snapshots ? prepareSnapshots(plan) : SnapshotCopies{};
     FrameRun result;
     result.passes = passNames(plan);
     const bool timed = context_.device.timestamps;
@@ -193,7 +187,7 @@ FrameRun EffectRunner::run(const EffectPlan& plan, const vk::ResourceTable& inpu
         // (recorded once, then marked done) must run.
         submitAndWait(context_, [&](VkCommandBuffer cmd) {
             if (timed) resetTimestamps(cmd, pool);
-            error = recordFrame(cmd, plan, inputs, timed ? &pool : nullptr, extraHooks);
+            error = recordFrame(cmd, plan, inputs, timed ? &pool : nullptr, extraHooks, copies);
         });
         if (timed && error.empty()) {
             const std::vector<std::uint64_t> ticks = readTimestamps(context_.device, pool);
@@ -201,11 +195,9 @@ FrameRun EffectRunner::run(const EffectPlan& plan, const vk::ResourceTable& inpu
                 result.milliseconds.push_back(timestampMilliseconds(pool, ticks[i], ticks[i + 1]));
         }
     } catch (...) {
-        snapshotTargets_.clear();
         if (timed) destroyTimestampPool(context_.device, pool);
         throw;
     }
-    snapshotTargets_.clear();
     if (timed) destroyTimestampPool(context_.device, pool);
     if (!error.empty()) throw std::runtime_error(error);
     return result;

@@ -14,6 +14,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace glint::gpu {
@@ -76,15 +77,18 @@ class EffectRunner {
 
   private:
     const vk::Image& outputImage(const OutputDesc& output) const;
-    void prepareSnapshots(const EffectPlan& plan, bool snapshots);
+    // Copies to take after their pass: (pass index, source, snapshot).
+    using SnapshotCopies = std::vector<std::tuple<std::size_t, const vk::Image*, const vk::Image*>>;
+    // The snapshots `plan` needs, created or resized.
+    SnapshotCopies prepareSnapshots(const EffectPlan& plan);
     // record() without the throw: the backend's message, empty when the frame was recorded.
     std::string recordFrame(VkCommandBuffer cmd, const EffectPlan& plan, const vk::ResourceTable& inputs,
-                            TimestampPool* timestamps, const vk::PassHooks* extraHooks);
+                            TimestampPool* timestamps, const vk::PassHooks* extraHooks,
+                            const SnapshotCopies& copies);
     const Context& context_;
     vk::EffectInstance effect_;
     vk::Executor executor_;
-    std::map<std::string, vk::Image> snapshots_;                            // by output name
-    std::vector<std::pair<std::string, const vk::Image*>> snapshotTargets_; // of the run being recorded
+    std::map<std::string, vk::Image> snapshots_; // by output name
     Extent2D size_;
 };
 

@@ -110,15 +110,14 @@ class Session {
 
     // Runs one frame. The first frame and `cut` reset every history.
     FrameResult run(const capture::Frame& frame, bool cut = false);
-    // The last frame again, as the next frame index, without uploading anything: back-to-back
-    // GPU work for benchmarks (uploads between timed frames let the GPU clock down). Timings
-    // and counters only; the camera is treated as static.
+    // The last frame again, as the next frame index, without uploading anything. Timings and
+    // counters only; the camera is treated as static.
     FrameResult repeat();
     // Sustained repeats, as a frame loop keeps the GPU busy (gpu::timeSustained, its warm-up
     // included): `framesPerBuffer` repeats recorded into each of two command buffers, then
     // `submissions` measured submissions (at least 2). Without timestamps, that many plain
-    // repeats. The two buffers hold 2 * framesPerBuffer
-    // consecutive frame indices, replayed as a cycle (the ping-pong parity alternates across it).
+    // repeats. The two buffers hold 2 * framesPerBuffer consecutive frame indices, replayed as
+    // a cycle (the ping-pong parity alternates across it).
     SustainedResult repeatSustained(std::uint32_t framesPerBuffer, std::uint32_t submissions);
     const std::vector<std::string>& effects() const { return effects_; }
 
