@@ -9,6 +9,9 @@
 #include "robustness/robust_effects.h"
 #include "support/gpu_test_context.h"
 
+#include "glint/common/glint_wire_formats.h"
+#include "glint/reflections_denoiser/glint_reflections_denoiser_constants.h"
+
 #include <gpu/gpu_transfer.h>
 #include <replay/replay_frame.h>
 #include <scene/scene_simulate.h>
@@ -141,9 +144,9 @@ constexpr std::uint32_t kBursts = 2;
 // two after it); outputs on every frame.
 constexpr std::uint32_t kHistoryEvery = 10;
 
-// Two bursts of 1-3 frames, the b-th starting in [15 + 80b, 25 + 80b), two targets each (the windows
-// after them, at least 70 frames, hold every recovery bound): over the
-// cases the targets go round every input and every history.
+// Two bursts of 1-3 frames, the b-th starting in [15 + 140b, 25 + 140b), two targets each (the
+// windows after them, at least 131 frames, hold every recovery bound): over the cases the targets
+// go round every input and every history.
 std::vector<Burst> schedule(std::uint32_t seed) {
     const float values[] = {std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity(),
                             -std::numeric_limits<float>::infinity(), 1e-40f, -1e-42f};
@@ -152,7 +155,7 @@ std::vector<Burst> schedule(std::uint32_t seed) {
     std::vector<Burst> bursts;
     for (std::uint32_t b = 0; b < kBursts; ++b) {
         Burst burst;
-        burst.first = 15 + 80 * b + random.below(10);
+        burst.first = 15 + 140 * b + random.below(10);
         burst.last = burst.first + random.below(3);
         const int count = static_cast<int>(Target::Count);
         const std::uint32_t slot = (seed * kBursts + b) * 2;
@@ -204,6 +207,41 @@ void poisonHistory(const gpu::Context& context, test::EffectSet& set, const std:
     }
 }
 
+// Which texels of a history image hold history: the effect's own record of what it wrote, read
+// from the same parity. The reflections denoiser (also inside the hybrid) writes its histories in
+// the tiles it listed and marks them in "rd_tile_mask<p>" (bit GLINT_RD_MASK_SELF of the tile's
+// word); next frame it takes a history tap only where that bit is set. The shadow denoiser (with
+// rebuildClearHistory, the default) skips the moments of tiles its metadata marks CLEAR and
+// rebuilds those from the metadata. Every other texel of those images is storage the effect
+// neither wrote this frame nor will read as history. Empty: every texel holds history.
+std::vector<bool> historyTexels(const gpu::Context& context, gpu::EffectRunner& runner,
+                                const std::string& name, std::uint32_t width, std::uint32_t height) {
+    const char parity = name.back();
+    std::string record;
+    bool live = true; // the state of a tile whose word has `bit` set
+    std::uint32_t bit = 0;
+    if (name.rfind("rd_", 0) == 0 && name.rfind("rd_tile_mask", 0) != 0) {
+        record = std::string("rd_tile_mask") + parity;
+        bit = GLINT_RD_MASK_SELF;
+    } else if (name.rfind("shadow_moments", 0) == 0) {
+        record = std::string("shadow_tile_metadata") + parity;
+        bit = GLINT_WIRE_SHADOW_TILE_CLEAR;
+        live = false;
+    }
+    if (record.empty() || !runner.hasBuffer(record)) return {};
+    const std::vector<std::byte> bytes = gpu::readbackBuffer(context, runner.buffer(record));
+    const std::uint32_t tilesX = (width + 7) / 8, tilesY = (height + 7) / 8;
+    REQUIRE(bytes.size() >= std::size_t{tilesX} * tilesY * 4);
+    std::vector<bool> texels(std::size_t{width} * height);
+    for (std::uint32_t y = 0; y < height; ++y)
+        for (std::uint32_t x = 0; x < width; ++x) {
+            std::uint32_t word = 0;
+            std::memcpy(&word, bytes.data() + 4 * (std::size_t{y / 8} * tilesX + x / 8), 4);
+            texels[std::size_t{y} * width + x] = ((word & bit) != 0) == live;
+        }
+    return texels;
+}
+
 std::size_t nonFinite(const std::vector<float>& values) {
     std::size_t count = 0;
     for (float v : values) count += !std::isfinite(v);
@@ -227,6 +265,24 @@ double maxDifference(const std::vector<float>& a, const std::vector<float>& b) {
     return worst;
 }
 
+// Over the surface texels (depth not the background's); the output's first channel. -1 when the
+// frame shows no surface.
+double meanAbsoluteError(const std::vector<float>& output, const std::vector<float>& reference,
+                         const std::vector<float>& depth, float backgroundDepth) {
+    REQUIRE(!reference.empty());
+    REQUIRE(depth.size() == reference.size());
+    REQUIRE(output.size() % reference.size() == 0);
+    const std::size_t channels = output.size() / reference.size();
+    double sum = 0.0;
+    std::size_t surface = 0;
+    for (std::size_t i = 0; i < reference.size(); ++i) {
+        if (depth[i] == backgroundDepth) continue;
+        sum += std::abs(double(output[i * channels]) - double(reference[i]));
+        ++surface;
+    }
+    return surface > 0 ? sum / double(surface) : -1.0;
+}
+
 bool measureMode() {
     const char* v = std::getenv("GLINT_ROBUST_MEASURE");
     return v && *v && *v != '0';
@@ -246,6 +302,9 @@ struct Recovery {
     // composite) are equal again once the classes are (checked at the window's end), and the
     // contraction of its denoised output starts `bound` frames after that coupling.
     bool coupled = false;
+    // Checked against the converged reference rather than the clean run: from `bound` frames after
+    // the burst on, the injected run's error is at most the clean run's plus `rounding`.
+    bool againstReference = false;
 };
 
 Recovery recoveryOf(const std::string& output) {
@@ -257,14 +316,20 @@ Recovery recoveryOf(const std::string& output) {
     // clip box, which carry part of the history, and the worst pixel decays slightly slower than
     // 1 - 1/32 (measured: 0.1557 where 1 - 1/32 allows 0.1556 after 40 frames).
     constexpr double kDenoiser = 1.0 - 1.0 / 64.0;
-    // The shadow denoiser: the running mean is capped at 64 frames (GLINT_SHADOW_DENOISER_HISTORY_CAP).
-    // Asserted at half that rate too, 1 - 1/128.
-    constexpr double kShadows = 1.0 - 1.0 / 128.0;
     if (output.rfind("depth_pyramid/", 0) == 0) return {true, 0, 0.0};
     if (output == "reflections/noisy" || output == "reflections/confidence") return {true, 0, 0.0};
     if (output.rfind("reflections/", 0) == 0) return {false, 32, kDenoiser};
-    // R8 output: the two runs may round one code apart.
-    if (output.rfind("shadows/", 0) == 0) return {false, 64, kShadows, 1.0 / 255.0 + 1e-5};
+    // The shadow denoiser is not a contraction toward the clean run: its blend weight and filter
+    // follow each run's own history length, which the anti-lag test and the clamp damping shorten
+    // when a history disagrees with the mask. After an injection resets a history, that run
+    // follows a change of the shadow (one that arrives during the window) faster than the clean
+    // run, whose long history lags it; the two can stay 0.2 apart on such a pixel for 140 frames
+    // while the injected run is the more accurate (docs/robustness.md, "Long hard sequences").
+    // So its recovery is measured as the issue states it: from 64 frames after the burst (its
+    // history cap) on, its mean absolute error against the converged reference (64 samples a
+    // pixel, over the surface pixels) is at most the clean run's, plus one R8 code: rounding to R8
+    // moves each run's mean error by at most half a code.
+    if (output.rfind("shadows/", 0) == 0) return {false, 64, 1.0, 1.0 / 255.0, false, true};
     // The hybrid: a tile the poison sent to the ray tracer (or to screen space) stays there until
     // its statistics say otherwise or the spawn lottery (spawnRate 0.02 per frame and lottery
     // number) sends it back: not a fixed number of frames, so the classes must have coupled by the
@@ -276,8 +341,15 @@ Recovery recoveryOf(const std::string& output) {
     return {false, 0, 1.0, 1e-5, true};
 }
 
+// Per output, per frame: mean absolute error against the converged reference of the clean and
+// of the injected run (-1: no output that frame).
+struct ReferenceErrors {
+    std::vector<double> clean, injected;
+};
+
 void checkRecovery(const test::HardCase& hard, const std::vector<Burst>& bursts,
-                   const std::map<std::string, std::vector<double>>& differences) {
+                   const std::map<std::string, std::vector<double>>& differences,
+                   const std::map<std::string, ReferenceErrors>& referenceErrors) {
     for (std::size_t k = 0; k < bursts.size(); ++k) {
         const std::uint32_t clean = bursts[k].last + 1; // first frame without poison
         const std::uint32_t end = k + 1 < bursts.size() ? bursts[k + 1].first : test::kFrames;
@@ -306,6 +378,22 @@ void checkRecovery(const test::HardCase& hard, const std::vector<Burst>& bursts,
                 }
                 continue;
             }
+            if (r.againstReference) {
+                const ReferenceErrors& e = referenceErrors.at(name);
+                double worst = -1e30;
+                for (std::uint32_t t = clean + r.bound; t < end; ++t) {
+                    if (e.clean[t] < 0.0 || e.injected[t] < 0.0) continue;
+                    INFO("frame " << t << ": error against the reference " << e.injected[t]
+                                  << ", clean run's " << e.clean[t]);
+                    CHECK(e.injected[t] <= e.clean[t] + r.rounding);
+                    worst = std::max(worst, e.injected[t] - e.clean[t]);
+                }
+                if (measureMode())
+                    std::printf("  recovery %-24s burst %zu: error against the reference from +%u on at most "
+                                "%.3g above the clean run's (clean at the window end: %.3g)\n",
+                                name.c_str(), k, r.bound, worst, e.clean[end - 1]);
+                continue;
+            }
             std::uint32_t last = end - 1;
             while (last > clean && d[last] < 0.0) --last;
             if (r.coupled) {
@@ -328,17 +416,7 @@ void checkRecovery(const test::HardCase& hard, const std::vector<Burst>& bursts,
             const double start = d[from];
             const double allowed = (start + r.rounding) * std::pow(r.rate, double(last - from)) + r.rounding;
             INFO("frames " << from << "-" << last << ", difference at the bound " << start);
-            if (name.rfind("shadows/", 0) == 0) {
-                // Known defect, reported rather than failed: after an injection into the shadow
-                // denoiser's histories or inputs, its output does not return to the clean run's
-                // at the rate its 64-frame cap predicts (on 6 of the 27 cases it stalls or grows,
-                // e.g. 0.243 -> 0.235 over 65-83 frames after NaN in the moments and tile
-                // metadata; docs/robustness.md, "Long hard sequences"). CHECK_NOFAIL prints the
-                // violation in the test's output without failing it; every other check is hard.
-                CHECK_NOFAIL(d[last] <= allowed);
-            } else {
-                CHECK(d[last] <= allowed);
-            }
+            CHECK(d[last] <= allowed);
         }
     }
 }
@@ -348,6 +426,9 @@ void runCase(const test::HardCase& hard) {
     const gpu::Context& context = test::testContext();
     scene::Scene scene = test::baseScene(hard.width, hard.height);
     if (hard.scene) hard.scene(scene);
+    const bool shadows =
+        std::find(scene.effects.begin(), scene.effects.end(), scene::Effect::Shadows) != scene.effects.end();
+    scene.reference.shadows = shadows; // the shadow denoiser's recovery is measured against it
     scene::Simulation sim = scene::simulate(context, scene);
     REQUIRE(sim.environment.has_value());
     REQUIRE(sim.frames.size() == test::kFrames);
@@ -372,8 +453,8 @@ void runCase(const test::HardCase& hard) {
                         burst.valueName.c_str(), targetName(burst.targets[0]), targetName(burst.targets[1]));
 
     std::map<std::string, std::vector<double>> differences; // per output, per frame
-    std::map<std::string, float> lastPoison;                // per history, the value last injected
-    std::map<std::string, std::size_t> staleTexels;         // per history, most texels left poisoned
+    std::map<std::string, ReferenceErrors> referenceErrors;
+    std::map<std::string, std::size_t> staleTexels; // per history, most texels left poisoned
     for (std::uint32_t f = 0; f < test::kFrames; ++f) {
         INFO(hard.name << ", frame " << f);
         const capture::Frame& frame = sim.frames[f];
@@ -394,7 +475,6 @@ void runCase(const test::HardCase& hard) {
                 for (const std::string& name : historyNames(t)) {
                     poisonHistory(context, poisoned, name, burst.value);
                     poisonedNow.push_back(name);
-                    lastPoison[name] = burst.value;
                 }
             }
             if (!inputs.empty())
@@ -419,6 +499,17 @@ void runCase(const test::HardCase& hard) {
             REQUIRE(nonFinite(ca.at(name)) == 0);
             differences[name].resize(test::kFrames, -1.0);
             differences[name][f] = maxDifference(pixels, ca.at(name));
+            if (recoveryOf(name).againstReference) {
+                const std::vector<float> reference = replay::layerChannels(frame, "reference.shadow", 1);
+                const std::vector<float> depth = replay::layerChannels(frame, "depth", 1);
+                const float background =
+                    scene.camera.depth == capture::DepthConvention::Standard ? 1.0f : 0.0f;
+                ReferenceErrors& e = referenceErrors[name];
+                e.clean.resize(test::kFrames, -1.0);
+                e.injected.resize(test::kFrames, -1.0);
+                e.clean[f] = meanAbsoluteError(ca.at(name), reference, depth, background);
+                e.injected[f] = meanAbsoluteError(pixels, reference, depth, background);
+            }
         }
         // Histories: every kHistoryEvery frames and on the two frames after each burst.
         bool readHistories = f % kHistoryEvery == 0 || f + 1 == test::kFrames;
@@ -435,30 +526,32 @@ void runCase(const test::HardCase& hard) {
                     std::find(poisonedNow.begin(), poisonedNow.end(), h.name) != poisonedNow.end())
                     continue;
                 INFO("history " << effect << "/" << h.name);
-                // A texel the effect never wrote since it was poisoned still holds the injected
-                // value (the denoisers write their histories only in the tiles they list): counted
-                // and reported, not failed; any other non-finite value is the effect's own.
-                const std::vector<float> texels =
-                    gpu::readbackImage(context, poisoned.runner(effect).image(h.name));
-                std::size_t own = 0, left = 0;
-                const auto injected = lastPoison.find(h.name);
-                for (float v : texels) {
-                    if (std::isfinite(v)) continue;
-                    const bool stale = injected != lastPoison.end() &&
-                                       (std::isnan(injected->second) ? std::isnan(v) : v == injected->second);
-                    (stale ? left : own) += 1;
+                // Every texel that holds history must be finite. Storage outside it (tiles the
+                // denoisers did not list or left clear) may still hold an injected value: never
+                // read as history, counted and reported.
+                gpu::EffectRunner& runner = poisoned.runner(effect);
+                const std::vector<float> texels = gpu::readbackImage(context, runner.image(h.name));
+                const std::vector<bool> holds =
+                    historyTexels(context, runner, h.name, frame.width, frame.height);
+                const std::size_t channels = texels.size() / (std::size_t{frame.width} * frame.height);
+                std::size_t inHistory = 0, outside = 0;
+                for (std::size_t i = 0; i < texels.size(); ++i) {
+                    if (std::isfinite(texels[i])) continue;
+                    (holds.empty() || holds[i / channels] ? inHistory : outside) += 1;
                 }
-                REQUIRE(own == 0);
-                if (left > 0)
-                    staleTexels[effect + "/" + h.name] = std::max(staleTexels[effect + "/" + h.name], left);
+                REQUIRE(inHistory == 0);
+                if (outside > 0)
+                    staleTexels[effect + "/" + h.name] =
+                        std::max(staleTexels[effect + "/" + h.name], outside);
             }
         }
     }
     const auto finished = std::chrono::steady_clock::now();
-    checkRecovery(hard, bursts, differences);
+    checkRecovery(hard, bursts, differences, referenceErrors);
     for (const auto& [name, count] : staleTexels)
-        std::printf("'%s': %s kept up to %zu injected non-finite values it never rewrote (outputs finite)\n",
-                    hard.name.c_str(), name.c_str(), count);
+        std::printf(
+            "'%s': %s held up to %zu non-finite values outside its history (tiles not listed or clear)\n",
+            hard.name.c_str(), name.c_str(), count);
     if (measureMode()) {
         std::printf("case '%s' %ux%u: simulate %.1f s, run %.1f s\n", hard.name.c_str(), hard.width,
                     hard.height, std::chrono::duration<double>(simulated - started).count(),
