@@ -22,14 +22,22 @@ struct Tolerance {
     double absolute = 0.0, relative = 0.0, fraction = 0.0;
 };
 
+// The float passes of the reflections and of the hybrid (intersection, ray tracing, shading,
+// the denoiser): a hit may flip where a ray grazes a depth edge, and the flip carries into the
+// passes after it. Their classifications, lists, inputs and pyramid are exact.
+bool reflectionFloatPass(const std::string& pass) {
+    for (const std::string effect : {"reflections/", "hybrid/"})
+        if (pass.rfind(effect, 0) == 0)
+            return pass != effect + "classify" && pass != effect + "input" &&
+                   pass != effect + "depth_pyramid";
+    return false;
+}
+
 Tolerance defaultTolerance(const std::string& pass) {
-    if (pass == "reflections/intersect") return {1e-3, 1e-2, 0.01};
-    if (pass.rfind("reflections/", 0) == 0 && pass != "reflections/classify" && pass != "reflections/input" &&
-        pass != "reflections/depth_pyramid")
-        return {1e-3, 1e-2, 0.01};
+    if (reflectionFloatPass(pass)) return {1e-3, 1e-2, 0.01};
     if (pass == "shadows/classify" || pass.rfind("shadows/filter", 0) == 0) return {1e-4, 1e-3, 0.001};
     if (pass == "reflections/classify") return {1e-6, 1e-6, 0.0};
-    return {}; // inputs, the depth pyramid, shadow prepare: exact
+    return {}; // inputs, the depth pyramid, shadow prepare, the hybrid's classification: exact
 }
 
 std::map<std::string, Tolerance> parseTolerances(const std::vector<std::string>& texts) {

@@ -52,6 +52,10 @@ EffectPlan planOrThrow(const EffectDescriptor& descriptor, const FrameInfo& info
 
 struct Session::Running {
     const EffectDescriptor* descriptor = nullptr;
+    // The session's settings, plus the effect's own debug setting when intermediates are kept:
+    // effects share setting names (the hybrid refuses the reflections' debugOutput), so one
+    // effect's debug switch must not reach another's plan.
+    SettingValues settings;
     EffectPlan plan;
     std::unique_ptr<gpu::EffectRunner> runner;
 };
@@ -136,9 +140,10 @@ Session::Session(const gpu::Context& context, const capture::Frame& first,
                     scene_ =
                         std::make_unique<scene::SceneBuffers>(context_, scene::loadScene(options_.scene));
             }
+        running->settings = options_.settings;
         if (options_.intermediates && !running->descriptor->debugSetting.empty())
-            options_.settings.set(running->descriptor->debugSetting, 1.0);
-        running->plan = planOrThrow(*running->descriptor, info, options_.settings);
+            running->settings.set(running->descriptor->debugSetting, 1.0);
+        running->plan = planOrThrow(*running->descriptor, info, running->settings);
         // The harness's modules for the application's passes (the hybrid effect's ray tracing).
         running->runner = std::make_unique<gpu::EffectRunner>(context_, running->plan, scene::findShader);
         running_.push_back(std::move(running));
@@ -151,7 +156,7 @@ void Session::uploadInputs(const capture::Frame& frame, bool reset) {
     uploaded_.clear();
     for (const auto& running : running_)
         for (const InputDesc& input : running->descriptor->inputs) {
-            if (!inputUsed(input, options_.settings) || uploaded_.contains(input.kind)) continue;
+            if (!inputUsed(input, running->settings) || uploaded_.contains(input.kind)) continue;
             if (input.kind == InputKind::Environment) {
                 if (frame_ == 0) // the same map for the whole sequence
                     inputs_->uploadEnvironment(environment_.width, environment_.height,
@@ -194,7 +199,7 @@ vk::ResourceTable inputsOf(const Session::Running& effect, const gpu::InputImage
 } // namespace
 
 void Session::dispatch(Running& effect, const FrameInfo& info, FrameResult& result) {
-    effect.plan = planOrThrow(*effect.descriptor, info, options_.settings);
+    effect.plan = planOrThrow(*effect.descriptor, info, effect.settings);
     const vk::ResourceTable inputs = inputsOf(effect, *inputs_, scene_.get());
     const std::string& name = effect.descriptor->name;
     const gpu::FrameRun run = effect.runner->run(effect.plan, inputs, options_.readback);
@@ -240,7 +245,7 @@ SustainedResult Session::repeatSustained(std::uint32_t framesPerBuffer, std::uin
     const auto recordFrame = [&](VkCommandBuffer cmd, gpu::TimestampPool& timestamps, std::uint32_t) {
         const FrameInfo info = nextRepeat();
         for (const auto& running : running_) {
-            running->plan = planOrThrow(*running->descriptor, info, options_.settings);
+            running->plan = planOrThrow(*running->descriptor, info, running->settings);
             running->runner->record(cmd, running->plan, inputsOf(*running, *inputs_, scene_.get()),
                                     &timestamps);
         }
