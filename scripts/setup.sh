@@ -41,3 +41,7 @@ if [ ! -f "build/$preset/CMakeCache.txt" ]; then
 fi
 # Optional targets after the preset limit the build to what the caller runs.
 cmake --build --preset "$preset" ${2:+--target "${@:2}"}
+# The test suite also runs scripts/study.py (tests/cli/study_python.cmake).
+if [ "$preset" = debug ]; then
+  "$root/scripts/python_env.sh"
+fi

@@ -51,13 +51,18 @@ def mean_flip(directory, row):
     else:
         error, _, _ = flip.evaluate(np.clip(reference, 0, 1), np.clip(output, 0, 1), "LDR", applyMagma=False)
     error = np.asarray(error).reshape(mask.shape)
-    return float(error[mask].mean()) if mask.any() else 0.0
+    return float(error[mask].mean()) if mask.any() else None  # None: no pixel scored
 
 
 def mark_pareto(rows):
-    """pareto = 1 where no other point of the same scene and effect is as fast and as accurate."""
+    """pareto = 1 where no other point of the same scene and effect is as fast and as accurate.
+    A point without a FLIP (no pixel scored) is on no front and competes with none."""
+    scored = [r for r in rows if r["flip"] is not None]
     for row in rows:
-        rivals = [r for r in rows if (r["scene"], r["effect"]) == (row["scene"], row["effect"]) and r is not row]
+        if row["flip"] is None:
+            row["pareto"] = 0
+            continue
+        rivals = [r for r in scored if (r["scene"], r["effect"]) == (row["scene"], row["effect"]) and r is not row]
         row["pareto"] = int(not any(
             r["time_us"] <= row["time_us"] and r["flip"] <= row["flip"]
             and (r["time_us"] < row["time_us"] or r["flip"] < row["flip"]) for r in rivals))
@@ -68,7 +73,8 @@ def plot_effect(rows, effect, title, path):
     figure, axes = plt.subplots(figsize=(8, 5.5))
     scenes = sorted({r["scene"] for r in rows if r["effect"] == effect})
     for colour, scene in zip(plt.cm.tab10.colors, scenes):
-        points = sorted((r for r in rows if (r["effect"], r["scene"]) == (effect, scene)), key=lambda r: r["time_us"])
+        points = sorted((r for r in rows if (r["effect"], r["scene"]) == (effect, scene) and r["flip"] is not None),
+                        key=lambda r: r["time_us"])
         axes.scatter([p["time_us"] for p in points], [p["flip"] for p in points], color=colour, label=scene)
         front = [p for p in points if p["pareto"]]
         axes.plot([p["time_us"] for p in front], [p["flip"] for p in front], color=colour, linewidth=1)
@@ -106,6 +112,11 @@ def plot_scaling(rows, sweep, x_of, xlabel, title, path):
     plt.close(figure)
 
 
+def scored(value, form="{:.4f}"):
+    """A metric, or "not scored" where no pixel was scored (never a number for nothing)."""
+    return "not scored" if value is None else form.format(value)
+
+
 def study_tables(rows):
     lines = []
     for effect in sorted({r["effect"] for r in rows}):
@@ -121,7 +132,7 @@ def study_tables(rows):
             fraction = r.get("traced_fraction", "")  # the share of rays ray traced
             traced = (f" {100 * float(fraction):.1f} % |" if fraction != "" else " - |") if hybrid else ""
             lines.append(f"| {r['scene']} | {r['label']} | `{' '.join(r['settings']) or '-'}` | {r['time_us']:.1f} |"
-                         f"{traced} {r['flip']:.4f} | {r['error_mean']:.4f} | {r['rmse']:.4f} |{penumbra} "
+                         f"{traced} {scored(r['flip'])} | {r['error_mean']:.4f} | {r['rmse']:.4f} |{penumbra} "
                          f"{r['non_finite']:g} | {'**yes**' if r['pareto'] else ''} |")
         lines.append("")
     return lines
@@ -143,7 +154,7 @@ def add_columns(directory, rows):
     with open(directory / "study.csv", newline="") as file:
         table = list(csv.DictReader(file))
     for line, row in zip(table, rows, strict=True):
-        line["flip"], line["pareto"] = f"{row['flip']:.6g}", row["pareto"]
+        line["flip"], line["pareto"] = scored(row["flip"], "{:.6g}"), row["pareto"]
     with open(directory / "study.csv", "w", newline="") as file:
         writer = csv.DictWriter(file, fieldnames=list(table[0].keys()))
         writer.writeheader()

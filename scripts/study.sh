@@ -54,19 +54,8 @@ fi
 
 if ((plots)); then
   if [ -z "$python" ]; then
-    venv=build/venv
-    # Versions checked to install together on Debian bookworm's Python 3.11.
-    packages=(flip-evaluator==1.7 matplotlib==3.11.2 numpy==2.4.6)
-    if [ ! -x "$venv/bin/python" ]; then
-      python3 -m venv "$venv" || {
-        echo "study.sh: python3 -m venv failed; install python3-venv (apt-get install python3-venv)" >&2
-        exit 2
-      }
-    fi
-    if ! "$venv/bin/python" -c "import flip_evaluator, matplotlib, numpy" 2>/dev/null; then
-      "$venv/bin/pip" install -q "${packages[@]}"
-    fi
-    python=$venv/bin/python
+    scripts/python_env.sh
+    python=build/venv/bin/python
   fi
   "$python" scripts/study.py "$out"
 fi

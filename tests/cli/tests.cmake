@@ -130,6 +130,7 @@ set_tests_properties("cli: study --quick and its scaling runs write finite resul
 add_test(NAME "cli: study.py adds FLIP and Pareto fronts to the quick study and plots it"
   COMMAND "${CMAKE_COMMAND}" "-DPYTHON=${PROJECT_SOURCE_DIR}/build/venv/bin/python"
           "-DSCRIPT=${PROJECT_SOURCE_DIR}/scripts/study.py" "-DOUT=${GLINT_STUDY_DIR}"
+          "-DVALUE_TESTS=${CMAKE_CURRENT_SOURCE_DIR}/cli/study_py_test.py"
           -P "${CMAKE_CURRENT_SOURCE_DIR}/cli/study_python.cmake")
 set_tests_properties("cli: study.py adds FLIP and Pareto fronts to the quick study and plots it"
   PROPERTIES LABELS gpu FIXTURES_REQUIRED study_quick SKIP_REGULAR_EXPRESSION "SKIP:")

@@ -1,0 +1,94 @@
+#!/usr/bin/env python3
+"""Value tests of scripts/study.py: the Pareto selection against hand-made points whose fronts
+follow from the definition (a point is on the front when no other point of its scene and effect
+is at least as fast and as accurate, and strictly better in one), and FLIP of image pairs whose
+answer is known without FLIP's code: identical images score 0, a difference outside the mask
+scores 0, a larger uniform difference scores more, and an empty mask is not scored.
+
+Run by tests/cli/study_python.cmake with the venv's interpreter (scripts/python_env.sh)."""
+import pathlib
+import sys
+import tempfile
+import unittest
+
+import numpy as np
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[2] / "scripts"))
+import study  # noqa: E402
+
+
+def point(scene, time_us, flip, effect="reflections"):
+    return {"scene": scene, "effect": effect, "time_us": time_us, "flip": flip}
+
+
+class ParetoTest(unittest.TestCase):
+    def test_fronts_per_scene_and_effect(self):
+        rows = [
+            point("room", 1.0, 0.5),  # fastest: on the front
+            point("room", 2.0, 0.3),  # most accurate: on the front
+            point("room", 3.0, 0.3),  # as accurate as (2, 0.3) and slower: dominated
+            point("room", 2.5, 0.6),  # slower and worse than (1, 0.5): dominated
+            point("room", 1.0, 0.5),  # equal to the first: neither is strictly better, both stay
+            point("hall", 10.0, 0.9),  # alone in its scene, although room's points beat it
+            point("room", 100.0, 0.9, effect="shadows"),  # alone in its effect
+        ]
+        study.mark_pareto(rows)
+        self.assertEqual([r["pareto"] for r in rows], [1, 1, 0, 0, 1, 1, 1])
+
+    def test_unscored_points_are_on_no_front_and_beat_none(self):
+        rows = [point("room", 1.0, None), point("room", 2.0, 0.4), point("room", 3.0, 0.2)]
+        study.mark_pareto(rows)
+        self.assertEqual([r["pareto"] for r in rows], [0, 1, 1])
+        self.assertEqual(study.scored(None), "not scored")
+        self.assertEqual(study.scored(0.12345), "0.1235")
+
+
+class FlipTest(unittest.TestCase):
+    def setUp(self):
+        self.folder = tempfile.TemporaryDirectory()
+        self.dir = pathlib.Path(self.folder.name)
+        ramp = np.linspace(0.1, 0.6, 48, dtype=np.float32)
+        self.reference = np.repeat(np.tile(ramp, (32, 1))[..., None], 3, axis=2)
+        self.left = np.zeros((32, 48), dtype=bool)
+        self.left[:, :24] = True
+
+    def tearDown(self):
+        self.folder.cleanup()
+
+    def save(self, name, image):
+        import matplotlib.pyplot as plt
+
+        plt.imsave(self.dir / name, np.clip(image, 0.0, 1.0))
+        return name
+
+    def flip(self, output, mask, effect="shadows"):
+        row = {"effect": effect, "reference": self.save("reference.png", self.reference),
+               "output": self.save("output.png", output),
+               "mask": self.save("mask.png", np.repeat(mask.astype(np.float32)[..., None], 3, axis=2))}
+        return study.mean_flip(self.dir, row)
+
+    def test_identical_images_score_zero(self):
+        everywhere = np.ones((32, 48), dtype=bool)
+        self.assertEqual(self.flip(self.reference.copy(), everywhere), 0.0)
+        self.assertEqual(self.flip(self.reference.copy(), everywhere, effect="reflections"), 0.0)
+
+    def test_only_masked_pixels_count(self):
+        output = self.reference.copy()
+        output[:, 40:] += 0.3  # far from the left half, beyond FLIP's filter reach at this size
+        self.assertEqual(self.flip(output, self.left), 0.0)
+        self.assertGreater(self.flip(output, ~self.left), 0.0)
+
+    def test_larger_difference_scores_more(self):
+        everywhere = np.ones((32, 48), dtype=bool)
+        small = self.flip(self.reference + 0.05, everywhere)
+        large = self.flip(self.reference + 0.3, everywhere)
+        self.assertGreater(small, 0.0)
+        self.assertGreater(large, small)
+        self.assertLessEqual(large, 1.0)  # FLIP's range
+
+    def test_empty_mask_is_not_scored(self):
+        self.assertIsNone(self.flip(self.reference + 0.3, np.zeros((32, 48), dtype=bool)))
+
+
+if __name__ == "__main__":
+    unittest.main()
