@@ -22,6 +22,9 @@ import sys
 
 import numpy as np
 
+# Measured points of other implementations (docs/anchors/*.json), drawn beside the fronts.
+ANCHORS = pathlib.Path(__file__).resolve().parents[1] / "docs" / "anchors"
+
 
 def pyplot():
     """matplotlib only where plots are drawn: --flip-only runs where it is not installed."""
@@ -68,7 +71,22 @@ def mark_pareto(rows):
             and (r["time_us"] < row["time_us"] or r["flip"] < row["flip"]) for r in rivals))
 
 
-def plot_effect(rows, effect, title, path):
+def load_anchors(folder=ANCHORS):
+    """Every point of every docs/anchors/*.json, with the file it came from."""
+    points = []
+    for file in sorted(pathlib.Path(folder).glob("*.json")):
+        for point in json.loads(file.read_text())["points"]:
+            points.append(dict(point, source=file.name))
+    return points
+
+
+def comparable_anchor(anchor, study):
+    """An anchor's time is comparable when it was measured on this study's device and size."""
+    return (anchor["device"] in study["device"]["name"]
+            and (anchor["width"], anchor["height"]) == (study["width"], study["height"]))
+
+
+def plot_effect(rows, effect, title, path, anchors=()):
     plt = pyplot()
     figure, axes = plt.subplots(figsize=(8, 5.5))
     scenes = sorted({r["scene"] for r in rows if r["effect"] == effect})
@@ -80,6 +98,15 @@ def plot_effect(rows, effect, title, path):
         axes.plot([p["time_us"] for p in front], [p["flip"] for p in front], color=colour, linewidth=1)
         for p in points:
             axes.annotate(p["label"], (p["time_us"], p["flip"]), fontsize=6, xytext=(3, 2), textcoords="offset points")
+    drawn = [a for a in anchors if a["effect"] == effect and a.get("flip") is not None]
+    for a in drawn:
+        axes.scatter([a["time_us"]], [a["flip"]], marker="*", s=90, color="black")
+        axes.annotate(f"{a['label']} ({a['scene']})", (a["time_us"], a["flip"]), fontsize=6, xytext=(-4, -9),
+                      textcoords="offset points", ha="right")
+    if drawn:  # where and when: the time and the error of an anchor come from different runs
+        sources = ", ".join(sorted({a["source"] for a in drawn}))
+        figure.text(0.01, 0.005, f"★ measured points of other implementations; their time and error conditions "
+                    f"are in study.md and docs/anchors/{sources}", fontsize=6)
     axes.set(xlabel="GPU time of the effect (µs, median)", ylabel="mean FLIP over the measured pixels",
              title=f"{effect}: {title}")
     axes.legend(fontsize=8)
@@ -138,6 +165,17 @@ def study_tables(rows):
     return lines
 
 
+def anchor_tables(anchors):
+    lines = ["### anchors (docs/anchors)", "",
+             "Drawn on the plots only when the study ran on the device and at the size of the point's time.", "",
+             "| effect | scene | point | time (µs) | time measured | FLIP | MAE | error measured |",
+             "|---|---|---|---|---|---|---|---|"]
+    for a in anchors:
+        lines.append(f"| {a['effect']} | {a['scene']} | {a['label']} | {a['time_us']:.1f} | {a['time_measured']} "
+                     f"| {scored(a.get('flip'))} | {scored(a.get('mae'))} | {a['error_measured']} |")
+    return lines + [""]
+
+
 def scaling_tables(rows):
     lines = ["| effect | sweep | size | fraction | time (µs) | traced fraction / filtered tiles |", "|---|---|---|---|---|---|"]
     for r in rows:
@@ -185,9 +223,13 @@ def main(directories, plots=True):
     markdown = [f"Device: {device} ({study['device']['driver']}, subgroup {study['device']['subgroupSize']}); "
                 f"{study['width']}×{study['height']}; error on frame {study['frames']} of {study['frames']}; "
                 f"time: median of {study['runs']} runs.", ""]
+    anchors = load_anchors()
+    comparable = [a for a in anchors if comparable_anchor(a, study)]
     for effect in sorted({r["effect"] for r in rows}) if plots else []:
-        plot_effect(rows, effect, title, out / f"{effect}.png")
+        plot_effect(rows, effect, title, out / f"{effect}.png", comparable)
     markdown += study_tables(rows)
+    if anchors:
+        markdown += anchor_tables(anchors)
 
     scaling_files = [d / "scaling.json" for d in directories if (d / "scaling.json").exists()]
     if scaling_files:

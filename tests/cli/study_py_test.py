@@ -90,5 +90,38 @@ class FlipTest(unittest.TestCase):
         self.assertIsNone(self.flip(self.reference + 0.3, np.zeros((32, 48), dtype=bool)))
 
 
+class AnchorTest(unittest.TestCase):
+    def test_bundled_anchors_load_with_their_conditions(self):
+        anchors = study.load_anchors()
+        denoised = [a for a in anchors if a["label"] == "FidelityFX SDK 1.1.4, denoised"]
+        self.assertEqual(len(denoised), 1)
+        # The figures of docs/anchors/fidelityfx-sdk-1.1.4.json, each with where it was measured.
+        self.assertEqual((denoised[0]["time_us"], denoised[0]["flip"]), (298.6, 0.421))
+        for a in anchors:
+            self.assertTrue(a["time_measured"] and a["error_measured"] and a["source"].endswith(".json"))
+
+    def test_plot_and_table_carry_the_anchor(self):
+        anchors = [{"effect": "reflections", "scene": "room", "label": "other", "time_us": 5.0, "flip": 0.2,
+                    "device": "GPU X", "width": 1920, "height": 1080,
+                    "mae": None, "time_measured": "GPU X, 1080p", "error_measured": "CPU Y, 360p",
+                    "source": "other.json"}]
+        rows = [dict(point("room", 1.0, 0.5), label="a"), dict(point("room", 2.0, 0.3), label="b")]
+        study.mark_pareto(rows)
+        with tempfile.TemporaryDirectory() as folder:
+            path = pathlib.Path(folder) / "reflections.png"
+            study.plot_effect(rows, "reflections", "test", path, anchors)
+            self.assertGreater(path.stat().st_size, 0)
+        table = "\n".join(study.anchor_tables(anchors))
+        self.assertIn("| reflections | room | other | 5.0 | GPU X, 1080p | 0.2000 | not scored | CPU Y, 360p |", table)
+
+    def test_anchors_are_drawn_only_on_their_device_and_size(self):
+        anchor = {"device": "NVIDIA H200", "width": 1920, "height": 1080}
+        def run(name, width, height):
+            return {"device": {"name": name}, "width": width, "height": height}
+        self.assertTrue(study.comparable_anchor(anchor, run("NVIDIA H200", 1920, 1080)))
+        self.assertFalse(study.comparable_anchor(anchor, run("llvmpipe (LLVM 15.0.6, 256 bits)", 1920, 1080)))
+        self.assertFalse(study.comparable_anchor(anchor, run("NVIDIA H200", 640, 360)))
+
+
 if __name__ == "__main__":
     unittest.main()
