@@ -213,9 +213,12 @@ void poisonHistory(const gpu::Context& context, test::EffectSet& set, const std:
 // word); next frame it takes a history tap only where that bit is set. The shadow denoiser (with
 // rebuildClearHistory, the default) skips the moments of tiles its metadata marks CLEAR and
 // rebuilds those from the metadata. Every other texel of those images is storage the effect
-// neither wrote this frame nor will read as history. Empty: every texel holds history.
-std::vector<bool> historyTexels(const gpu::Context& context, gpu::EffectRunner& runner,
-                                const std::string& name, std::uint32_t width, std::uint32_t height) {
+// neither wrote this frame nor will read as history. Empty: every texel holds history. The maps
+// are kept in `records` by record name, so that the histories sharing a record (the four
+// denoiser images of one parity) read it back once.
+const std::vector<bool>& historyTexels(const gpu::Context& context, gpu::EffectRunner& runner,
+                                       const std::string& name, std::uint32_t width, std::uint32_t height,
+                                       std::map<std::string, std::vector<bool>>& records) {
     const char parity = name.back();
     std::string record;
     bool live = true; // the state of a tile whose word has `bit` set
@@ -228,15 +231,21 @@ std::vector<bool> historyTexels(const gpu::Context& context, gpu::EffectRunner& 
         bit = GLINT_WIRE_SHADOW_TILE_CLEAR;
         live = false;
     }
-    if (record.empty() || !runner.hasBuffer(record)) return {};
+    if (record.empty() || !runner.hasBuffer(record)) record.clear(); // every texel: the empty map
+    const auto [entry, added] = records.try_emplace(record);
+    if (!added || record.empty()) return entry->second;
+    // Both records hold one word per 8x8 tile (GLINT_RD_TILE; the shadow metadata's tiles).
     const std::vector<std::byte> bytes = gpu::readbackBuffer(context, runner.buffer(record));
-    const std::uint32_t tilesX = (width + 7) / 8, tilesY = (height + 7) / 8;
+    const std::uint32_t tilesX = (width + GLINT_RD_TILE - 1) / GLINT_RD_TILE;
+    const std::uint32_t tilesY = (height + GLINT_RD_TILE - 1) / GLINT_RD_TILE;
     REQUIRE(bytes.size() >= std::size_t{tilesX} * tilesY * 4);
-    std::vector<bool> texels(std::size_t{width} * height);
+    std::vector<bool>& texels = entry->second;
+    texels.resize(std::size_t{width} * height);
     for (std::uint32_t y = 0; y < height; ++y)
         for (std::uint32_t x = 0; x < width; ++x) {
             std::uint32_t word = 0;
-            std::memcpy(&word, bytes.data() + 4 * (std::size_t{y / 8} * tilesX + x / 8), 4);
+            std::memcpy(&word,
+                        bytes.data() + 4 * (std::size_t{y / GLINT_RD_TILE} * tilesX + x / GLINT_RD_TILE), 4);
             texels[std::size_t{y} * width + x] = ((word & bit) != 0) == live;
         }
     return texels;
@@ -429,6 +438,7 @@ void runCase(const test::HardCase& hard) {
     const bool shadows =
         std::find(scene.effects.begin(), scene.effects.end(), scene::Effect::Shadows) != scene.effects.end();
     scene.reference.shadows = shadows; // the shadow denoiser's recovery is measured against it
+    const float background = scene.camera.depth == capture::DepthConvention::Standard ? 1.0f : 0.0f;
     scene::Simulation sim = scene::simulate(context, scene);
     REQUIRE(sim.environment.has_value());
     REQUIRE(sim.frames.size() == test::kFrames);
@@ -502,8 +512,6 @@ void runCase(const test::HardCase& hard) {
             if (recoveryOf(name).againstReference) {
                 const std::vector<float> reference = replay::layerChannels(frame, "reference.shadow", 1);
                 const std::vector<float> depth = replay::layerChannels(frame, "depth", 1);
-                const float background =
-                    scene.camera.depth == capture::DepthConvention::Standard ? 1.0f : 0.0f;
                 ReferenceErrors& e = referenceErrors[name];
                 e.clean.resize(test::kFrames, -1.0);
                 e.injected.resize(test::kFrames, -1.0);
@@ -517,6 +525,7 @@ void runCase(const test::HardCase& hard) {
             readHistories = readHistories || (f >= burst.first && f <= burst.last + 2);
         for (const std::string& effect : effects) {
             if (!readHistories || !poisoned.ran(effect)) continue;
+            std::map<std::string, std::vector<bool>> records; // this effect's, this frame
             for (const test::HistoryResource& h : test::effectHistories(effect, settings)) {
                 if (h.buffer || !h.floats) continue;
                 // A history poisoned before this frame that the frame read (the parity it did not
@@ -531,8 +540,8 @@ void runCase(const test::HardCase& hard) {
                 // read as history, counted and reported.
                 gpu::EffectRunner& runner = poisoned.runner(effect);
                 const std::vector<float> texels = gpu::readbackImage(context, runner.image(h.name));
-                const std::vector<bool> holds =
-                    historyTexels(context, runner, h.name, frame.width, frame.height);
+                const std::vector<bool>& holds =
+                    historyTexels(context, runner, h.name, frame.width, frame.height, records);
                 const std::size_t channels = texels.size() / (std::size_t{frame.width} * frame.height);
                 std::size_t inHistory = 0, outside = 0;
                 for (std::size_t i = 0; i < texels.size(); ++i) {
