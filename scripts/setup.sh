@@ -13,6 +13,7 @@ packages=(
   glslang-tools spirv-tools spirv-cross libspirv-cross-c-shared-dev
   libopenexr-dev libimath-dev libpng-dev catch2 libcli11-dev nlohmann-json3-dev libtomlplusplus-dev
   libassimp-dev assimp-testmodels
+  libglfw3-dev libimgui-dev xvfb xauth
 )
 # The fuzz preset (scripts/fuzz.sh) also needs clang with libFuzzer and its sanitizer
 # runtimes, and llvm-symbolizer (llvm-14) for readable sanitizer reports.

@@ -253,10 +253,12 @@ FrameRange parseFrames(const std::string& text, std::size_t count) {
     return range;
 }
 
-int withContext(bool validate, const std::function<int(const gpu::Context&)>& body) {
+int withContext(bool validate, const std::function<int(const gpu::Context&)>& body,
+                const std::function<void(gpu::ContextOptions&)>& configure) {
     gpu::ContextOptions options;
     options.validation = validate;
     options.synchronizationValidation = validate;
+    if (configure) configure(options);
     gpu::Context context = gpu::createContext(options);
     int code = kExitUsage;
     try {

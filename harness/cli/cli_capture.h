@@ -87,7 +87,9 @@ FrameRange parseFrames(const std::string& text, std::size_t count);
 
 // Creates a context (with validation when asked), runs `body`, destroys the context. Returns
 // body's exit code, or kExitCheckFailed when the validation layer reported errors.
-int withContext(bool validate, const std::function<int(const gpu::Context&)>& body);
+// `configure` adjusts the options first (glint view: presentation to its window).
+int withContext(bool validate, const std::function<int(const gpu::Context&)>& body,
+                const std::function<void(gpu::ContextOptions&)>& configure = {});
 
 // Replays frames 0..frame (histories build up as in `glint run`) with every intermediate and
 // returns the last frame's result. `frameText` "" means the capture's last frame.

@@ -89,6 +89,21 @@ struct ReportOptions {
     std::string title = "glint report";
 };
 
+// glint view (cli_view.cpp, docs/viewer.md): a window replaying a capture live.
+struct ViewOptions {
+    std::string capture;               // frame .exr, sequence folder, foreign EXR(s) with mapPath, or scene .toml
+    std::string mapPath;               // --map
+    std::string geometry;              // --geometry
+    std::vector<std::string> effects;  // empty: the capture's declared effects
+    std::vector<std::string> settings; // "name=value"
+    std::string script;                // --script FILE (view_script.h)
+    std::string screenshot;            // --screenshot FILE: after frame `after`, then exit
+    std::uint32_t after = 0;           // --after N
+    bool ui = false;                   // --ui: the controls in scripted screenshots too
+    bool validate = false;
+};
+int runView(const ViewOptions& options);
+
 int runDevices(bool validate);
 // glint settings [effect]: the settings tables; settingsHelp() is the same listing for --help.
 int runSettings(const std::string& effect, bool markdown);

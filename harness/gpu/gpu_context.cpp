@@ -153,6 +153,11 @@ void createInstance(const ContextOptions& options, Context& context) {
             messengerInfo.pNext = &features;
         }
     }
+    for (const std::string& name : options.surfaceExtensions) {
+        if (!contains(available, name))
+            throw std::runtime_error("glint: the Vulkan loader lacks " + name + ", which the window needs");
+        extensions.push_back(name.c_str());
+    }
     info.enabledExtensionCount = static_cast<uint32_t>(extensions.size());
     info.ppEnabledExtensionNames = extensions.data();
     GLINT_VK_CHECK(vkCreateInstance(&info, nullptr, &context.instance));
@@ -238,10 +243,28 @@ bool pipelineStatisticsRequested() {
     return value && std::string_view(value) == "1";
 }
 
+// A family with graphics and compute that presents to `surface`, or UINT32_MAX.
+uint32_t findPresentQueueFamily(VkPhysicalDevice physical, VkSurfaceKHR surface) {
+    uint32_t count = 0;
+    vkGetPhysicalDeviceQueueFamilyProperties(physical, &count, nullptr);
+    std::vector<VkQueueFamilyProperties> families(count);
+    vkGetPhysicalDeviceQueueFamilyProperties(physical, &count, families.data());
+    const VkQueueFlags needed = VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT;
+    for (uint32_t i = 0; i < count; ++i) {
+        VkBool32 presents = VK_FALSE;
+        GLINT_VK_CHECK(vkGetPhysicalDeviceSurfaceSupportKHR(physical, i, surface, &presents));
+        if (families[i].queueCount > 0 && (families[i].queueFlags & needed) == needed && presents) return i;
+    }
+    return UINT32_MAX;
+}
+
 void createDevice(Context& context, VkPhysicalDevice physical) {
-    const uint32_t family = findComputeQueueFamily(physical);
+    const uint32_t family =
+        context.surface ? findPresentQueueFamily(physical, context.surface) : findComputeQueueFamily(physical);
     if (family == UINT32_MAX) {
-        throw std::runtime_error("glint: device '" + context.info.name + "' has no compute queue");
+        throw std::runtime_error("glint: device '" + context.info.name + "' has no " +
+                                 (context.surface ? "queue that computes, draws and presents to the window"
+                                                  : "compute queue"));
     }
 
     const bool vulkan12 = std::min(context.info.apiVersion, context.instanceApiVersion) >= VK_API_VERSION_1_2;
@@ -266,6 +289,12 @@ void createDevice(Context& context, VkPhysicalDevice physical) {
     enabled.link(vulkan12, float16Extension, pipelineStatistics);
     selectFeatures(supported, enabled);
     if (pipelineStatistics) extensions.push_back(VK_KHR_PIPELINE_EXECUTABLE_PROPERTIES_EXTENSION_NAME);
+    if (context.surface) {
+        if (!contains(available, VK_KHR_SWAPCHAIN_EXTENSION_NAME))
+            throw std::runtime_error("glint: device '" + context.info.name + "' cannot present (no " +
+                                     VK_KHR_SWAPCHAIN_EXTENSION_NAME + ")");
+        extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+    }
 
     const float priority = 1.0f;
     VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
@@ -288,6 +317,11 @@ void createDevice(Context& context, VkPhysicalDevice physical) {
     vkGetPhysicalDeviceProperties(physical, &device.properties);
     vkGetPhysicalDeviceMemoryProperties(physical, &device.memory);
     device.subgroupSize = context.info.subgroupSize;
+    uint32_t familyCount = 0;
+    vkGetPhysicalDeviceQueueFamilyProperties(physical, &familyCount, nullptr);
+    std::vector<VkQueueFamilyProperties> families(familyCount);
+    vkGetPhysicalDeviceQueueFamilyProperties(physical, &familyCount, families.data());
+    context.info.timestampValidBits = families.at(family).timestampValidBits; // the queue in use
     device.timestampValidBits = context.info.timestampValidBits;
     device.timestamps = device.timestampValidBits > 0;
     device.pipelineStatistics = pipelineStatistics;
@@ -329,6 +363,7 @@ Context createContext(const ContextOptions& options) {
     Context context;
     try {
         createInstance(options, context);
+        if (options.createSurface) context.surface = options.createSurface(context.instance);
 
         const std::vector<DeviceInfo> devices = listDevices(context.instance, context.instanceApiVersion);
         const DeviceChoice choice = chooseDevice(devices, options.deviceSelector);
@@ -357,6 +392,7 @@ void destroyContext(Context& context) {
         vkDestroyDevice(context.device.device, nullptr);
     }
     if (context.instance) {
+        if (context.surface) vkDestroySurfaceKHR(context.instance, context.surface, nullptr);
         destroyMessenger(context.instance, context.messenger);
         vkDestroyInstance(context.instance, nullptr);
     }
@@ -364,6 +400,7 @@ void destroyContext(Context& context) {
     context.messenger = VK_NULL_HANDLE;
     context.device = vk::Device{};
     context.commandPool = VK_NULL_HANDLE;
+    context.surface = VK_NULL_HANDLE;
 }
 
 void submitAndWait(const Context& context, const std::function<void(VkCommandBuffer)>& record) {

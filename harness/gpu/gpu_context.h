@@ -10,6 +10,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace glint::gpu {
 
@@ -26,6 +27,11 @@ struct ContextOptions {
     // Off for tests that provoke validation errors on purpose and only count them.
     bool printValidationErrors = true;
     std::string deviceSelector = deviceSelectorFromEnvironment();
+    // Presentation (glint view): the instance extensions the window system needs, and a
+    // callback that makes the window's surface once the instance exists. The device then gets
+    // VK_KHR_swapchain and a queue family with graphics, compute and presentation to it.
+    std::vector<std::string> surfaceExtensions;
+    std::function<VkSurfaceKHR(VkInstance)> createSurface;
 };
 
 struct Context {
@@ -38,6 +44,7 @@ struct Context {
     // Non-null when validation is on. Heap-allocated because the messenger holds its address.
     std::unique_ptr<ValidationStats> validation;
     bool memoryBudget = false; // VK_EXT_memory_budget is enabled
+    VkSurfaceKHR surface = VK_NULL_HANDLE; // with ContextOptions::createSurface; the queue presents to it
 };
 
 // Device-local memory the process holds and may hold, summed over the device-local heaps

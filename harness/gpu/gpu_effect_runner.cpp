@@ -209,13 +209,16 @@ const vk::Image& EffectRunner::outputImage(const OutputDesc& output) const {
     return image(output.resource);
 }
 
-std::vector<DecodedOutput> EffectRunner::readOutputs(const EffectPlan& plan, bool intermediates) const {
+std::vector<DecodedOutput> EffectRunner::readOutputs(const EffectPlan& plan, bool intermediates,
+                                                     const std::function<bool(const std::string&)>& wanted) const {
+    const auto shown = [&](const std::string& name) { return !wanted || wanted(name); };
     std::vector<DecodedOutput> outputs;
     const std::uint32_t w = size_.width, h = size_.height;
     const std::size_t pixels = std::size_t{w} * h;
     std::vector<std::pair<std::string, double>> counters; // read once, when a list needs them
     for (const OutputDesc& output : plan.outputs) {
         if (output.intermediate && !intermediates) continue;
+        if (output.decoder != OutputDecoder::MipChain && !shown(output.name)) continue;
         DecodedOutput decoded{output.name, output.pass, w, h, 1, {}, output.intermediate};
         switch (output.decoder) {
         case OutputDecoder::Channels: {
@@ -232,6 +235,7 @@ std::vector<DecodedOutput> EffectRunner::readOutputs(const EffectPlan& plan, boo
         case OutputDecoder::MipChain: {
             const vk::Image& pyramid = image(output.resource);
             for (std::uint32_t level = output.level; level < pyramid.mipLevels; ++level) {
+                if (!shown(output.name + std::to_string(level))) continue;
                 const std::vector<float> texels = readbackImage(context_, pyramid, level);
                 const std::uint32_t lw = mipWidth(pyramid, level), lh = mipHeight(pyramid, level);
                 const std::size_t count = std::size_t{lw} * lh;

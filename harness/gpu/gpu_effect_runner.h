@@ -11,6 +11,7 @@
 #include "glint/glint_pass.h"
 #include "glint/vulkan/vk_effect.h"
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -64,8 +65,10 @@ class EffectRunner {
     void record(VkCommandBuffer cmd, const EffectPlan& plan, const vk::ResourceTable& inputs,
                 TimestampPool* timestamps, const vk::PassHooks* extraHooks = nullptr);
 
-    // The plan's outputs after the last run (intermediates only with `intermediates`).
-    std::vector<DecodedOutput> readOutputs(const EffectPlan& plan, bool intermediates) const;
+    // The plan's outputs after the last run (intermediates only with `intermediates`), those
+    // `wanted` accepts by name ("denoised", "mip3") when it is set.
+    std::vector<DecodedOutput> readOutputs(const EffectPlan& plan, bool intermediates,
+                                           const std::function<bool(const std::string&)>& wanted = {}) const;
     // The plan's counters: (name, value) pairs, fractions included.
     std::vector<std::pair<std::string, double>> readCounters(const EffectPlan& plan) const;
 

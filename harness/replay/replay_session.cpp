@@ -219,7 +219,7 @@ FrameResult Session::repeat() {
 
 FrameInfo Session::nextRepeat() {
     FrameInfo info = last_;
-    info.frameIndex = frame_;
+    info.frameIndex = options_.firstFrameIndex + frame_;
     info.resetHistory = false;
     holdCamera(info);
     last_ = info;
@@ -273,7 +273,7 @@ FrameResult Session::run(const capture::Frame& frame, bool cut) {
     effectsToRun(frame, effects_, options_.settings); // every frame must still feed every effect
     FrameResult result;
     const bool reset = frame_ == 0 || cut;
-    const FrameInfo info = frameInfo(frame, environment_, frame_, reset);
+    const FrameInfo info = frameInfo(frame, environment_, options_.firstFrameIndex + frame_, reset);
     uploadInputs(frame, reset);
     if (scene_) scene_->setFrame(frame.frameIndex); // the previous frame's work has finished
     for (const auto& running : running_) {
@@ -282,45 +282,73 @@ FrameResult Session::run(const capture::Frame& frame, bool cut) {
         } catch (const std::invalid_argument& error) {
             throw std::invalid_argument("frame " + std::to_string(frame.frameIndex) + ": " + error.what());
         }
-        if (!options_.readback) continue;
-        const EffectDescriptor& descriptor = *running->descriptor;
-        const std::string& name = descriptor.name;
-        for (const InputDesc& input : descriptor.inputs) {
-            if (input.shownAs.empty() || !uploaded_.contains(input.kind)) continue;
-            if (auto image = layerImage(frame, inputLayer(frame, input.kind), 3))
-                result.images.push_back({name + "/" + input.shownAs, name + "/input", *image});
-        }
-        // Final outputs first, then (for dump) the inputs and the intermediates.
-        std::vector<gpu::DecodedOutput> outputs =
-            running->runner->readOutputs(running->plan, options_.intermediates);
-        const auto add = [&](gpu::DecodedOutput& out) {
-            result.images.push_back(
-                {name + "/" + out.name, name + "/" + out.pass,
-                 report::Image{out.width, out.height, out.channels, std::move(out.pixels)}});
-        };
-        for (gpu::DecodedOutput& out : outputs)
-            if (!out.intermediate) add(out);
-        if (!descriptor.reference.empty())
-            if (auto reference = layerImage(frame, "reference." + descriptor.reference, 3))
-                result.images.push_back({name + "/reference", name + "/input", *reference});
-        if (!options_.intermediates) continue;
-        // The inputs as the effect read them (decoded normals, motion in convention A, roughness in
-        // channel 0), so an import can be checked against what the capture meant.
-        for (const InputDesc& input : descriptor.inputs) {
-            const vk::Image* image =
-                input.kind == InputKind::Environment ? nullptr : inputs_->find(input.kind);
-            if (!image) continue;
-            std::vector<float> texels = gpu::readbackImage(context_, *image);
-            const auto channels = static_cast<std::uint32_t>(texels.size() / (std::size_t{width_} * height_));
-            result.images.push_back({name + "/input_" + input.resource, name + "/input",
-                                     report::Image{width_, height_, channels, std::move(texels)}});
-        }
-        for (gpu::DecodedOutput& out : outputs)
-            if (out.intermediate) add(out);
+        if (options_.readback) readImages(*running, frame, options_.readbackFilter, result);
     }
     last_ = info;
     ++frame_;
     return result;
+}
+
+void Session::readImages(const Running& running, const capture::Frame& frame,
+                         const std::function<bool(const std::string&)>& wanted, FrameResult& result) const {
+    const EffectDescriptor& descriptor = *running.descriptor;
+    const std::string& name = descriptor.name;
+    const auto shown = [&](const std::string& image) { return !wanted || wanted(image); };
+    for (const InputDesc& input : descriptor.inputs) {
+        if (input.shownAs.empty() || !uploaded_.contains(input.kind)) continue;
+        if (!shown(name + "/" + input.shownAs)) continue;
+        if (auto image = layerImage(frame, inputLayer(frame, input.kind), 3))
+            result.images.push_back({name + "/" + input.shownAs, name + "/input", *image});
+    }
+    // Final outputs first, then (for dump) the inputs and the intermediates.
+    std::vector<gpu::DecodedOutput> outputs = running.runner->readOutputs(
+        running.plan, options_.intermediates,
+        [&](const std::string& output) { return shown(name + "/" + output); });
+    const auto add = [&](gpu::DecodedOutput& out) {
+        result.images.push_back({name + "/" + out.name, name + "/" + out.pass,
+                                 report::Image{out.width, out.height, out.channels, std::move(out.pixels)}});
+    };
+    for (gpu::DecodedOutput& out : outputs)
+        if (!out.intermediate) add(out);
+    if (!descriptor.reference.empty() && shown(name + "/reference"))
+        if (auto reference = layerImage(frame, "reference." + descriptor.reference, 3))
+            result.images.push_back({name + "/reference", name + "/input", *reference});
+    if (!options_.intermediates) return;
+    // The inputs as the effect read them (decoded normals, motion in convention A, roughness in
+    // channel 0), so an import can be checked against what the capture meant.
+    for (const InputDesc& input : descriptor.inputs) {
+        const vk::Image* image = input.kind == InputKind::Environment ? nullptr : inputs_->find(input.kind);
+        if (!image || !shown(name + "/input_" + input.resource)) continue;
+        std::vector<float> texels = gpu::readbackImage(context_, *image);
+        const auto channels = static_cast<std::uint32_t>(texels.size() / (std::size_t{width_} * height_));
+        result.images.push_back({name + "/input_" + input.resource, name + "/input",
+                                 report::Image{width_, height_, channels, std::move(texels)}});
+    }
+    for (gpu::DecodedOutput& out : outputs)
+        if (out.intermediate) add(out);
+}
+
+FrameResult Session::read(const capture::Frame& frame, const std::function<bool(const std::string&)>& wanted) const {
+    if (frame_ == 0) throw std::logic_error("replay: read() needs a frame run first");
+    if (!options_.readback) throw std::logic_error("replay: read() needs a session with readback");
+    FrameResult result;
+    for (const auto& running : running_) readImages(*running, frame, wanted, result);
+    return result;
+}
+
+bool Session::changeSettings(const SettingValues& settings) {
+    for (const auto& running : running_)
+        for (const std::string& fixed : running->descriptor->resourceSettings)
+            if (settings.has(fixed) && running->settings.has(fixed) &&
+                settings.real(fixed) != running->settings.real(fixed) && fixed != running->descriptor->debugSetting)
+                return false;
+    options_.settings = settings;
+    for (const auto& running : running_) {
+        running->settings = settings;
+        if (options_.intermediates && !running->descriptor->debugSetting.empty())
+            running->settings.set(running->descriptor->debugSetting, 1.0);
+    }
+    return true;
 }
 
 } // namespace glint::replay

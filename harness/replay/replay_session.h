@@ -21,6 +21,7 @@
 #include <gpu/gpu_context.h>
 #include <gpu/gpu_input_images.h>
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -96,6 +97,13 @@ struct SessionOptions {
     // The geometry given apart from the capture (glint run --geometry FILE:
     // scene::loadGeometryScene), in the capture's world space. Wins over `scene`.
     std::optional<scene::Scene> geometry;
+    // The frame index the first run() gets (the random sequences and the histories' parity
+    // follow it): a session that replaces another mid-sequence (glint view after a setting
+    // that fixes resources) continues its numbering.
+    std::uint32_t firstFrameIndex = 0;
+    // Which images run() reads back, by name ("reflections/denoised"); empty: all of them.
+    // Readback is what costs time in a frame loop (glint view reads only what it shows).
+    std::function<bool(const std::string&)> readbackFilter;
 };
 
 class Session {
@@ -110,6 +118,12 @@ class Session {
 
     // Runs one frame. The first frame and `cut` reset every history.
     FrameResult run(const capture::Frame& frame, bool cut = false);
+    // The images of the last run() again, `frame` being the frame it ran, filtered by `wanted`
+    // (all when empty) instead of the options' filter. Needs readback.
+    FrameResult read(const capture::Frame& frame, const std::function<bool(const std::string&)>& wanted) const;
+    // New settings from the next frame on. False, with nothing changed, when one of them fixes
+    // resources (EffectDescriptor::resourceSettings): that needs a new session.
+    bool changeSettings(const SettingValues& settings);
     // The last frame again, as the next frame index, without uploading anything. Timings and
     // counters only; the camera is treated as static.
     FrameResult repeat();
@@ -127,6 +141,8 @@ class Session {
     void dispatch(Running& effect, const FrameInfo& info, FrameResult& result);
     FrameInfo nextRepeat(); // the last frame again, as the next frame index
     void uploadInputs(const capture::Frame& frame, bool reset);
+    void readImages(const Running& effect, const capture::Frame& frame,
+                    const std::function<bool(const std::string&)>& wanted, FrameResult& result) const;
 
     const gpu::Context& context_;
     const capture::Environment& environment_;

@@ -235,10 +235,10 @@ void heatRamp(float t, float& r, float& g, float& b) {
     b = lerp(2);
 }
 
-void writePng(const std::string& path, const Image& image, PngMapping mapping) {
-    checkImage(path, image);
-    if (image.channels > 4) fail(path, "a PNG preview takes 1 to 4 channels, got " + sizeText(image));
-    checkMapping(path, mapping);
+std::vector<std::uint8_t> mapToRgb8(const std::string& what, const Image& image, PngMapping mapping) {
+    checkImage(what, image);
+    if (image.channels > 4) fail(what, "a PNG preview takes 1 to 4 channels, got " + sizeText(image));
+    checkMapping(what, mapping);
 
     const std::size_t pixelCount = std::size_t{image.width} * image.height;
     std::vector<std::uint8_t> rgb(pixelCount * 3);
@@ -249,7 +249,19 @@ void writePng(const std::string& path, const Image& image, PngMapping mapping) {
         rgb[3 * i + 1] = c.g;
         rgb[3 * i + 2] = c.b;
     }
+    return rgb;
+}
 
+void writePng(const std::string& path, const Image& image, PngMapping mapping) {
+    writeRgbPng(path, image.width, image.height, mapToRgb8(path, image, mapping));
+}
+
+void writeRgbPng(const std::string& path, std::uint32_t width, std::uint32_t height,
+                 const std::vector<std::uint8_t>& rgb) {
+    if (auto problem = capture::checkDimensions(width, height)) fail(path, *problem);
+    if (rgb.size() != std::size_t{width} * height * 3)
+        fail(path, std::to_string(rgb.size()) + " bytes for an RGB image of " + std::to_string(width) + "x" +
+                       std::to_string(height));
     writeAtomically(path, [&](const std::string& partial) {
         std::FILE* file = std::fopen(partial.c_str(), "wb");
         if (file == nullptr) fail(path, std::string("cannot open for writing: ") + std::strerror(errno));
@@ -257,8 +269,8 @@ void writePng(const std::string& path, const Image& image, PngMapping mapping) {
         // which would otherwise skip C++ destructors.
         png_image png{};
         png.version = PNG_IMAGE_VERSION;
-        png.width = image.width;
-        png.height = image.height;
+        png.width = width;
+        png.height = height;
         png.format = PNG_FORMAT_RGB;
         const int ok = png_image_write_to_stdio(&png, file, 0, rgb.data(), 0, nullptr);
         const std::string message = png.message;
@@ -267,6 +279,27 @@ void writePng(const std::string& path, const Image& image, PngMapping mapping) {
         if (!ok) fail(path, "cannot write PNG: " + message);
         if (!closed) fail(path, std::string("cannot write PNG: ") + std::strerror(errno));
     });
+}
+
+RgbImage readRgbPng(const std::string& path) {
+    png_image png{};
+    png.version = PNG_IMAGE_VERSION;
+    if (!png_image_begin_read_from_file(&png, path.c_str())) {
+        const std::string message = png.message;
+        png_image_free(&png);
+        fail(path, "cannot read PNG: " + message);
+    }
+    png.format = PNG_FORMAT_RGB;
+    if (auto problem = capture::checkDimensions(png.width, png.height)) {
+        png_image_free(&png);
+        fail(path, *problem);
+    }
+    RgbImage image{png.width, png.height, std::vector<std::uint8_t>(PNG_IMAGE_SIZE(png))};
+    const int ok = png_image_finish_read(&png, nullptr, image.rgb.data(), 0, nullptr);
+    const std::string message = png.message;
+    png_image_free(&png);
+    if (!ok) fail(path, "cannot read PNG: " + message);
+    return image;
 }
 
 void writeExr(const std::string& path, const Image& image, const std::vector<std::string>& channelNames) {

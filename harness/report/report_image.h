@@ -61,6 +61,21 @@ void heatRamp(float t, float& r, float& g, float& b);
 // and alpha is ignored (a preview with transparency would hide what it shows).
 void writePng(const std::string& path, const Image& image, PngMapping mapping);
 
+// The pixels writePng would write: interleaved 8-bit RGB, row-major from the top left.
+// `what` names the image in the one-line error a bad image or mapping throws.
+std::vector<std::uint8_t> mapToRgb8(const std::string& what, const Image& image, PngMapping mapping);
+
+// 8-bit RGB pixels, interleaved, row-major from the top left (screenshots, previews read back).
+struct RgbImage {
+    std::uint32_t width = 0, height = 0;
+    std::vector<std::uint8_t> rgb;
+};
+// Writes `rgb` (width * height * 3 bytes) as an 8-bit RGB PNG.
+void writeRgbPng(const std::string& path, std::uint32_t width, std::uint32_t height,
+                 const std::vector<std::uint8_t>& rgb);
+// Reads any PNG as 8-bit RGB (alpha dropped, grey expanded).
+RgbImage readRgbPng(const std::string& path);
+
 // Writes a single-part scanline OpenEXR file with one FLOAT channel per image channel, named
 // by channelNames (in the image's interleaved order; OpenEXR itself stores them sorted),
 // ZIP-compressed (lossless). The file appears under its name only once it is complete.
