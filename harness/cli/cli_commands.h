@@ -91,9 +91,9 @@ struct ReportOptions {
 
 // glint view (cli_view.cpp, docs/viewer.md): a window replaying a capture live.
 struct ViewOptions {
-    std::string capture;               // frame .exr, sequence folder, foreign EXR(s) with mapPath, or scene .toml
-    std::string mapPath;               // --map
-    std::string geometry;              // --geometry
+    std::string capture;  // frame .exr, sequence folder, foreign EXR(s) with mapPath, or scene .toml
+    std::string mapPath;  // --map
+    std::string geometry; // --geometry
     std::vector<std::string> effects;  // empty: the capture's declared effects
     std::vector<std::string> settings; // "name=value"
     std::string script;                // --script FILE (view_script.h)

@@ -58,8 +58,10 @@ void handleInput(GLFWwindow* window, Keys& keys, view::Player& player, view::Vie
         if (keys.pressed(window, GLFW_KEY_R)) player.resetHistories();
         if (keys.pressed(window, GLFW_KEY_H)) state.showUi = !state.showUi;
         if (keys.pressed(window, GLFW_KEY_P)) state.screenshotRequested = true;
-        if (keys.pressed(window, GLFW_KEY_EQUAL) || keys.pressed(window, GLFW_KEY_KP_ADD)) state.exposure *= 2;
-        if (keys.pressed(window, GLFW_KEY_MINUS) || keys.pressed(window, GLFW_KEY_KP_SUBTRACT)) state.exposure /= 2;
+        if (keys.pressed(window, GLFW_KEY_EQUAL) || keys.pressed(window, GLFW_KEY_KP_ADD))
+            state.exposure *= 2;
+        if (keys.pressed(window, GLFW_KEY_MINUS) || keys.pressed(window, GLFW_KEY_KP_SUBTRACT))
+            state.exposure /= 2;
         if (keys.pressed(window, GLFW_KEY_ESCAPE)) state.quit = true;
     }
     // Dragging on the picture moves the split's divider.
@@ -73,9 +75,9 @@ void handleInput(GLFWwindow* window, Keys& keys, view::Player& player, view::Vie
         const double toPixels = windowWidth > 0 ? static_cast<double>(framebufferWidth) / windowWidth : 1.0;
         const view::Presenter::Rect rect = presenter.pictureRect(width, height);
         if (rect.width > 0)
-            state.divider = std::clamp(
-                static_cast<float>((x * toPixels - static_cast<double>(rect.x)) / static_cast<double>(rect.width)),
-                0.0f, 1.0f);
+            state.divider = std::clamp(static_cast<float>((x * toPixels - static_cast<double>(rect.x)) /
+                                                          static_cast<double>(rect.width)),
+                                       0.0f, 1.0f);
     }
 }
 
@@ -87,8 +89,8 @@ std::string joined(const std::vector<std::string>& names) {
 
 // Runs the script's commands from `next` on until one needs a frame to be shown first (step,
 // screenshot); returns the screenshot's file when that was the one.
-std::string runScript(const std::vector<view::ScriptCommand>& commands, std::size_t& next, std::uint64_t& steps,
-                      view::Player& player, view::ViewerState& state) {
+std::string runScript(const std::vector<view::ScriptCommand>& commands, std::size_t& next,
+                      std::uint64_t& steps, view::Player& player, view::ViewerState& state) {
     using Kind = view::ScriptCommand::Kind;
     while (next < commands.size() && steps == 0) {
         const view::ScriptCommand& command = commands[next++];
@@ -197,7 +199,8 @@ int runView(const ViewOptions& options) {
         if (!options.script.empty())
             throw std::invalid_argument("view: --screenshot and --script do not go together (a script takes "
                                         "screenshots with its own 'screenshot FILE')");
-        if (options.after > 0) commands.push_back({view::ScriptCommand::Kind::Step, "", double(options.after), "--after"});
+        if (options.after > 0)
+            commands.push_back({view::ScriptCommand::Kind::Step, "", double(options.after), "--after"});
         commands.push_back({view::ScriptCommand::Kind::Screenshot, options.screenshot, 0, "--screenshot"});
         commands.push_back({view::ScriptCommand::Kind::Quit, "", 0, "--screenshot"});
     } else if (options.after > 0) {
@@ -243,7 +246,8 @@ int runView(const ViewOptions& options) {
         [&](const gpu::Context& context) {
             if (opened.scene) {
                 scene::Simulation simulation = scene::simulate(context, *opened.scene);
-                for (const std::string& warning : simulation.warnings) std::fprintf(stderr, "glint: %s\n", warning.c_str());
+                for (const std::string& warning : simulation.warnings)
+                    std::fprintf(stderr, "glint: %s\n", warning.c_str());
                 opened.simulated = std::move(simulation.frames);
                 opened.frames.count = opened.simulated.size();
                 opened.frames.frame = [&opened](std::size_t index) { return opened.simulated.at(index); };
@@ -278,7 +282,8 @@ int runView(const ViewOptions& options) {
                 handleInput(window.handle(), keys, player, state, presenter, width, height);
                 if (state.screenshotRequested && screenshot.empty()) {
                     char name[64];
-                    std::snprintf(name, sizeof name, "glint_view_frame%04zu_%u.png", player.frameIndex(), screenshots++);
+                    std::snprintf(name, sizeof name, "glint_view_frame%04zu_%u.png", player.frameIndex(),
+                                  screenshots++);
                     screenshot = name;
                 }
                 state.screenshotRequested = false;
@@ -286,7 +291,8 @@ int runView(const ViewOptions& options) {
                 presenter.present(picture(player, state), state.showUi, screenshot.empty() ? nullptr : &shot);
                 if (!screenshot.empty()) {
                     report::writeRgbPng(screenshot, shot.width, shot.height, shot.rgb);
-                    std::printf("wrote %s (frame %zu, %s)\n", screenshot.c_str(), player.frameIndex(), state.view.c_str());
+                    std::printf("wrote %s (frame %zu, %s)\n", screenshot.c_str(), player.frameIndex(),
+                                state.view.c_str());
                     std::fflush(stdout);
                 }
                 if (!scripted && !state.playing) glfwWaitEventsTimeout(0.05); // idle without spinning
@@ -295,7 +301,9 @@ int runView(const ViewOptions& options) {
         },
         [&](gpu::ContextOptions& contextOptions) {
             contextOptions.surfaceExtensions = window.instanceExtensions();
-            contextOptions.createSurface = [&window](VkInstance instance) { return window.createSurface(instance); };
+            contextOptions.createSurface = [&window](VkInstance instance) {
+                return window.createSurface(instance);
+            };
         });
 }
 

@@ -146,16 +146,21 @@ int main(int argc, char** argv) {
 
     glint::cli::ViewOptions view;
     CLI::App* viewCommand = app.add_subcommand(
-        "view", "A window replaying a capture live: effects, settings and every pass's images (docs/viewer.md)");
-    viewCommand->add_option("capture", view.capture, "frame .exr, sequence folder, foreign EXR(s) with --map, or scene .toml")
+        "view",
+        "A window replaying a capture live: effects, settings and every pass's images (docs/viewer.md)");
+    viewCommand
+        ->add_option("capture", view.capture,
+                     "frame .exr, sequence folder, foreign EXR(s) with --map, or scene .toml")
         ->required();
     viewCommand->add_option("--map", view.mapPath, "channel map of a foreign capture (docs/replay.md)");
-    viewCommand->add_option("--geometry", view.geometry, "a glTF of the capture's scene, for the effects that ray trace");
+    viewCommand->add_option("--geometry", view.geometry,
+                            "a glTF of the capture's scene, for the effects that ray trace");
     viewCommand->add_option("--effects", view.effects, glint::cli::effectNames() + " (default: declared)")
         ->delimiter(',');
     viewCommand->add_option("--set", view.settings, "a setting, name=value (repeatable; glint settings)");
     viewCommand->add_option("--script", view.script, "commands to run, one a line (docs/viewer.md)");
-    viewCommand->add_option("--screenshot", view.screenshot, "write the window's image as PNG after frame --after, then exit");
+    viewCommand->add_option("--screenshot", view.screenshot,
+                            "write the window's image as PNG after frame --after, then exit");
     viewCommand->add_option("--after", view.after, "the frame (0-based) --screenshot waits for");
     viewCommand->add_flag("--ui", view.ui, "show the controls in scripted runs and screenshots too");
     viewCommand->footer(glint::cli::settingsHelp());

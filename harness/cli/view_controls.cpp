@@ -13,8 +13,9 @@ namespace {
 
 void applySetting(Player& player, ViewerState& state, const SettingDesc& setting, double value) {
     const std::string error = player.setSetting(setting.name + "=" + formatSettingValue(setting, value));
-    state.status = error.empty() ? setting.name + " = " + formatSettingValue(setting, value) + " from the next frame"
-                                 : error;
+    state.status = error.empty()
+                       ? setting.name + " = " + formatSettingValue(setting, value) + " from the next frame"
+                       : error;
 }
 
 void settingWidget(Player& player, ViewerState& state, const SettingDesc& setting) {
@@ -58,7 +59,8 @@ void settingWidget(Player& player, ViewerState& state, const SettingDesc& settin
     if (ImGui::IsItemHovered() && !setting.help.empty()) ImGui::SetTooltip("%s", setting.help.c_str());
 }
 
-void viewCombo(const char* label, const std::vector<std::string>& names, std::string& chosen, bool allowNone) {
+void viewCombo(const char* label, const std::vector<std::string>& names, std::string& chosen,
+               bool allowNone) {
     if (!ImGui::BeginCombo(label, chosen.empty() ? "(none)" : chosen.c_str())) return;
     if (allowNone && ImGui::Selectable("(none)", chosen.empty())) chosen.clear();
     for (const std::string& name : names)
@@ -119,14 +121,16 @@ void drawControls(Player& player, ViewerState& state, const gpu::Context& contex
         viewCombo("image", player.viewNames(), state.view, false);
         viewCombo("split with", player.viewNames(), state.split, true);
         if (!state.split.empty()) ImGui::SliderFloat("divider", &state.divider, 0.0f, 1.0f, "%.2f");
-        ImGui::SliderFloat("exposure", &state.exposure, 1.0f / 64.0f, 64.0f, "%.3g", ImGuiSliderFlags_Logarithmic);
+        ImGui::SliderFloat("exposure", &state.exposure, 1.0f / 64.0f, 64.0f, "%.3g",
+                           ImGuiSliderFlags_Logarithmic);
     }
     if (ImGui::CollapsingHeader("effects", ImGuiTreeNodeFlags_DefaultOpen))
         for (const std::string& effect : player.allEffects()) {
             bool on = player.effectOn(effect);
             if (ImGui::Checkbox(effect.c_str(), &on)) {
                 const std::string error = player.toggleEffect(effect);
-                state.status = error.empty() ? effect + (on ? " on" : " off") + " from the next frame" : error;
+                state.status =
+                    error.empty() ? effect + (on ? " on" : " off") + " from the next frame" : error;
             }
         }
     std::set<std::string> shown; // a setting two effects share is one widget

@@ -13,10 +13,10 @@ namespace glint::cli::view {
 
 // What the viewer shows and does, changed by the controls, the keys and scripts alike.
 struct ViewerState {
-    std::string view;        // the image shown ("" until the first frame names the default)
-    std::string split;       // a second image right of the divider, "" for none
-    float divider = 0.5f;    // fraction of the picture's width
-    float exposure = 1.0f;   // linear factor on tone-mapped colour
+    std::string view;      // the image shown ("" until the first frame names the default)
+    std::string split;     // a second image right of the divider, "" for none
+    float divider = 0.5f;  // fraction of the picture's width
+    float exposure = 1.0f; // linear factor on tone-mapped colour
     bool playing = true;
     bool loop = true;
     bool showUi = true;

@@ -24,8 +24,8 @@ Picture composePicture(std::uint32_t width, std::uint32_t height, const report::
             throw std::invalid_argument("view: an image without pixels");
     Picture picture{width, height, std::vector<std::uint8_t>(std::size_t{width} * height * 4, 255)};
     const float fraction = std::isfinite(divider) ? std::clamp(divider, 0.0f, 1.0f) : 0.5f;
-    const auto column = right ? static_cast<std::uint32_t>(std::floor(fraction * static_cast<float>(width)))
-                              : width;
+    const auto column =
+        right ? static_cast<std::uint32_t>(std::floor(fraction * static_cast<float>(width))) : width;
     for (std::uint32_t y = 0; y < height; ++y)
         for (std::uint32_t x = 0; x < width; ++x) {
             std::uint8_t* out = &picture.rgba[(std::size_t{y} * width + x) * 4];
@@ -36,9 +36,13 @@ Picture composePicture(std::uint32_t width, std::uint32_t height, const report::
             const report::RgbImage& side = x < column ? left : *right;
             // Nearest texel: the centre of pixel x lands in texel floor((x + 0.5) * w / width).
             const std::uint32_t sx =
-                side.width == width ? x : static_cast<std::uint32_t>((std::uint64_t{x} * 2 + 1) * side.width / (2ull * width));
+                side.width == width
+                    ? x
+                    : static_cast<std::uint32_t>((std::uint64_t{x} * 2 + 1) * side.width / (2ull * width));
             const std::uint32_t sy =
-                side.height == height ? y : static_cast<std::uint32_t>((std::uint64_t{y} * 2 + 1) * side.height / (2ull * height));
+                side.height == height
+                    ? y
+                    : static_cast<std::uint32_t>((std::uint64_t{y} * 2 + 1) * side.height / (2ull * height));
             const std::uint8_t* in = &side.rgb[(std::size_t{sy} * side.width + sx) * 3];
             out[0] = in[0];
             out[1] = in[1];

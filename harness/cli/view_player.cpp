@@ -9,7 +9,8 @@ namespace glint::cli::view {
 namespace {
 
 bool endsWith(const std::string& text, const std::string& suffix) {
-    return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+    return text.size() >= suffix.size() &&
+           text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
 const auto kNothing = [](const std::string&) { return false; };
@@ -125,14 +126,16 @@ std::optional<report::Image> Player::image(const std::string& name) {
     if (endsWith(name, "/error")) {
         const std::string effect = name.substr(0, name.size() - 6);
         const replay::FrameResult inputs = session_->read(frame_, [&](const std::string& image) {
-            return image == effect + "/reference" || image == effect + "/denoised" || image == effect + "/noisy";
+            return image == effect + "/reference" || image == effect + "/denoised" ||
+                   image == effect + "/noisy";
         });
         for (replay::ReferenceError& error :
              replay::referenceErrors(frame_, inputs, pending_.settings.real("roughnessThreshold")))
             if (error.effect == effect) return images_[name] = std::move(error.map);
         return std::nullopt;
     }
-    replay::FrameResult read = session_->read(frame_, [&](const std::string& image) { return image == name; });
+    replay::FrameResult read =
+        session_->read(frame_, [&](const std::string& image) { return image == name; });
     for (replay::NamedImage& image : read.images)
         if (image.name == name) return images_[name] = std::move(image.image);
     return std::nullopt;

@@ -47,11 +47,20 @@ bool parseScriptLine(std::string_view line, const std::string& where, ScriptComm
         std::size_t minimum, maximum; // argument counts
     };
     static const Verb verbs[] = {
-        {"set", Kind::Set, 1, 1},           {"toggle", Kind::Toggle, 1, 1},     {"view", Kind::View, 1, 1},
-        {"split", Kind::Split, 1, 1},       {"divider", Kind::Divider, 1, 1},   {"exposure", Kind::Exposure, 1, 1},
-        {"step", Kind::Step, 0, 1},         {"play", Kind::Play, 0, 0},         {"pause", Kind::Pause, 0, 0},
-        {"loop", Kind::Loop, 1, 1},         {"reset", Kind::Reset, 0, 0},       {"ui", Kind::Ui, 1, 1},
-        {"screenshot", Kind::Screenshot, 1, 1}, {"quit", Kind::Quit, 0, 0},
+        {"set", Kind::Set, 1, 1},
+        {"toggle", Kind::Toggle, 1, 1},
+        {"view", Kind::View, 1, 1},
+        {"split", Kind::Split, 1, 1},
+        {"divider", Kind::Divider, 1, 1},
+        {"exposure", Kind::Exposure, 1, 1},
+        {"step", Kind::Step, 0, 1},
+        {"play", Kind::Play, 0, 0},
+        {"pause", Kind::Pause, 0, 0},
+        {"loop", Kind::Loop, 1, 1},
+        {"reset", Kind::Reset, 0, 0},
+        {"ui", Kind::Ui, 1, 1},
+        {"screenshot", Kind::Screenshot, 1, 1},
+        {"quit", Kind::Quit, 0, 0},
     };
     const Verb* found = nullptr;
     for (const Verb& candidate : verbs)
@@ -62,9 +71,9 @@ bool parseScriptLine(std::string_view line, const std::string& where, ScriptComm
                         "screenshot, quit)");
     if (arguments.size() < found->minimum || arguments.size() > found->maximum)
         fail(where, verb + " takes " +
-                        (found->minimum == found->maximum ? std::to_string(found->minimum)
-                                                          : std::to_string(found->minimum) + " or " +
-                                                                std::to_string(found->maximum)) +
+                        (found->minimum == found->maximum
+                             ? std::to_string(found->minimum)
+                             : std::to_string(found->minimum) + " or " + std::to_string(found->maximum)) +
                         " argument(s), got " + std::to_string(arguments.size()));
     command = ScriptCommand{found->kind, arguments.empty() ? "" : arguments.front(), 0, where};
     switch (found->kind) {
@@ -77,7 +86,8 @@ bool parseScriptLine(std::string_view line, const std::string& where, ScriptComm
         break;
     case Kind::Divider:
         command.number = number(command.text, where, "divider");
-        if (command.number < 0 || command.number > 1) fail(where, "divider needs a fraction in [0, 1], got " + command.text);
+        if (command.number < 0 || command.number > 1)
+            fail(where, "divider needs a fraction in [0, 1], got " + command.text);
         break;
     case Kind::Exposure:
         command.number = number(command.text, where, "exposure");

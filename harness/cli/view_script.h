@@ -23,11 +23,27 @@
 namespace glint::cli::view {
 
 struct ScriptCommand {
-    enum class Kind { Set, Toggle, View, Split, Divider, Exposure, Step, Play, Pause, Loop, Reset, Ui, Screenshot, Quit };
+    enum class Kind {
+        Set,
+        Toggle,
+        View,
+        Split,
+        Divider,
+        Exposure,
+        Step,
+        Play,
+        Pause,
+        Loop,
+        Reset,
+        Ui,
+        Screenshot,
+        Quit
+    };
     Kind kind = Kind::Quit;
-    std::string text;   // Set: "name=value"; Toggle: effect; View/Split: image ("" = split off); Screenshot: file
-    double number = 0;  // Divider, Exposure, Step (count), Loop/Ui (1 on, 0 off)
-    std::string where;  // "<script>:<line>", for errors found when the command runs
+    std::string
+        text; // Set: "name=value"; Toggle: effect; View/Split: image ("" = split off); Screenshot: file
+    double number = 0; // Divider, Exposure, Step (count), Loop/Ui (1 on, 0 off)
+    std::string where; // "<script>:<line>", for errors found when the command runs
 };
 
 // One line; throws std::invalid_argument "<where>: <problem>" for a line it cannot read.

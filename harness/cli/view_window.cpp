@@ -4,9 +4,9 @@
 
 #define GLFW_INCLUDE_VULKAN
 #include <GLFW/glfw3.h>
-#include <imgui.h>
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_vulkan.h>
+#include <imgui.h>
 
 #include <algorithm>
 #include <cmath>
@@ -68,7 +68,8 @@ std::string missingDisplayMessage() {
 }
 
 Window::Window(std::uint32_t width, std::uint32_t height, const std::string& title) {
-    glfwSetErrorCallback([](int, const char* description) { lastGlfwError() = description ? description : "?"; });
+    glfwSetErrorCallback(
+        [](int, const char* description) { lastGlfwError() = description ? description : "?"; });
     if (!glfwInit()) {
         const char* display = std::getenv("DISPLAY");
         throw std::runtime_error("glint view: cannot open the display" +
@@ -231,8 +232,8 @@ void Presenter::createSwapchain() {
     if (extent_.width == UINT32_MAX) {
         extent_.width = std::clamp(static_cast<std::uint32_t>(std::max(width, 0)), caps.minImageExtent.width,
                                    caps.maxImageExtent.width);
-        extent_.height = std::clamp(static_cast<std::uint32_t>(std::max(height, 0)), caps.minImageExtent.height,
-                                    caps.maxImageExtent.height);
+        extent_.height = std::clamp(static_cast<std::uint32_t>(std::max(height, 0)),
+                                    caps.minImageExtent.height, caps.maxImageExtent.height);
     }
     if (extent_.width == 0 || extent_.height == 0) return; // minimized: nothing to show until restored
     const VkImageUsageFlags usage = VK_IMAGE_USAGE_TRANSFER_DST_BIT;
@@ -361,7 +362,8 @@ void Presenter::beginUi() {
 }
 
 Presenter::Rect Presenter::pictureRect(std::uint32_t pictureWidth, std::uint32_t pictureHeight) const {
-    const float windowWidth = static_cast<float>(extent_.width), windowHeight = static_cast<float>(extent_.height);
+    const float windowWidth = static_cast<float>(extent_.width),
+                windowHeight = static_cast<float>(extent_.height);
     if (pictureWidth == 0 || pictureHeight == 0 || windowWidth == 0 || windowHeight == 0) return {};
     const float scale = std::min(windowWidth / static_cast<float>(pictureWidth),
                                  windowHeight / static_cast<float>(pictureHeight));
@@ -387,13 +389,15 @@ void Presenter::present(const Picture& picture, bool drawUi, report::RgbImage* s
         return;
     }
     std::uint32_t index = 0;
-    VkResult acquired = vkAcquireNextImageKHR(device_, swapchain_, UINT64_MAX, imageAcquired_, VK_NULL_HANDLE, &index);
+    VkResult acquired =
+        vkAcquireNextImageKHR(device_, swapchain_, UINT64_MAX, imageAcquired_, VK_NULL_HANDLE, &index);
     if (acquired == VK_ERROR_OUT_OF_DATE_KHR) {
         GLINT_VK_CHECK(vkDeviceWaitIdle(device_));
         destroySwapchain();
         createSwapchain();
         if (!swapchain_) return;
-        acquired = vkAcquireNextImageKHR(device_, swapchain_, UINT64_MAX, imageAcquired_, VK_NULL_HANDLE, &index);
+        acquired =
+            vkAcquireNextImageKHR(device_, swapchain_, UINT64_MAX, imageAcquired_, VK_NULL_HANDLE, &index);
     }
     if (acquired != VK_SUBOPTIMAL_KHR) GLINT_VK_CHECK(acquired);
 
@@ -403,8 +407,8 @@ void Presenter::present(const Picture& picture, bool drawUi, report::RgbImage* s
     const VkDeviceSize screenshotBytes = VkDeviceSize{extent_.width} * extent_.height * 4;
     if (screenshot && screenshotReadback_.size < screenshotBytes) {
         vk::destroyBuffer(context_.device, screenshotReadback_);
-        screenshotReadback_ = vk::createBuffer(context_.device, screenshotBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                               vk::MemoryUse::Readback);
+        screenshotReadback_ = vk::createBuffer(context_.device, screenshotBytes,
+                                               VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::Readback);
     }
 
     const VkCommandBuffer cmd = commands_;
@@ -414,35 +418,40 @@ void Presenter::present(const Picture& picture, bool drawUi, report::RgbImage* s
     GLINT_VK_CHECK(vkBeginCommandBuffer(cmd, &begin));
     const VkPipelineStageFlags transfer = VK_PIPELINE_STAGE_TRANSFER_BIT;
     // The picture: uploaded, then the source of the blit into the window image.
-    imageBarrier(cmd, pictureImage_.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, transfer,
-                 VK_ACCESS_TRANSFER_READ_BIT, transfer, VK_ACCESS_TRANSFER_WRITE_BIT);
+    imageBarrier(cmd, pictureImage_.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                 transfer, VK_ACCESS_TRANSFER_READ_BIT, transfer, VK_ACCESS_TRANSFER_WRITE_BIT);
     VkBufferImageCopy copy{};
     copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     copy.imageExtent = {picture.width, picture.height, 1};
-    vkCmdCopyBufferToImage(cmd, pictureUpload_.buffer, pictureImage_.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
-                           &copy);
-    imageBarrier(cmd, pictureImage_.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                 transfer, VK_ACCESS_TRANSFER_WRITE_BIT, transfer, VK_ACCESS_TRANSFER_READ_BIT);
+    vkCmdCopyBufferToImage(cmd, pictureUpload_.buffer, pictureImage_.image,
+                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
+    imageBarrier(cmd, pictureImage_.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                 VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, transfer, VK_ACCESS_TRANSFER_WRITE_BIT, transfer,
+                 VK_ACCESS_TRANSFER_READ_BIT);
     // The window image: a dark background, the picture fitted into it, the controls over it.
     imageBarrier(cmd, windowImage_, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, transfer,
                  VK_ACCESS_TRANSFER_READ_BIT, transfer, VK_ACCESS_TRANSFER_WRITE_BIT);
     const VkClearColorValue background{{0.08f, 0.08f, 0.08f, 1.0f}};
     const VkImageSubresourceRange whole{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
     vkCmdClearColorImage(cmd, windowImage_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &background, 1, &whole);
-    imageBarrier(cmd, windowImage_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                 transfer, VK_ACCESS_TRANSFER_WRITE_BIT, transfer, VK_ACCESS_TRANSFER_WRITE_BIT);
+    imageBarrier(cmd, windowImage_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                 VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, transfer, VK_ACCESS_TRANSFER_WRITE_BIT, transfer,
+                 VK_ACCESS_TRANSFER_WRITE_BIT);
     const Rect rect = pictureRect(picture.width, picture.height);
     const auto x0 = static_cast<std::int32_t>(rect.x), y0 = static_cast<std::int32_t>(rect.y);
-    const auto x1 = static_cast<std::int32_t>(rect.x + rect.width), y1 = static_cast<std::int32_t>(rect.y + rect.height);
+    const auto x1 = static_cast<std::int32_t>(rect.x + rect.width),
+               y1 = static_cast<std::int32_t>(rect.y + rect.height);
     // Whole multiples (1:1 included) stay sharp texels; other scales are filtered.
     const bool wholeScale = std::fmod(rect.width, static_cast<float>(picture.width)) == 0.0f &&
                             std::fmod(rect.height, static_cast<float>(picture.height)) == 0.0f;
     const VkImageBlit blit = fullBlit(static_cast<std::int32_t>(picture.width),
                                       static_cast<std::int32_t>(picture.height), x0, y0, x1, y1);
     vkCmdBlitImage(cmd, pictureImage_.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, windowImage_,
-                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, wholeScale ? VK_FILTER_NEAREST : VK_FILTER_LINEAR);
-    imageBarrier(cmd, windowImage_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                 transfer, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit,
+                   wholeScale ? VK_FILTER_NEAREST : VK_FILTER_LINEAR);
+    imageBarrier(cmd, windowImage_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                 VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, transfer, VK_ACCESS_TRANSFER_WRITE_BIT,
+                 VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
                  VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
     VkRenderPassBeginInfo pass{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
     pass.renderPass = renderPass_;
@@ -451,15 +460,15 @@ void Presenter::present(const Picture& picture, bool drawUi, report::RgbImage* s
     vkCmdBeginRenderPass(cmd, &pass, VK_SUBPASS_CONTENTS_INLINE);
     if (drawUi) ImGui_ImplVulkan_RenderDrawData(ImGui::GetDrawData(), cmd);
     vkCmdEndRenderPass(cmd);
-    imageBarrier(cmd, windowImage_, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                 VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, transfer,
-                 VK_ACCESS_TRANSFER_READ_BIT);
+    imageBarrier(cmd, windowImage_, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                 VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                 VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, transfer, VK_ACCESS_TRANSFER_READ_BIT);
     if (screenshot) {
         VkBufferImageCopy back{};
         back.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
         back.imageExtent = {extent_.width, extent_.height, 1};
-        vkCmdCopyImageToBuffer(cmd, windowImage_, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, screenshotReadback_.buffer, 1,
-                               &back);
+        vkCmdCopyImageToBuffer(cmd, windowImage_, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                               screenshotReadback_.buffer, 1, &back);
         VkBufferMemoryBarrier toHost{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER};
         toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
         toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
@@ -467,17 +476,18 @@ void Presenter::present(const Picture& picture, bool drawUi, report::RgbImage* s
         toHost.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
         toHost.buffer = screenshotReadback_.buffer;
         toHost.size = VK_WHOLE_SIZE;
-        vkCmdPipelineBarrier(cmd, transfer, VK_PIPELINE_STAGE_HOST_BIT, 0, 0, nullptr, 1, &toHost, 0, nullptr);
+        vkCmdPipelineBarrier(cmd, transfer, VK_PIPELINE_STAGE_HOST_BIT, 0, 0, nullptr, 1, &toHost, 0,
+                             nullptr);
     }
     // The swapchain image: the window image copied in (the blit converts RGBA to its order).
     const VkImage target = swapchainImages_[index];
-    imageBarrier(cmd, target, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, transfer, 0, transfer,
-                 VK_ACCESS_TRANSFER_WRITE_BIT);
+    imageBarrier(cmd, target, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, transfer, 0,
+                 transfer, VK_ACCESS_TRANSFER_WRITE_BIT);
     const VkImageBlit toSwapchain =
         fullBlit(static_cast<std::int32_t>(extent_.width), static_cast<std::int32_t>(extent_.height), 0, 0,
                  static_cast<std::int32_t>(extent_.width), static_cast<std::int32_t>(extent_.height));
-    vkCmdBlitImage(cmd, windowImage_, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                   1, &toSwapchain, VK_FILTER_NEAREST);
+    vkCmdBlitImage(cmd, windowImage_, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, target,
+                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &toSwapchain, VK_FILTER_NEAREST);
     imageBarrier(cmd, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, transfer,
                  VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0);
     GLINT_VK_CHECK(vkEndCommandBuffer(cmd));

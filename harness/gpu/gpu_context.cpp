@@ -259,12 +259,12 @@ uint32_t findPresentQueueFamily(VkPhysicalDevice physical, VkSurfaceKHR surface)
 }
 
 void createDevice(Context& context, VkPhysicalDevice physical) {
-    const uint32_t family =
-        context.surface ? findPresentQueueFamily(physical, context.surface) : findComputeQueueFamily(physical);
+    const uint32_t family = context.surface ? findPresentQueueFamily(physical, context.surface)
+                                            : findComputeQueueFamily(physical);
     if (family == UINT32_MAX) {
-        throw std::runtime_error("glint: device '" + context.info.name + "' has no " +
-                                 (context.surface ? "queue that computes, draws and presents to the window"
-                                                  : "compute queue"));
+        throw std::runtime_error(
+            "glint: device '" + context.info.name + "' has no " +
+            (context.surface ? "queue that computes, draws and presents to the window" : "compute queue"));
     }
 
     const bool vulkan12 = std::min(context.info.apiVersion, context.instanceApiVersion) >= VK_API_VERSION_1_2;

@@ -43,7 +43,7 @@ struct Context {
     VkCommandPool commandPool = VK_NULL_HANDLE; // for submitAndWait; resettable buffers
     // Non-null when validation is on. Heap-allocated because the messenger holds its address.
     std::unique_ptr<ValidationStats> validation;
-    bool memoryBudget = false; // VK_EXT_memory_budget is enabled
+    bool memoryBudget = false;             // VK_EXT_memory_budget is enabled
     VkSurfaceKHR surface = VK_NULL_HANDLE; // with ContextOptions::createSurface; the queue presents to it
 };
 

@@ -209,8 +209,9 @@ const vk::Image& EffectRunner::outputImage(const OutputDesc& output) const {
     return image(output.resource);
 }
 
-std::vector<DecodedOutput> EffectRunner::readOutputs(const EffectPlan& plan, bool intermediates,
-                                                     const std::function<bool(const std::string&)>& wanted) const {
+std::vector<DecodedOutput>
+EffectRunner::readOutputs(const EffectPlan& plan, bool intermediates,
+                          const std::function<bool(const std::string&)>& wanted) const {
     const auto shown = [&](const std::string& name) { return !wanted || wanted(name); };
     std::vector<DecodedOutput> outputs;
     const std::uint32_t w = size_.width, h = size_.height;

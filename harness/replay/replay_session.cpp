@@ -301,9 +301,9 @@ void Session::readImages(const Running& running, const capture::Frame& frame,
             result.images.push_back({name + "/" + input.shownAs, name + "/input", *image});
     }
     // Final outputs first, then (for dump) the inputs and the intermediates.
-    std::vector<gpu::DecodedOutput> outputs = running.runner->readOutputs(
-        running.plan, options_.intermediates,
-        [&](const std::string& output) { return shown(name + "/" + output); });
+    std::vector<gpu::DecodedOutput> outputs =
+        running.runner->readOutputs(running.plan, options_.intermediates,
+                                    [&](const std::string& output) { return shown(name + "/" + output); });
     const auto add = [&](gpu::DecodedOutput& out) {
         result.images.push_back({name + "/" + out.name, name + "/" + out.pass,
                                  report::Image{out.width, out.height, out.channels, std::move(out.pixels)}});
@@ -328,7 +328,8 @@ void Session::readImages(const Running& running, const capture::Frame& frame,
         if (out.intermediate) add(out);
 }
 
-FrameResult Session::read(const capture::Frame& frame, const std::function<bool(const std::string&)>& wanted) const {
+FrameResult Session::read(const capture::Frame& frame,
+                          const std::function<bool(const std::string&)>& wanted) const {
     if (frame_ == 0) throw std::logic_error("replay: read() needs a frame run first");
     if (!options_.readback) throw std::logic_error("replay: read() needs a session with readback");
     FrameResult result;
@@ -340,7 +341,8 @@ bool Session::changeSettings(const SettingValues& settings) {
     for (const auto& running : running_)
         for (const std::string& fixed : running->descriptor->resourceSettings)
             if (settings.has(fixed) && running->settings.has(fixed) &&
-                settings.real(fixed) != running->settings.real(fixed) && fixed != running->descriptor->debugSetting)
+                settings.real(fixed) != running->settings.real(fixed) &&
+                fixed != running->descriptor->debugSetting)
                 return false;
     options_.settings = settings;
     for (const auto& running : running_) {

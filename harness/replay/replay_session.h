@@ -120,7 +120,8 @@ class Session {
     FrameResult run(const capture::Frame& frame, bool cut = false);
     // The images of the last run() again, `frame` being the frame it ran, filtered by `wanted`
     // (all when empty) instead of the options' filter. Needs readback.
-    FrameResult read(const capture::Frame& frame, const std::function<bool(const std::string&)>& wanted) const;
+    FrameResult read(const capture::Frame& frame,
+                     const std::function<bool(const std::string&)>& wanted) const;
     // New settings from the next frame on. False, with nothing changed, when one of them fixes
     // resources (EffectDescriptor::resourceSettings): that needs a new session.
     bool changeSettings(const SettingValues& settings);

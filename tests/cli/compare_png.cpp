@@ -37,8 +37,8 @@ int main(int argc, char** argv) {
             }
             beyond += differs ? 1 : 0;
         }
-        std::printf("%ux%u: largest difference %d, %zu pixels beyond %d\n", a.width, a.height, largest, beyond,
-                    allowed);
+        std::printf("%ux%u: largest difference %d, %zu pixels beyond %d\n", a.width, a.height, largest,
+                    beyond, allowed);
         if (mode == "same") return beyond == 0 ? 0 : 1;
         return beyond >= static_cast<std::size_t>(std::atoll(argv[5])) ? 0 : 1;
     } catch (const std::exception& error) {

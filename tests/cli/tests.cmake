@@ -134,3 +134,15 @@ add_test(NAME "cli: study.py adds FLIP and Pareto fronts to the quick study and 
           -P "${CMAKE_CURRENT_SOURCE_DIR}/cli/study_python.cmake")
 set_tests_properties("cli: study.py adds FLIP and Pareto fronts to the quick study and plots it"
   PROPERTIES LABELS gpu FIXTURES_REQUIRED study_quick SKIP_REGULAR_EXPRESSION "SKIP:")
+
+# glint view (docs/viewer.md): its script reader and pictures, then the window under Xvfb.
+glint_add_test_suite(NAME view LABELS unit SOURCES cli/view_test.cpp LIBS glint_cli_support)
+add_executable(glint_compare_png cli/compare_png.cpp)
+target_link_libraries(glint_compare_png PRIVATE glint_report)
+glint_target_defaults(glint_compare_png)
+add_test(NAME "cli: glint view's screenshots equal glint run's images, and scripts change settings and views"
+  COMMAND "${CMAKE_COMMAND}" "-DGLINT=$<TARGET_FILE:glint>" "-DCOMPARE=$<TARGET_FILE:glint_compare_png>"
+          "-DSCENES=${PROJECT_SOURCE_DIR}/harness/scenes" "-DOUT=${PROJECT_BINARY_DIR}/test-output/cli/view"
+          -P "${CMAKE_CURRENT_SOURCE_DIR}/cli/viewer.cmake")
+set_tests_properties("cli: glint view's screenshots equal glint run's images, and scripts change settings and views"
+  PROPERTIES LABELS "gpu" SKIP_REGULAR_EXPRESSION "GLINT_SKIP: ")
