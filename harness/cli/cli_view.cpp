@@ -34,44 +34,53 @@ struct OpenedSource {
     view::FrameSource frames;
 };
 
-// Keys, edge-triggered: space play/pause, right arrow step, R reset histories, H the controls,
-// P a screenshot, +/- exposure, Escape quit.
-class Keys {
-  public:
-    bool pressed(GLFWwindow* window, int key) {
-        const bool down = glfwGetKey(window, key) == GLFW_PRESS;
-        const bool was = down_[key];
-        down_[key] = down;
-        return down && !was;
-    }
-
-  private:
-    std::map<int, bool> down_;
-};
-
-void handleInput(GLFWwindow* window, Keys& keys, view::Player& player, view::ViewerState& state,
+// Keys: space play/pause, right arrow step, R reset histories, H the controls, P a
+// screenshot, + and - exposure, Escape quit (none while the controls take the keyboard).
+void handleInput(view::Window& window, view::Player& player, view::ViewerState& state,
                  const view::Presenter& presenter, std::uint32_t width, std::uint32_t height) {
     const ImGuiIO& io = ImGui::GetIO();
-    if (!io.WantCaptureKeyboard) {
-        if (keys.pressed(window, GLFW_KEY_SPACE)) state.playing = !state.playing;
-        if (keys.pressed(window, GLFW_KEY_RIGHT)) state.stepRequested = true;
-        if (keys.pressed(window, GLFW_KEY_R)) player.resetHistories();
-        if (keys.pressed(window, GLFW_KEY_H)) state.showUi = !state.showUi;
-        if (keys.pressed(window, GLFW_KEY_P)) state.screenshotRequested = true;
-        if (keys.pressed(window, GLFW_KEY_EQUAL) || keys.pressed(window, GLFW_KEY_KP_ADD))
+    for (const int key : window.takePressedKeys()) {
+        if (io.WantCaptureKeyboard) continue;
+        switch (key) {
+        case GLFW_KEY_SPACE:
+            state.playing = !state.playing;
+            break;
+        case GLFW_KEY_RIGHT:
+            state.stepRequested = true;
+            break;
+        case GLFW_KEY_R:
+            player.resetHistories();
+            break;
+        case GLFW_KEY_H:
+            state.showUi = !state.showUi;
+            break;
+        case GLFW_KEY_P:
+            state.screenshotRequested = true;
+            break;
+        case GLFW_KEY_EQUAL:
+        case GLFW_KEY_KP_ADD:
             state.exposure *= 2;
-        if (keys.pressed(window, GLFW_KEY_MINUS) || keys.pressed(window, GLFW_KEY_KP_SUBTRACT))
+            break;
+        case GLFW_KEY_MINUS:
+        case GLFW_KEY_KP_SUBTRACT:
             state.exposure /= 2;
-        if (keys.pressed(window, GLFW_KEY_ESCAPE)) state.quit = true;
+            break;
+        case GLFW_KEY_ESCAPE:
+            state.quit = true;
+            break;
+        default:
+            break;
+        }
     }
+    GLFWwindow* handle = window.handle();
     // Dragging on the picture moves the split's divider.
     if (!state.split.empty() && !io.WantCaptureMouse &&
-        glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS) {
+        glfwGetMouseButton(handle, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS) {
         double x = 0, y = 0;
-        glfwGetCursorPos(window, &x, &y);
+        glfwGetCursorPos(handle, &x, &y);
         int windowWidth = 0, windowHeight = 0, framebufferWidth = 0, framebufferHeight = 0;
-        glfwGetWindowSize(window, &windowWidth, &windowHeight);
-        glfwGetFramebufferSize(window, &framebufferWidth, &framebufferHeight);
+        glfwGetWindowSize(handle, &windowWidth, &windowHeight);
+        glfwGetFramebufferSize(handle, &framebufferWidth, &framebufferHeight);
         const double toPixels = windowWidth > 0 ? static_cast<double>(framebufferWidth) / windowWidth : 1.0;
         const view::Presenter::Rect rect = presenter.pictureRect(width, height);
         if (rect.width > 0)
@@ -259,7 +268,6 @@ int runView(const ViewOptions& options) {
             state.playing = !scripted;
             state.showUi = !scripted || options.ui;
             state.view = player.defaultView();
-            Keys keys;
             std::size_t next = 0;
             std::uint64_t steps = 0;
             std::uint32_t screenshots = 0;
@@ -273,13 +281,21 @@ int runView(const ViewOptions& options) {
                     --steps;
                 } else if (screenshot.empty() && !state.quit &&
                            (state.stepRequested || (state.playing && !scriptRunning))) {
-                    if (!player.advance(state.loop)) state.playing = false;
+                    // A change from the controls that the effects refuse is undone and shown;
+                    // a script's is an error.
+                    try {
+                        if (!player.advance(state.loop)) state.playing = false;
+                    } catch (const std::invalid_argument& error) {
+                        if (scripted) throw;
+                        state.status = std::string(error.what()) + " (the change is undone)";
+                        player.revertChanges();
+                    }
                 }
                 state.stepRequested = false;
                 if (state.quit) break;
                 presenter.beginUi();
                 if (state.showUi) drawControls(player, state, context, opened.frames.count);
-                handleInput(window.handle(), keys, player, state, presenter, width, height);
+                handleInput(window, player, state, presenter, width, height);
                 if (state.screenshotRequested && screenshot.empty()) {
                     char name[64];
                     std::snprintf(name, sizeof name, "glint_view_frame%04zu_%u.png", player.frameIndex(),

@@ -69,7 +69,7 @@ void viewCombo(const char* label, const std::vector<std::string>& names, std::st
 }
 
 void overlay(const Player& player, const gpu::Context& context, std::size_t frameCount) {
-    ImGui::Text("frame %zu of %zu (%llu run)", player.frameIndex(), frameCount,
+    ImGui::Text("frame %zu of 0..%zu (%llu run)", player.frameIndex(), frameCount - 1,
                 static_cast<unsigned long long>(player.framesRun()));
     ImGui::Text("%s, subgroup %u", context.info.name.c_str(), context.device.subgroupSize);
     if (player.timings().empty()) {

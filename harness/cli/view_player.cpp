@@ -52,6 +52,7 @@ void Player::runFrame(bool cut) {
     }
     const replay::FrameResult result = session_->run(frame_, cut || framesRun_ == 0);
     ++framesRun_;
+    ran_ = pending_;
     timings_ = result.timings;
     counters_ = result.counters;
     images_.clear();
@@ -79,6 +80,11 @@ bool Player::advance(bool loop) {
     cut_ = false;
     runFrame(cut);
     return true;
+}
+
+void Player::revertChanges() {
+    pending_ = ran_;
+    sessionStale_ = true;
 }
 
 std::string Player::setSetting(const std::string& assignment) {

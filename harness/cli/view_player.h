@@ -41,6 +41,9 @@ class Player {
     bool advance(bool loop);
     // The next frame starts every history again.
     void resetHistories() { cut_ = true; }
+    // Back to the settings and effects of the last frame that ran, for a change the effects
+    // refused when they planned the frame (the next frame then starts a new session).
+    void revertChanges();
 
     // "name=value" from the next frame on; one line of error (nothing changed) when the setting
     // does not exist or its value is out of range.
@@ -73,6 +76,7 @@ class Player {
     const gpu::Context& context_;
     const FrameSource& source_;
     replay::SessionOptions pending_; // the settings and effects of the next frame
+    replay::SessionOptions ran_;     // those of the last frame that ran
     std::vector<std::string> allEffects_;
     bool sessionStale_ = false; // the pending settings or effects need a new session
     bool namesStale_ = true;    // viewNames_ to be listed again after the next frame

@@ -89,6 +89,18 @@ Window::Window(std::uint32_t width, std::uint32_t height, const std::string& tit
         glfwTerminate();
         throw std::runtime_error("glint view: cannot create a window (GLFW: " + lastGlfwError() + ")");
     }
+    // Installed before Dear ImGui's, which calls it before its own.
+    glfwSetWindowUserPointer(window_, this);
+    glfwSetKeyCallback(window_, [](GLFWwindow* window, int key, int, int action, int) {
+        if (action == GLFW_PRESS || action == GLFW_REPEAT)
+            static_cast<Window*>(glfwGetWindowUserPointer(window))->pressedKeys_.push_back(key);
+    });
+}
+
+std::vector<int> Window::takePressedKeys() {
+    std::vector<int> keys;
+    keys.swap(pressedKeys_);
+    return keys;
 }
 
 Window::~Window() {
@@ -193,12 +205,16 @@ Presenter::Presenter(const gpu::Context& context, Window& window)
         gpu::submitAndWait(context_, [](VkCommandBuffer cmd) { ImGui_ImplVulkan_CreateFontsTexture(cmd); });
         ImGui_ImplVulkan_DestroyFontUploadObjects();
     } catch (...) {
-        this->~Presenter();
+        release();
         throw;
     }
 }
 
 Presenter::~Presenter() {
+    release();
+}
+
+void Presenter::release() {
     if (device_) (void)vkDeviceWaitIdle(device_);
     if (ImGui::GetCurrentContext()) {
         if (ImGui::GetIO().BackendRendererUserData) ImGui_ImplVulkan_Shutdown();

@@ -39,9 +39,13 @@ class Window {
     void pollEvents() const;
     // The size of the largest monitor's mode, for the initial window size (0 when unknown).
     static void screenSize(std::uint32_t& width, std::uint32_t& height);
+    // The keys pressed since the last call (GLFW key codes, in order). Kept from the key
+    // events themselves: a tap shorter than a frame is pressed and released between two polls.
+    std::vector<int> takePressedKeys();
 
   private:
     GLFWwindow* window_ = nullptr;
+    std::vector<int> pressedKeys_;
 };
 
 // The swapchain, the window image the controls are drawn into, and Dear ImGui's Vulkan and
@@ -66,6 +70,7 @@ class Presenter {
     void present(const Picture& picture, bool drawUi, report::RgbImage* screenshot);
 
   private:
+    void release(); // everything, whatever was made (the destructor, a failed constructor)
     void createSwapchain();
     void destroySwapchain();
     void ensurePictureImage(std::uint32_t width, std::uint32_t height);
