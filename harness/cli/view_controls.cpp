@@ -93,6 +93,16 @@ void overlay(const Player& player, const gpu::Context& context, std::size_t fram
     }
     for (const replay::Counter& counter : player.counters())
         ImGui::Text("%s: %.4g", counter.name.c_str(), counter.value);
+    for (const auto& [effect, error] : player.errors()) {
+        if (error.pixels == 0) {
+            ImGui::Text("%s error: no pixels scored", effect.c_str());
+        } else if (error.noisyMean >= 0) {
+            ImGui::Text("%s error: %.4f (noisy input %.4f) over %zu pixels", effect.c_str(), error.mean,
+                        error.noisyMean, error.pixels);
+        } else {
+            ImGui::Text("%s error: %.4f over %zu pixels", effect.c_str(), error.mean, error.pixels);
+        }
+    }
 }
 
 } // namespace

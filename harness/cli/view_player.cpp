@@ -1,7 +1,5 @@
 #include "view_player.h"
 
-#include "replay/replay_error.h"
-
 #include <algorithm>
 #include <stdexcept>
 
@@ -56,6 +54,7 @@ void Player::runFrame(bool cut) {
     timings_ = result.timings;
     counters_ = result.counters;
     images_.clear();
+    errors_.clear();
     if (!namesStale_) return;
     // Every image's name, from one full read: they change only with the effects and settings.
     namesStale_ = false;
@@ -137,7 +136,11 @@ std::optional<report::Image> Player::image(const std::string& name) {
         });
         for (replay::ReferenceError& error :
              replay::referenceErrors(frame_, inputs, pending_.settings.real("roughnessThreshold")))
-            if (error.effect == effect) return images_[name] = std::move(error.map);
+            if (error.effect == effect) {
+                report::Image map = std::move(error.map);
+                errors_[effect] = error;
+                return images_[name] = std::move(map);
+            }
         return std::nullopt;
     }
     replay::FrameResult read =

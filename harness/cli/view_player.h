@@ -6,6 +6,7 @@
 
 #include "capture/capture_frame.h"
 #include "capture/environment_io.h"
+#include "replay/replay_error.h"
 #include "replay/replay_session.h"
 
 #include <gpu/gpu_context.h>
@@ -69,6 +70,9 @@ class Player {
     // The image `name` of the current frame (read back once a frame); nullopt when there is none.
     std::optional<report::Image> image(const std::string& name);
     const capture::Frame& frame() const { return frame_; }
+    // The mean errors of the current frame's "<effect>/error" images read so far (replay_error.h:
+    // the metric of glint run), by effect.
+    const std::map<std::string, replay::ReferenceError>& errors() const { return errors_; }
 
   private:
     void startSession(bool keepNumbering);
@@ -88,7 +92,8 @@ class Player {
     std::vector<replay::PassTime> timings_;
     std::vector<replay::Counter> counters_;
     std::vector<std::string> viewNames_;
-    std::map<std::string, report::Image> images_; // read this frame
+    std::map<std::string, report::Image> images_;          // read this frame
+    std::map<std::string, replay::ReferenceError> errors_; // this frame's, without their maps
 };
 
 } // namespace glint::cli::view

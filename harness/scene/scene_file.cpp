@@ -182,12 +182,14 @@ std::string vectorText(const double (&v)[3]) {
 // Each key is checked too: frames past the last one (--frame-count) show it.
 void checkLookAt(const Reader& r, const toml::table& t, const Scene& scene) {
     const CameraDesc& c = scene.camera;
-    const double up[3] = {c.up[0], c.up[1], c.up[2]};
+    const double up[3] = {static_cast<double>(c.up[0]), static_cast<double>(c.up[1]),
+                          static_cast<double>(c.up[2])};
     const double upLength = std::sqrt(up[0] * up[0] + up[1] * up[1] + up[2] * up[2]);
     const toml::node* upNode = t.get("up") ? t.get("up") : &t;
     if (!(upLength > 0.0)) r.fail(upNode, "camera.up", "must not be zero");
     const auto check = [&](const Vec3& position, const Vec3& target, const std::string& when) {
-        const double eye[3] = {position[0], position[1], position[2]};
+        const double eye[3] = {static_cast<double>(position[0]), static_cast<double>(position[1]),
+                               static_cast<double>(position[2])};
         const double f[3] = {static_cast<double>(target[0]) - eye[0], static_cast<double>(target[1]) - eye[1],
                              static_cast<double>(target[2]) - eye[2]};
         const double length = std::sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);

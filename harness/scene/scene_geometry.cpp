@@ -13,8 +13,12 @@ using capture::Mat4;
 struct D3 {
     double x = 0.0, y = 0.0, z = 0.0;
 };
+// Scene vectors are float; the camera and matrix math runs in double.
+double wide(float v) {
+    return static_cast<double>(v);
+}
 D3 d3(const Vec3& v) {
-    return {v[0], v[1], v[2]};
+    return {wide(v[0]), wide(v[1]), wide(v[2])};
 }
 D3 operator-(D3 a, D3 b) {
     return {a.x - b.x, a.y - b.y, a.z - b.z};
@@ -34,8 +38,9 @@ double lerp(double a, double b, double t) {
     return a + (b - a) * t;
 }
 Vec3 lerp(const Vec3& a, const Vec3& b, double t) {
-    return {static_cast<float>(lerp(a[0], b[0], t)), static_cast<float>(lerp(a[1], b[1], t)),
-            static_cast<float>(lerp(a[2], b[2], t))};
+    return {static_cast<float>(lerp(wide(a[0]), wide(b[0]), t)),
+            static_cast<float>(lerp(wide(a[1]), wide(b[1]), t)),
+            static_cast<float>(lerp(wide(a[2]), wide(b[2]), t))};
 }
 
 // Index of the keyframe segment containing `frame` and the blend inside it; clamps outside.
@@ -52,9 +57,9 @@ std::pair<const Key*, std::pair<const Key*, double>> segment(const std::vector<K
 
 Mat4 translation(const Vec3& t) {
     Mat4 m = capture::identity();
-    m.m[3] = t[0];
-    m.m[7] = t[1];
-    m.m[11] = t[2];
+    m.m[3] = wide(t[0]);
+    m.m[7] = wide(t[1]);
+    m.m[11] = wide(t[2]);
     return m;
 }
 Mat4 rotation(int axis, double degrees) {
@@ -70,9 +75,9 @@ Mat4 rotation(int axis, double degrees) {
 }
 Mat4 scaling(const Vec3& s) {
     Mat4 m = capture::identity();
-    m.m[0] = s[0];
-    m.m[5] = s[1];
-    m.m[10] = s[2];
+    m.m[0] = wide(s[0]);
+    m.m[5] = wide(s[1]);
+    m.m[10] = wide(s[2]);
     return m;
 }
 
@@ -80,7 +85,7 @@ shaders::float3 f3(double x, double y, double z) {
     return {static_cast<float>(x), static_cast<float>(y), static_cast<float>(z)};
 }
 shaders::float3 apply(const Mat4& m, const Vec3& p) {
-    const capture::Vec4 q = capture::transform(m, {p[0], p[1], p[2], 1.0});
+    const capture::Vec4 q = capture::transform(m, {wide(p[0]), wide(p[1]), wide(p[2]), 1.0});
     return f3(q.x, q.y, q.z);
 }
 
@@ -128,8 +133,8 @@ Mat4 objectMatrix(const ObjectDesc& object, double frame) {
     const Vec3 position = lerp(a->position, b->position, t);
     const Vec3 rot = lerp(a->rotationDegrees, b->rotationDegrees, t);
     const Vec3 scale = lerp(a->scale, b->scale, t);
-    Mat4 r =
-        capture::multiply(rotation(2, rot[2]), capture::multiply(rotation(1, rot[1]), rotation(0, rot[0])));
+    Mat4 r = capture::multiply(rotation(2, wide(rot[2])),
+                               capture::multiply(rotation(1, wide(rot[1])), rotation(0, wide(rot[0]))));
     return capture::multiply(translation(position), capture::multiply(r, scaling(scale)));
 }
 

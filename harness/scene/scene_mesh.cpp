@@ -286,7 +286,7 @@ MaterialDesc materialOf(const aiMaterial& material, std::uint32_t index,
 // A unit vector as it is (so that a direction written from a scene file reads back bit for
 // bit), anything else divided by its length.
 Vec3 normalised(const aiVector3D& v) {
-    const double x = v.x, y = v.y, z = v.z;
+    const double x = static_cast<double>(v.x), y = static_cast<double>(v.y), z = static_cast<double>(v.z);
     const double length = std::sqrt(x * x + y * y + z * z);
     if (std::abs(length - 1.0) <= 4.0 * static_cast<double>(std::numeric_limits<float>::epsilon()))
         return {v.x, v.y, v.z};
