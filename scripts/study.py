@@ -140,8 +140,8 @@ def plot_scaling(rows, sweep, x_of, xlabel, title, path):
 
 
 def scored(value, form="{:.4f}"):
-    """A metric, or "not scored" where no pixel was scored (never a number for nothing)."""
-    return "not scored" if value is None else form.format(value)
+    """A metric, or "no pixels scored" where no pixel was scored (never a number for nothing)."""
+    return "no pixels scored" if value is None else form.format(value)
 
 
 def study_tables(rows):

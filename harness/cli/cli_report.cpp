@@ -81,7 +81,7 @@ report::Section runSection(const std::filesystem::path& dir, const nlohmann::jso
             const double noisy = values.value("noisyLast", -1.0);
             // null: that frame's error mask held no pixel (glint run wrote nothing to score).
             const auto scored = [](const nlohmann::json& value) {
-                return value.is_number() ? fixed(value.get<double>(), 4) : std::string("not scored");
+                return value.is_number() ? fixed(value.get<double>(), 4) : std::string("no pixels scored");
             };
             errors.rows.push_back({effect, scored(values.at("first")), scored(values.at("last")),
                                    noisy >= 0.0 ? fixed(noisy, 4) : "-"});

@@ -147,7 +147,7 @@ int runRun(const ReplayOptions& options) {
         const auto scored = [](double value) {
             char text[32];
             std::snprintf(text, sizeof text, "%.4f", value);
-            return std::isnan(value) ? std::string("not scored") : std::string(text);
+            return std::isnan(value) ? std::string("no pixels scored") : std::string(text);
         };
         const auto scoredJson = [](double value) {
             return std::isnan(value) ? nlohmann::json(nullptr) : nlohmann::json(value);

@@ -3,7 +3,7 @@
 follow from the definition (a point is on the front when no other point of its scene and effect
 is at least as fast and as accurate, and strictly better in one), and FLIP of image pairs whose
 answer is known without FLIP's code: identical images score 0, a difference outside the mask
-scores 0, a larger uniform difference scores more, and an empty mask is not scored.
+scores 0, a larger uniform difference scores more, and an empty mask scores no pixels.
 
 Run by tests/cli/study_python.cmake with the venv's interpreter (scripts/python_env.sh)."""
 import pathlib
@@ -39,7 +39,7 @@ class ParetoTest(unittest.TestCase):
         rows = [point("room", 1.0, None), point("room", 2.0, 0.4), point("room", 3.0, 0.2)]
         study.mark_pareto(rows)
         self.assertEqual([r["pareto"] for r in rows], [0, 1, 1])
-        self.assertEqual(study.scored(None), "not scored")
+        self.assertEqual(study.scored(None), "no pixels scored")
         self.assertEqual(study.scored(0.12345), "0.1235")
 
 
@@ -112,7 +112,7 @@ class AnchorTest(unittest.TestCase):
             study.plot_effect(rows, "reflections", "test", path, anchors)
             self.assertGreater(path.stat().st_size, 0)
         table = "\n".join(study.anchor_tables(anchors))
-        self.assertIn("| reflections | room | other | 5.0 | GPU X, 1080p | 0.2000 | not scored | CPU Y, 360p |", table)
+        self.assertIn("| reflections | room | other | 5.0 | GPU X, 1080p | 0.2000 | no pixels scored | CPU Y, 360p |", table)
 
     def test_anchors_are_drawn_only_on_their_device_and_size(self):
         anchor = {"device": "NVIDIA H200", "width": 1920, "height": 1080}
