@@ -90,9 +90,10 @@ std::string Player::setSetting(const std::string& assignment) {
     SettingValues settings = pending_.settings;
     const std::string error = settings.assign(assignment);
     if (!error.empty()) return error;
+    // A setting that fixes resources needs a new session (which lists the images again);
+    // the others keep the plan's outputs, and so the names.
     if (!session_->changeSettings(settings)) sessionStale_ = true;
     pending_.settings = settings;
-    namesStale_ = true;
     return {};
 }
 
