@@ -158,6 +158,21 @@ std::string runScript(const std::vector<view::ScriptCommand>& commands, std::siz
     return {};
 }
 
+// The picture is mapped on the CPU; while nothing it depends on changes (paused, or the
+// controls moving), the last one is shown again.
+struct PictureCache {
+    std::uint64_t framesRun = 0;
+    std::string view, split;
+    float divider = 0, exposure = 0;
+    view::Picture picture;
+
+    bool matches(const view::Player& player, const view::ViewerState& state) const {
+        return !picture.rgba.empty() && framesRun == player.framesRun() && view == state.view &&
+               split == state.split && (split.empty() || divider == state.divider) &&
+               exposure == state.exposure;
+    }
+};
+
 view::Picture picture(view::Player& player, view::ViewerState& state) {
     const capture::Frame& frame = player.frame();
     std::optional<report::Image> left = player.image(state.view);
@@ -271,6 +286,7 @@ int runView(const ViewOptions& options) {
             std::size_t next = 0;
             std::uint64_t steps = 0;
             std::uint32_t screenshots = 0;
+            PictureCache cache;
             while (!state.quit) {
                 window.pollEvents();
                 if (window.closeRequested()) break;
@@ -304,7 +320,12 @@ int runView(const ViewOptions& options) {
                 }
                 state.screenshotRequested = false;
                 report::RgbImage shot;
-                presenter.present(picture(player, state), state.showUi, screenshot.empty() ? nullptr : &shot);
+                if (!cache.matches(player, state)) {
+                    cache.picture = picture(player, state); // may fall back to the default view
+                    cache = {player.framesRun(), state.view,     state.split,
+                             state.divider,      state.exposure, std::move(cache.picture)};
+                }
+                presenter.present(cache.picture, state.showUi, screenshot.empty() ? nullptr : &shot);
                 if (!screenshot.empty()) {
                     report::writeRgbPng(screenshot, shot.width, shot.height, shot.rgb);
                     std::printf("wrote %s (frame %zu, %s)\n", screenshot.c_str(), player.frameIndex(),
