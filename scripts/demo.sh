@@ -3,13 +3,23 @@
 #   - lists the Vulkan devices,
 #   - describes the bundled sample capture,
 #   - simulates every bundled scene (harness/scenes) into a capture sequence under
-#     out/demo/captures (only when that capture is missing),
+#     out/demo/captures at GLINT_DEMO_SIZE (default 160x90) for GLINT_DEMO_FRAMES frames
+#     (default 16, so the temporal denoisers converge), the reference at GLINT_DEMO_SPP samples
+#     per pixel (default 2: lavapipe's reference tracing bounds the demo's time on a machine
+#     without a GPU; docs/performance.md, "The demo's simulations on a 2-core machine"; set
+#     GLINT_DEMO_SIZE=480x270 GLINT_DEMO_SPP=64 on a GPU for converged references), and again with an independent seed (2) for the
+#     reference noise floor; a capture is simulated again only when its scene file, size, frame
+#     count or sample count changed (demo_key in its folder),
 #   - replays every capture through the effects it declares (glint run, reflections with the
-#     denoiser and the composite) into out/demo/runs, and writes out/demo/report.html
-#     (images side by side, errors against the references, per-pass times, the device),
+#     denoiser and the composite, --second-reference for the noise floor) into out/demo/runs,
+#     and writes out/demo/report.html (per scene the metric in words, error against frame of
+#     the noisy input, the output and the reference noise floor, the images side by side,
+#     per-pass times, the FidelityFX anchor points with their conditions, the device),
 #   - measures the depth pyramid at 1920x1080 and SSSR on the glossy room at 640x360 on the
 #     selected device (per-pass times, traced fraction, how the rays ended),
-# and writes the text results to out/report.md. GLINT_OUT moves out/, GLINT_DEVICE picks the device.
+# and writes the text results to out/report.md. GLINT_OUT moves out/, GLINT_DEVICE picks the device,
+# GLINT_DEMO_SCENES (space-separated names) limits the scenes. A line "[step/steps] ..." on stderr
+# says what it is doing.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 "$root/scripts/setup.sh" release glint glint_make_sample
@@ -17,7 +27,43 @@ cd "$root"
 bin=build/release/harness
 glint="$bin/cli/glint"
 out=${GLINT_OUT:-out}
+size=${GLINT_DEMO_SIZE:-160x90}
+frames=${GLINT_DEMO_FRAMES:-16}
+spp=${GLINT_DEMO_SPP:-2}
 mkdir -p "$out/demo/captures" "$out/demo/runs"
+scenes=()
+for scene in harness/scenes/*.toml; do
+  name=$(basename "$scene" .toml)
+  if [ -n "${GLINT_DEMO_SCENES:-}" ] && [[ " $GLINT_DEMO_SCENES " != *" $name "* ]]; then continue; fi
+  scenes+=("$scene")
+done
+if [ ${#scenes[@]} -eq 0 ]; then
+  echo "demo: GLINT_DEMO_SCENES='${GLINT_DEMO_SCENES:-}' names no scene of harness/scenes" >&2
+  exit 2
+fi
+# Per scene: two simulations and a run; then the report and the two benchmarks.
+steps=$((3 * ${#scenes[@]} + 3))
+step=0
+started=$SECONDS
+progress() {
+  step=$((step + 1))
+  printf '[%d/%d] %s (%ds elapsed)\n' "$step" "$steps" "$1" $((SECONDS - started)) >&2
+}
+# Simulates scene $1 with seed $2 into $3 unless $3 holds a capture of the same scene file,
+# size, frame count, sample count and seed.
+simulate() {
+  local scene=$1 seed=$2 dir=$3
+  local key
+  key="$(sha1sum <"$scene" | cut -d' ' -f1) size=$size frames=$frames spp=${spp:-scene} seed=$seed"
+  if [ -f "$dir/manifest.json" ] && [ "$(cat "$dir/demo_key" 2>/dev/null)" = "$key" ]; then
+    progress "$(basename "$scene" .toml): capture with seed $seed is up to date"
+    return
+  fi
+  progress "simulating $(basename "$scene" .toml), $size, $frames frames, reference seed $seed ${spp:+at $spp spp}"
+  rm -rf "$dir"
+  "$glint" simulate "$scene" --out "$dir" --size "$size" --frame-count "$frames" --seed "$seed" ${spp:+--spp "$spp"}
+  echo "$key" >"$dir/demo_key"
+}
 "$bin/capture/glint_make_sample" "$out"
 {
   echo "# glint demo report"
@@ -32,31 +78,36 @@ mkdir -p "$out/demo/captures" "$out/demo/runs"
   "$glint" info "$out/sample"
   echo '```'
   echo
-  echo "## Bundled scenes (glint simulate when missing, then glint run)"
+  echo "## Bundled scenes at $size, $frames frames (glint simulate when changed, then glint run)"
   runs=()
-  for scene in harness/scenes/*.toml; do
+  for scene in "${scenes[@]}"; do
     name=$(basename "$scene" .toml)
     echo
     echo "### $name"
     echo '```'
-    if [ ! -f "$out/demo/captures/$name/manifest.json" ]; then
-      "$glint" simulate "$scene" --out "$out/demo/captures/$name"
-    fi
-    "$glint" run "$out/demo/captures/$name" --out "$out/demo/runs/$name" --set denoise=true --set composite=true 2>/dev/null
+    simulate "$scene" 1 "$out/demo/captures/$name"
+    simulate "$scene" 2 "$out/demo/captures/$name.seed2"
+    progress "running $name"
+    "$glint" run "$out/demo/captures/$name" --out "$out/demo/runs/$name" --set denoise=true --set composite=true \
+      --second-reference "$out/demo/captures/$name.seed2" 2>/dev/null
     echo '```'
     runs+=("$out/demo/runs/$name")
   done
   echo
-  "$glint" report "${runs[@]}" --out "$out/demo/report.html" --title "glint demo: the bundled scenes"
+  progress "writing $out/demo/report.html"
+  "$glint" report "${runs[@]}" --out "$out/demo/report.html" --title "glint demo: the bundled scenes" \
+    --anchors docs/anchors/fidelityfx-sdk-1.1.4.json
   echo
+  progress "benchmarking the depth pyramid"
   echo "## Depth pyramid, 1920x1080 (glint bench)"
   echo '```'
   "$glint" bench depth_pyramid --size 1920x1080 --runs 20
   echo '```'
   echo
+  progress "benchmarking SSSR"
   echo "## Stochastic screen-space reflections, glossy room 640x360 (glint bench sssr)"
   echo '```'
   "$glint" bench sssr --size 640x360 --runs 10 --set debugOutput=true
   echo '```'
 } | tee "$out/report.md"
-echo "demo: wrote $out/demo/report.html, $out/report.md and the captures under $out/demo/captures"
+echo "demo: $((SECONDS - started)) s; wrote $out/demo/report.html, $out/report.md and the captures under $out/demo/captures"

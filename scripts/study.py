@@ -9,7 +9,8 @@ several runs (e.g. one per effect) are combined by naming every folder; the resu
 first. Adds the columns `flip` and `pareto` to each folder's study.csv and writes
 DIR/<effect>.png (error against time, one colour per scene, each scene's Pareto front
 connected), DIR/scaling_resolution.png and DIR/scaling_fraction.png (from the first folder
-with a scaling.json) and DIR/study.md (the tables).
+with a scaling.json) and DIR/study.md (the tables, with the presets and the budget choice
+glint study made).
 
 FLIP is NVIDIA's perceptual difference (flip-evaluator): HDR-FLIP for reflection radiance,
 LDR-FLIP for shadow visibility shown as a grey image. The images are zeroed outside the pixels
@@ -176,6 +177,32 @@ def anchor_tables(anchors):
     return lines + [""]
 
 
+def choice_tables(study):
+    """The presets and the budget choice glint study made from its points (study.json's
+    "presets" and "budget"; the rule is cli_presets.h's, docs/accuracy-vs-time.md "Presets")."""
+    presets = study.get("presets", {})
+    if not presets:
+        return []
+    lines = ["### presets (presets.toml)", "",
+             "Each point's time on its slowest scene and its mean error relative to the defaults point's.", "",
+             "| effect | preset | point | settings | time (µs) | error (× defaults) |", "|---|---|---|---|---|---|"]
+    order = ["low", "medium", "high", "ultra"]  # study.json's objects come back sorted by name
+    for effect, chosen in presets.items():
+        for name, p in sorted(chosen.items(), key=lambda item: order.index(item[0]) if item[0] in order else 4):
+            lines.append(f"| {effect} | {name} | {p['point']} | `{' '.join(p['settings']) or '-'}` | "
+                         f"{p['time_us']:.1f} | {scored(p['error'])} |")
+    lines.append("")
+    budget = study.get("budget")
+    if budget:
+        lines += [f"### budget {budget['budget_us']:g} µs", ""]
+        for effect, p in budget["choices"].items():
+            lines.append(f"- {effect}: no measured point fits" if p is None else
+                         f"- {effect}: {p['point']} (`{' '.join(p['settings']) or '-'}`), {p['time_us']:.1f} µs, "
+                         f"error {scored(p['error'])} × the defaults'")
+        lines.append("")
+    return lines
+
+
 def scaling_tables(rows):
     lines = ["| effect | sweep | size | fraction | time (µs) | traced fraction / filtered tiles |", "|---|---|---|---|---|---|"]
     for r in rows:
@@ -228,6 +255,8 @@ def main(directories, plots=True):
     for effect in sorted({r["effect"] for r in rows}) if plots else []:
         plot_effect(rows, effect, title, out / f"{effect}.png", comparable)
     markdown += study_tables(rows)
+    for other in studies:  # each folder's own presets: a split study chose them per effect
+        markdown += choice_tables(other)
     if anchors:
         markdown += anchor_tables(anchors)
 

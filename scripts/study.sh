@@ -4,7 +4,7 @@
 # Pareto fronts, the plots and the tables with scripts/study.py in a venv (build/venv).
 #
 #   scripts/study.sh [--out DIR] [--size WxH] [--frame-count N] [--spp N] [--runs N]
-#                    [--effect reflections|shadows|all] [--quick] [--glint PATH]
+#                    [--effect reflections|shadows|all] [--budget-us B] [--quick] [--glint PATH]
 #                    [--python PATH] [--no-plots | --plots-only]
 #
 # --glint PATH uses an existing glint binary instead of building one; --python PATH uses an
@@ -23,7 +23,7 @@ args=()
 while (($#)); do
   case "$1" in
     --out) out=$2; shift 2 ;;
-    --size | --frame-count | --spp | --runs | --effect) args+=("$1" "$2"); shift 2 ;;
+    --size | --frame-count | --spp | --runs | --effect | --budget-us) args+=("$1" "$2"); shift 2 ;;
     --quick) args+=(--quick); shift ;;
     --glint) glint=$2; shift 2 ;;
     --python) python=$2; shift 2 ;;

@@ -57,6 +57,7 @@ FrameHeader headerOf(const Frame& frame) {
     h.normalEncoding = frame.normalEncoding;
     h.motion = frame.motion;
     h.roughness = frame.roughness;
+    h.shadowLightTanHalfAngle = frame.shadowLightTanHalfAngle;
     h.effects = frame.effects;
     for (const Layer& layer : frame.layers) h.layers.push_back({layer.name, layer.channels, layer.storage});
     return h;
@@ -72,6 +73,7 @@ Frame frameFromHeader(const FrameHeader& header) {
     f.normalEncoding = header.normalEncoding;
     f.motion = header.motion;
     f.roughness = header.roughness;
+    f.shadowLightTanHalfAngle = header.shadowLightTanHalfAngle;
     f.effects = header.effects;
     return f;
 }

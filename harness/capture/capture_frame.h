@@ -84,6 +84,9 @@ struct FrameHeader {
     NormalEncoding normalEncoding = NormalEncoding::WorldUnit;
     MotionConvention motion;
     RoughnessSource roughness;
+    // tan of the angular radius of the light the `shadow` layer samples (a directional light);
+    // 0 when unknown (attribute glint.shadowLightTanHalfAngle absent).
+    double shadowLightTanHalfAngle = 0.0;
     std::vector<std::string> effects; // "reflections", "shadows", "depth_pyramid"
     std::vector<LayerInfo> layers;
 };
@@ -96,6 +99,7 @@ struct Frame {
     NormalEncoding normalEncoding = NormalEncoding::WorldUnit;
     MotionConvention motion;
     RoughnessSource roughness;
+    double shadowLightTanHalfAngle = 0.0; // as FrameHeader's
     std::vector<std::string> effects;
     std::vector<Layer> layers;
 };

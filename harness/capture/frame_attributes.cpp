@@ -34,6 +34,8 @@ constexpr const char* kMotionScale = "glint.motionScale";
 constexpr const char* kRoughnessSource = "glint.roughnessSource";
 constexpr const char* kRoughnessPerceptual = "glint.roughnessPerceptual";
 constexpr const char* kEffects = "glint.effects";
+// Optional: written only when known (> 0).
+constexpr const char* kShadowLightTanHalfAngle = "glint.shadowLightTanHalfAngle";
 
 double signOr1(double v) {
     return v < 0.0 ? -1.0 : 1.0;
@@ -124,6 +126,8 @@ void writeFrameAttributes(Imf::Header& header, const FrameHeader& f) {
     header.insert(kRoughnessSource, Imf::StringAttribute(source));
     header.insert(kRoughnessPerceptual, Imf::IntAttribute(f.roughness.perceptual ? 1 : 0));
     header.insert(kEffects, Imf::StringVectorAttribute(f.effects));
+    if (f.shadowLightTanHalfAngle > 0.0)
+        header.insert(kShadowLightTanHalfAngle, Imf::DoubleAttribute(f.shadowLightTanHalfAngle));
     Imf::addWorldToCamera(header, worldToCameraOf(c));
     Imf::addWorldToNDC(header, worldToNdcOf(c));
 }
@@ -165,6 +169,13 @@ void readFrameAttributes(const Imf::Header& header, const std::filesystem::path&
     f.roughness.channel = source.empty() ? "" : source.substr(dot + 1);
     f.roughness.perceptual = requiredFlag(header, kRoughnessPerceptual, file);
     f.effects = required<Imf::StringVectorAttribute>(header, kEffects, file);
+    f.shadowLightTanHalfAngle = 0.0;
+    if (header.find(kShadowLightTanHalfAngle) != header.end()) {
+        const double t = required<Imf::DoubleAttribute>(header, kShadowLightTanHalfAngle, file);
+        if (!(std::isfinite(t) && t >= 0.0))
+            fail(file, "attribute 'glint.shadowLightTanHalfAngle' must be finite and >= 0");
+        f.shadowLightTanHalfAngle = t;
+    }
 }
 
 } // namespace glint::capture

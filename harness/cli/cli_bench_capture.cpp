@@ -208,10 +208,13 @@ int runBenchCaptures(const BenchOptions& options) {
         nlohmann::json report{{"device", deviceJson(context)},
                               {"settings", options.settings},
                               {"captures", nlohmann::json::array()}};
+        if (!options.preset.name.empty()) report["preset"] = options.preset.name;
         std::fprintf(out, "device: %s, driver %s %s, subgroup %u\n", context.info.name.c_str(),
                      context.info.driverName.c_str(), context.info.driverInfo.c_str(),
                      context.device.subgroupSize);
-        for (const std::string& setting : options.settings) std::fprintf(out, "  set %s\n", setting.c_str());
+        if (options.preset.name.empty())
+            for (const std::string& setting : options.settings)
+                std::fprintf(out, "  set %s\n", setting.c_str());
         for (Target& target : targets) {
             if (target.scene) {
                 target.scene->frameCount =
@@ -222,8 +225,16 @@ int runBenchCaptures(const BenchOptions& options) {
             }
             const capture::Frame& first = target.frames.front();
             const std::vector<std::string> effects = replay::effectsToRun(first, options.effects);
-            const Measurement measurement = measureFrames(context, target.frames, target.environment,
-                                                          withScene(sessionOptions, target), options.runs);
+            // --preset's bundles follow each target's own effects.
+            replay::SessionOptions targetOptions = withScene(sessionOptions, target);
+            const std::vector<std::string> settings =
+                presetThenSettings(options.preset, effects, options.settings);
+            targetOptions.settings = replay::parseSettings(settings);
+            if (!options.preset.name.empty())
+                for (const std::string& setting : settings)
+                    std::fprintf(out, "  %s: set %s\n", target.path.c_str(), setting.c_str());
+            const Measurement measurement =
+                measureFrames(context, target.frames, target.environment, targetOptions, options.runs);
             std::fprintf(out, "%s %s: %ux%u, %zu frame(s), effects:", target.kind.c_str(),
                          target.path.c_str(), first.width, first.height, target.frames.size());
             for (const std::string& effect : effects) std::fprintf(out, " %s", effect.c_str());
@@ -237,6 +248,7 @@ int runBenchCaptures(const BenchOptions& options) {
             entry["height"] = first.height;
             entry["frames"] = target.frames.size();
             entry["effects"] = effects;
+            entry["settings"] = settings;
             report["captures"].push_back(entry);
         }
         if (options.json == "-") {

@@ -64,7 +64,9 @@ int runBenchSssr(const BenchOptions& options, const gpu::Context& context) {
     const capture::Frame& frame = simulation.frames.at(0);
     const capture::Environment& environment = simulation.environment.value();
     const EffectDescriptor& effect = *findEffect("reflections");
-    const SettingValues settings = replay::parseSettings(options.settings);
+    const std::vector<std::string> assignments =
+        presetThenSettings(options.preset, {"reflections"}, options.settings);
+    const SettingValues settings = replay::parseSettings(assignments);
     // A static camera: every run is the first frame again, its histories carried.
     FrameInfo info = replay::frameInfo(frame, environment, 0, true);
     replay::holdCamera(info);
@@ -120,7 +122,7 @@ int runBenchSssr(const BenchOptions& options, const gpu::Context& context) {
                 context.device.subgroupSize);
     std::printf("effect sssr on %s at %ux%u, %u runs\n", scene.file.filename().string().c_str(),
                 options.width, options.height, options.runs);
-    for (const std::string& setting : options.settings) std::printf("  set %s\n", setting.c_str());
+    for (const std::string& setting : assignments) std::printf("  set %s\n", setting.c_str());
     std::printf("inputs: R32F depth, RGBA16F normals and colour, R16F roughness, RG16F motion\n");
     std::printf("traced pixels %.1f %% (%u rays), tiles with glossy pixels %u\n",
                 100.0 * counters[1] / pixels, counters[1], counters[3]);

@@ -124,6 +124,18 @@ std::string CaptureSource::sceneFile() const {
     return impl_->sequence ? impl_->sequence->scene : std::string();
 }
 
+std::vector<std::string> CaptureSource::declaredEffects() const {
+    if (impl_->map) return impl_->map->effects;
+    return capture::readFrameHeader(impl_->paths.front()).effects;
+}
+
+std::vector<std::string> settingsWithPreset(const ReplayOptions& options, const CaptureSource& source) {
+    if (options.preset.name.empty()) return options.settings;
+    return presetThenSettings(options.preset,
+                              options.effects.empty() ? source.declaredEffects() : options.effects,
+                              options.settings);
+}
+
 std::size_t CaptureSource::frameNumber(std::size_t index) const {
     return impl_->numbers.at(index);
 }

@@ -3,6 +3,8 @@
 // validation errors turn into exit code 1.
 #pragma once
 
+#include "cli_commands.h"
+
 #include "capture/capture_frame.h"
 #include "capture/environment_io.h"
 #include "replay/replay_session.h"
@@ -41,6 +43,9 @@ class CaptureSource {
     const std::string& description() const { return description_; }
     // The scene file a simulated capture was made from (its manifest's "scene"), or empty.
     std::string sceneFile() const;
+    // The effects the first frame declares (a channel map's, for a foreign capture); reads
+    // its header only.
+    std::vector<std::string> declaredEffects() const;
 
     // The effects to run (replay::effectsToRun) on frame `index`, read as `frame`; a layer the
     // capture lacks is a one-line error naming the frame's file, the layer and what to do.
@@ -60,6 +65,10 @@ class CaptureSource {
     std::string environmentName_ = "none";
     std::string description_;
 };
+
+// What run, dump and check run with: --preset's settings for the effects named with --effects,
+// or else those the capture declares, then --set (presetThenSettings, cli_presets.h).
+std::vector<std::string> settingsWithPreset(const ReplayOptions& options, const CaptureSource& source);
 
 // "frame_0001": the output folder of a frame number.
 std::string frameFolderName(std::size_t number);

@@ -67,7 +67,8 @@ int runCheck(const ReplayOptions& options) {
     replay::SessionOptions sessionOptions;
     sessionOptions.effects = options.effects;
     setGeometry(sessionOptions, source.sceneFile(), options.geometry);
-    sessionOptions.settings = replay::parseSettings(options.settings);
+    const std::vector<std::string> settings = settingsWithPreset(options, source);
+    sessionOptions.settings = replay::parseSettings(settings);
     return withContext(options.validate, [&](const gpu::Context& context) {
         std::size_t frame = 0;
         const replay::FrameResult result =

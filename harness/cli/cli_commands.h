@@ -1,6 +1,8 @@
 // The verbs of the glint command. Each returns the process exit code.
 #pragma once
 
+#include "cli_presets.h"
+
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -24,7 +26,8 @@ struct BenchOptions {
     bool farthest = false;
     bool skipLevel0 = false;           // depth pyramid: leave level 0 unwritten
     std::string scene;                 // sssr: the scene to simulate (default the glossy room)
-    std::vector<std::string> settings; // sssr: "name=value" desc overrides
+    std::vector<std::string> settings; // sssr and captures: "name=value" desc overrides
+    PresetChoice preset;               // --preset, --preset-file: applied before `settings`
     bool validate = false;
     // Captures (cli_bench_capture.cpp): frame .exr files, sequence folders or scene .toml files
     // named instead of a synthetic effect.
@@ -54,10 +57,12 @@ struct ReplayOptions {
     std::string expectedDir;             // check
     std::vector<std::string> effects;    // empty: the capture's declared effects
     std::vector<std::string> settings;   // "name=value"
+    PresetChoice preset;                 // --preset, --preset-file: applied before `settings`
     std::string frames;                  // run: "a..b"; dump/check: the frame to look at ("" = last)
     std::string pass = "all";            // dump/check: a pass name, "effect/pass" or "all"
     std::vector<std::string> tolerances; // check: "pass=abs,rel[,fraction]"
     bool json = false;                   // run: also print the summary as JSON on stdout
+    std::string secondReference;         // run: the same capture rendered with another seed (noise floor)
     bool validate = false;
 };
 
@@ -72,6 +77,7 @@ struct StudyOptions {
     uint32_t frames = 0;             // 0: 16 (--quick: 3)
     uint32_t spp = 0;                // 0: per-effect default reference samples per pixel
     uint32_t runs = 0;               // 0: 50 timed runs per point (--quick: 2)
+    std::optional<double> budgetUs;  // --budget-us: name the most accurate point that fits
     bool quick = false;
     bool scaling = false;
     bool validate = false;
@@ -87,6 +93,7 @@ struct ReportOptions {
     std::vector<std::string> runs;
     std::string outPath;
     std::string title = "glint report";
+    std::string anchorsPath; // --anchors: measured points of other implementations (docs/anchors)
 };
 
 // glint view (cli_view.cpp, docs/viewer.md): a window replaying a capture live.
@@ -96,6 +103,7 @@ struct ViewOptions {
     std::string geometry; // --geometry
     std::vector<std::string> effects;  // empty: the capture's declared effects
     std::vector<std::string> settings; // "name=value"
+    PresetChoice preset;               // --preset, --preset-file: applied before `settings`
     std::string script;                // --script FILE (view_script.h)
     std::string screenshot;            // --screenshot FILE: after frame `after`, then exit
     std::uint32_t after = 0;           // --after N

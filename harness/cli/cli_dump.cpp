@@ -19,14 +19,14 @@ int runDump(const ReplayOptions& options) {
     replay::SessionOptions sessionOptions;
     sessionOptions.effects = options.effects;
     setGeometry(sessionOptions, source.sceneFile(), options.geometry);
-    sessionOptions.settings = replay::parseSettings(options.settings);
+    const std::vector<std::string> settings = settingsWithPreset(options, source);
+    sessionOptions.settings = replay::parseSettings(settings);
     const std::filesystem::path out(options.outDir);
     return withContext(options.validate, [&](const gpu::Context& context) {
         std::size_t frame = 0;
         const replay::FrameResult result =
             replayUntil(context, source, options.frames, sessionOptions, &frame);
-        nlohmann::json index{
-            {"capture", source.description()}, {"frame", frame}, {"settings", options.settings}};
+        nlohmann::json index{{"capture", source.description()}, {"frame", frame}, {"settings", settings}};
         std::size_t written = 0;
         for (const replay::NamedImage& image : result.images) {
             if (!passSelected(options.pass, image.pass)) continue;

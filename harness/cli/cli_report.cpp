@@ -1,16 +1,23 @@
 // glint report: one self-contained HTML page from the folders `glint run` wrote: per run, the
-// last frame's images side by side (input, noisy, denoised, composite, reference, error), the
-// error against the reference, per-pass GPU times; the device on top. The demo's report.
+// metric in words, a plot of the error against frame per effect (noisy input, output and the
+// reference noise floor where the run measured one), the last frame's images side by side
+// (input, noisy, denoised, composite, reference, error), the errors, per-pass GPU times; the
+// device on top; with --anchors, other implementations' points listed beside the scene they
+// were measured on, with their conditions. The demo's report.
 #include "cli_capture.h"
 #include "cli_commands.h"
 
 #include "capture/json_text.h"
+#include "replay/replay_error.h"
 #include "report/report_html.h"
 
+#include <glint/glint_effect.h>
 #include <nlohmann/json.hpp>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <ctime>
 #include <fstream>
 #include <iterator>
@@ -46,7 +53,108 @@ std::string today() {
     return text;
 }
 
-report::Section runSection(const std::filesystem::path& dir, const nlohmann::json& summary) {
+nlohmann::json readAnchors(const std::string& path) {
+    if (path.empty()) return nlohmann::json::array();
+    std::ifstream file(path);
+    if (!file) throw std::invalid_argument("report: " + path + ": cannot open the anchors file");
+    const std::string text{std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
+    nlohmann::json anchors;
+    try {
+        anchors = nlohmann::json::parse(text);
+    } catch (const nlohmann::json::exception& error) {
+        throw std::invalid_argument("report: " + path +
+                                    ": malformed JSON: " + capture::jsonProblem(error, text));
+    }
+    if (!anchors.is_object() || !anchors.contains("points") || !anchors.at("points").is_array())
+        throw std::invalid_argument("report: " + path + ": no \"points\" array");
+    for (const auto& point : anchors.at("points"))
+        if (!point.is_object() || !point.contains("scene") || !point.at("scene").is_string() ||
+            !point.contains("effect") || !point.at("effect").is_string())
+            throw std::invalid_argument("report: " + path +
+                                        ": a point without a \"scene\" or \"effect\" string");
+    return anchors.at("points");
+}
+
+// A number of a per-frame record, NaN where it is absent or null (nothing scored).
+double valueOr(const nlohmann::json& object, const char* key) {
+    if (!object.is_object() || !object.contains(key) || !object.at(key).is_number()) return NAN;
+    return object.at(key).get<double>();
+}
+
+// The roughness threshold the run scored reflections with: the last roughnessThreshold=
+// setting it names, else the default.
+double roughnessThresholdOf(const nlohmann::json& summary) {
+    double threshold = defaultSettings(effectRegistry()).real("roughnessThreshold");
+    for (const auto& setting : summary.value("settings", nlohmann::json::array())) {
+        const std::string text = setting.get<std::string>();
+        static const std::string kKey = "roughnessThreshold=";
+        if (text.rfind(kKey, 0) == 0) threshold = std::strtod(text.c_str() + kKey.size(), nullptr);
+    }
+    return threshold;
+}
+
+// What "error" means for `effect`, in words (replay/replay_error.h is the definition).
+std::string metricSentence(const std::string& effect, const nlohmann::json& summary) {
+    if (effect == "shadows")
+        return "Error of shadows: the mean of |visibility - reference visibility| (both in [0, 1], "
+               "so no clamp is needed) over every pixel with a surface; the sky, where nothing "
+               "receives a shadow, is left out and drawn lit in the shadow images.";
+    return "Error of " + effect +
+           ": per pixel, the luminance of |output - reference| (per RGB channel, radiance not "
+           "clamped) divided by max(luminance(reference), 0.05), averaged over the glossy pixels "
+           "(a surface with GGX alpha below roughnessThreshold = " +
+           fixed(roughnessThresholdOf(summary), 2) +
+           "). The table adds the mean absolute error of "
+           "radiance clamped to [0, " +
+           fixed(replay::kMaeClamp, 0) + "] and the unclamped RMSE, on the same mask.";
+}
+
+std::string referenceSentence(const nlohmann::json& summary) {
+    if (!summary.contains("simulation"))
+        return "The reference's sample count is not recorded (not a glint simulate capture).";
+    const nlohmann::json& simulation = summary.at("simulation");
+    std::string text = "Reference: " + std::to_string(simulation.value("referenceSpp", 0)) +
+                       " samples per pixel (seed " + std::to_string(simulation.value("seed", 0)) + ")";
+    if (summary.contains("secondReference"))
+        text += "; its noise floor is its difference from a second reference of " +
+                std::to_string(summary.at("secondReference").value("referenceSpp", 0)) +
+                " samples per pixel with the independent seed " +
+                std::to_string(summary.at("secondReference").value("seed", 0)) +
+                ", in the same metric: an error at or below the floor cannot be told from zero";
+    else
+        text += "; no second reference was rendered, so its noise floor is not known";
+    return text + ".";
+}
+
+report::Plot errorPlot(const std::string& effect, const nlohmann::json& frames) {
+    report::Plot plot;
+    plot.title = effect + ": error against the reference";
+    plot.xLabel = "frame";
+    plot.yLabel = "mean error";
+    report::PlotSeries noisy{"noisy input", {}, "#d62728"};
+    report::PlotSeries output{"output (denoised)", {}, "#1f77b4"};
+    report::PlotSeries floor{"reference noise floor", {}, "#555", true};
+    bool anyNoisy = false, anyFloor = false, denoised = false;
+    for (const auto& frame : frames) {
+        const nlohmann::json errors = frame.value("errors", nlohmann::json::object());
+        const nlohmann::json error = errors.value(effect, nlohmann::json::object());
+        output.values.push_back(valueOr(error, "mean"));
+        noisy.values.push_back(valueOr(error, "noisyMean"));
+        anyNoisy = anyNoisy || error.contains("noisyMean");
+        denoised = denoised || error.value("image", std::string{}).ends_with("/denoised");
+        const nlohmann::json noise = frame.value("referenceNoise", nlohmann::json::object());
+        floor.values.push_back(valueOr(noise.value(effect, nlohmann::json::object()), "mean"));
+        anyFloor = anyFloor || noise.contains(effect);
+    }
+    if (!denoised) output.label = "output (not denoised)";
+    if (anyNoisy) plot.series.push_back(std::move(noisy));
+    plot.series.push_back(std::move(output));
+    if (anyFloor) plot.series.push_back(std::move(floor));
+    return plot;
+}
+
+report::Section runSection(const std::filesystem::path& dir, const nlohmann::json& summary,
+                           const nlohmann::json& anchors) {
     report::Section section;
     section.heading = dir.filename().string();
     std::string effects;
@@ -55,8 +163,41 @@ report::Section runSection(const std::filesystem::path& dir, const nlohmann::jso
     section.text = "Capture " + summary.value("capture", std::string{}) + "; effects: " + effects + ".";
     const nlohmann::json settings = summary.value("settings", nlohmann::json::array());
     for (const auto& setting : settings) section.text += "\nset " + setting.get<std::string>();
+    if (summary.contains("width") && summary.contains("height"))
+        section.text += "\n" + std::to_string(summary.at("width").get<unsigned>()) + "x" +
+                        std::to_string(summary.at("height").get<unsigned>()) + ", " +
+                        std::to_string(summary.at("frames").size()) + " frame(s).";
     const nlohmann::json& frames = summary.at("frames");
-    if (frames.empty()) return section;
+    if (summary.contains("error")) {
+        section.text += "\n\n" + referenceSentence(summary);
+        for (const auto& [effect, values] : summary.at("error").items()) {
+            section.text += "\n" + metricSentence(effect, summary);
+            section.plots.push_back(errorPlot(effect, frames));
+        }
+    }
+    // The scene the run was simulated from names the anchors that belong here.
+    std::string scene = dir.filename().string();
+    if (summary.contains("simulation"))
+        scene = std::filesystem::path(summary.at("simulation").value("scene", scene)).stem().string();
+    report::Table anchorTable{{"anchor (measured elsewhere; not on the plot, whose conditions differ)",
+                               "effect", "FLIP", "MAE", "error measured", "time (us)", "time measured"},
+                              {}};
+    for (const auto& point : anchors) {
+        if (point.at("scene").get<std::string>() != scene) continue;
+        const auto number = [&](const char* key, int decimals) {
+            return point.contains(key) && point.at(key).is_number()
+                       ? fixed(point.at(key).get<double>(), decimals)
+                       : std::string("-");
+        };
+        anchorTable.rows.push_back({point.value("label", std::string{}),
+                                    point.at("effect").get<std::string>(), number("flip", 3),
+                                    number("mae", 3), point.value("error_measured", std::string{}),
+                                    number("time_us", 1), point.value("time_measured", std::string{})});
+    }
+    if (frames.empty()) {
+        if (!anchorTable.rows.empty()) section.tables.push_back(std::move(anchorTable));
+        return section;
+    }
     const nlohmann::json& last = frames.back();
     // "folder" names the frame's output folder; summaries written before it had only "frame".
     const std::string frameName = last.contains("folder")
@@ -75,18 +216,32 @@ report::Section runSection(const std::filesystem::path& dir, const nlohmann::jso
         }
     }
     if (summary.contains("error")) {
-        report::Table errors{
-            {"effect", "error, first frame", "error, last frame", "its noisy input, last frame"}, {}};
+        report::Table errors{{"effect", "error, first frame", "error, last frame",
+                              "its noisy input, last frame", "reference noise floor, last frame",
+                              "clamped MAE, last frame", "RMSE, last frame"},
+                             {}};
+        const nlohmann::json lastErrors = frames.back().value("errors", nlohmann::json::object());
+        const nlohmann::json lastNoise = frames.back().value("referenceNoise", nlohmann::json::object());
         for (const auto& [effect, values] : summary.at("error").items()) {
             const double noisy = values.value("noisyLast", -1.0);
             // null: that frame's error mask held no pixel (glint run wrote nothing to score).
             const auto scored = [](const nlohmann::json& value) {
                 return value.is_number() ? fixed(value.get<double>(), 4) : std::string("no pixels scored");
             };
+            const auto shown = [](double value) {
+                return std::isnan(value) ? std::string("-") : fixed(value, 4);
+            };
+            const nlohmann::json lastError = lastErrors.value(effect, nlohmann::json::object());
+            const nlohmann::json noise = lastNoise.value(effect, nlohmann::json::object());
+            std::string floor = shown(valueOr(noise, "mean"));
+            if (floor != "-") floor += " (clamped MAE " + shown(valueOr(noise, "maeClamped")) + ")";
             errors.rows.push_back({effect, scored(values.at("first")), scored(values.at("last")),
-                                   noisy >= 0.0 ? fixed(noisy, 4) : "-"});
+                                   noisy >= 0.0 ? fixed(noisy, 4) : "-", floor,
+                                   shown(valueOr(lastError, "maeClamped")),
+                                   shown(valueOr(lastError, "rmse"))});
         }
         section.tables.push_back(std::move(errors));
+        if (!anchorTable.rows.empty()) section.tables.push_back(std::move(anchorTable)); // beside the errors
     }
     report::Table times{{"pass", "median GPU time (us)"}, {}};
     double total = 0.0;
@@ -100,6 +255,8 @@ report::Section runSection(const std::filesystem::path& dir, const nlohmann::jso
         times.rows.push_back({"all passes", fixed(1000.0 * total, 1)});
         section.tables.push_back(std::move(times));
     }
+    if (!summary.contains("error") && !anchorTable.rows.empty())
+        section.tables.push_back(std::move(anchorTable));
     return section;
 }
 
@@ -108,6 +265,7 @@ report::Section runSection(const std::filesystem::path& dir, const nlohmann::jso
 int runReport(const ReportOptions& options) {
     if (options.runs.empty())
         throw std::invalid_argument("report: name at least one folder written by glint run");
+    const nlohmann::json anchors = readAnchors(options.anchorsPath);
     report::Report page;
     page.title = options.title;
     bool first = true;
@@ -122,7 +280,7 @@ int runReport(const ReportOptions& options) {
             page.facts.push_back({"date", today()});
             first = false;
         }
-        page.sections.push_back(runSection(dir, summary));
+        page.sections.push_back(runSection(dir, summary, anchors));
     }
     report::writeHtml(options.outPath, page);
     std::printf("wrote %s (%zu run(s))\n", options.outPath.c_str(), options.runs.size());

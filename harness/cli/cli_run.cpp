@@ -1,7 +1,8 @@
 // glint run: a capture or sequence through the effects it declares (or --effects), histories
 // carried across frames. Writes per frame the outputs as EXR with PNG previews and, where the
 // capture has references, an error heat map; prints a progress bar, then a summary table of
-// per-pass GPU times and errors; writes summary.json (docs/replay.md).
+// per-pass GPU times and errors; writes summary.json (docs/replay.md). With --second-reference,
+// each frame's reference noise floor: the capture's references against another seed's.
 #include "cli_capture.h"
 #include "cli_commands.h"
 #include "cli_images.h"
@@ -16,8 +17,10 @@
 #include <cstdio>
 #include <exception>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <map>
+#include <memory>
 #include <unistd.h>
 
 namespace glint::cli {
@@ -31,6 +34,41 @@ void progress(std::size_t done, std::size_t total) {
                  kWidth - filled, "", done, total);
     if (done == total) std::fprintf(stderr, "\n");
     std::fflush(stderr);
+}
+
+// Shadow previews (noisy, denoised, reference) show every pixel outside the shadow error mask
+// (the non-receivers: no surface) as lit, 1, the value the visibility input and the denoiser
+// give them (docs/shadow_denoiser.md, "Non-receivers"), so the three images differ only where
+// receivers do. The EXR files keep the values as written.
+void writeShadowPreview(const std::filesystem::path& dir, const replay::NamedImage& image,
+                        const std::vector<std::uint8_t>& receivers) {
+    report::Image preview = image.image;
+    for (std::size_t i = 0; i < receivers.size(); ++i)
+        if (!receivers[i])
+            for (std::uint32_t c = 0; c < preview.channels; ++c)
+                preview.pixels[i * preview.channels + c] = 1.0f;
+    report::writePng((dir / (fileStem(image.name) + ".png")).string(), preview,
+                     previewMapping(image.name, preview));
+}
+
+// The simulation.json glint simulate wrote next to a sequence's manifest (the capture folder or
+// its manifest.json), or null when there is none (a capture not simulated by glint, a single
+// frame). A file that is there but unreadable is an error naming it.
+nlohmann::json simulationOf(const std::string& capture) {
+    std::filesystem::path dir(capture);
+    if (!std::filesystem::is_directory(dir)) dir = dir.parent_path();
+    const std::filesystem::path path = dir / "simulation.json";
+    if (!std::filesystem::is_regular_file(path)) return nullptr;
+    std::ifstream file(path);
+    const std::string text{std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
+    nlohmann::json simulation = nlohmann::json::parse(text, nullptr, false);
+    if (!file || simulation.is_discarded() || !simulation.is_object())
+        throw std::invalid_argument("run: " + path.string() + ": not a JSON object");
+    return simulation;
+}
+
+bool isShadowPreview(const std::string& name) {
+    return name == "shadows/noisy" || name == "shadows/denoised" || name == "shadows/reference";
 }
 
 double median(std::vector<double> values) {
@@ -48,13 +86,22 @@ int runRun(const ReplayOptions& options) {
     replay::SessionOptions sessionOptions;
     sessionOptions.effects = options.effects;
     setGeometry(sessionOptions, source.sceneFile(), options.geometry);
-    sessionOptions.settings = replay::parseSettings(options.settings);
+    const std::vector<std::string> settings = settingsWithPreset(options, source);
+    sessionOptions.settings = replay::parseSettings(settings);
     const std::filesystem::path out(options.outDir);
 
     // Every frame's header, camera and layers before anything is written.
     source.checkFrames(range.first, range.last, sessionOptions);
     const capture::Frame first = source.frame(range.first);
     source.checkEffects(first, range.first, sessionOptions);
+    std::unique_ptr<CaptureSource> second;
+    if (!options.secondReference.empty()) {
+        second = std::make_unique<CaptureSource>(options.secondReference);
+        if (second->frameCount() < range.last + 1)
+            throw std::invalid_argument("run: --second-reference " + options.secondReference + " has " +
+                                        std::to_string(second->frameCount()) + " frame(s), the capture " +
+                                        std::to_string(source.frameCount()));
+    }
 
     return withContext(options.validate, [&](const gpu::Context& context) {
         replay::Session session(context, first, source.environment(), sessionOptions);
@@ -64,13 +111,22 @@ int runRun(const ReplayOptions& options) {
                              {"driver", context.info.driverName + " " + context.info.driverInfo},
                              {"subgroupSize", context.device.subgroupSize}};
         summary["effects"] = session.effects();
-        summary["settings"] = options.settings;
+        summary["width"] = first.width;
+        summary["height"] = first.height;
+        if (nlohmann::json simulation = simulationOf(options.capture); !simulation.is_null())
+            summary["simulation"] = simulation;
+        if (second)
+            if (nlohmann::json simulation = simulationOf(options.secondReference); !simulation.is_null())
+                summary["secondReference"] = simulation;
+        summary["settings"] = settings;
+        if (!options.preset.name.empty()) summary["preset"] = options.preset.name;
         summary["frames"] = nlohmann::json::array();
         std::vector<std::string> passOrder;
         std::map<std::string, std::vector<double>> passTimes;
         // effect -> mean error per frame; NaN where the frame's mask held no pixel (nothing scored)
         std::map<std::string, std::vector<double>> errors;
         std::map<std::string, double> noisyErrors; // effect -> its noisy input's, last frame
+        std::map<std::string, double> noiseFloors; // effect -> reference noise floor, last frame
         std::size_t nonFiniteFrames = 0;
 
         const std::size_t total = range.last - range.first + 1;
@@ -92,8 +148,16 @@ int runRun(const ReplayOptions& options) {
                                   {"folder", folder},
                                   {"input", source.framePath(index)},
                                   {"images", nlohmann::json::array()}};
+            const float roughnessThreshold = sessionOptions.settings.real("roughnessThreshold");
+            std::vector<std::uint8_t> receivers;
             for (const replay::NamedImage& image : result.images) {
-                writeImageFiles(dir, fileStem(image.name), image.name, image.image, true);
+                const bool shadow = isShadowPreview(image.name);
+                writeImageFiles(dir, fileStem(image.name), image.name, image.image, !shadow);
+                if (shadow) {
+                    if (receivers.empty())
+                        receivers = replay::errorMask(frame, "shadows", roughnessThreshold);
+                    writeShadowPreview(dir, image, receivers);
+                }
                 record["images"].push_back(image.name);
             }
             for (const replay::PassTime& time : result.timings) {
@@ -103,15 +167,27 @@ int runRun(const ReplayOptions& options) {
             }
             for (const replay::Counter& counter : result.counters)
                 record["counters"][counter.name] = counter.value;
+            if (second)
+                for (const replay::ReferenceError& noise :
+                     replay::referenceNoise(frame, result, second->frame(index), roughnessThreshold)) {
+                    record["referenceNoise"][noise.effect] = {
+                        {"mean", noise.mean}, {"rmse", noise.rmse}, {"maeClamped", noise.maeClamped}};
+                    noiseFloors[noise.effect] = noise.pixels > 0 ? noise.mean : -1.0;
+                }
             for (const replay::ReferenceError& error :
-                 replay::referenceErrors(frame, result, sessionOptions.settings.real("roughnessThreshold"))) {
+                 replay::referenceErrors(frame, result, roughnessThreshold)) {
                 writeImageFiles(dir, error.effect + "_error", error.effect + "/error", error.map, true);
                 errors[error.effect].push_back(error.pixels > 0 ? error.mean
                                                                 : std::numeric_limits<double>::quiet_NaN());
                 noisyErrors[error.effect] = error.noisyMean;
-                record["errors"][error.effect] = {
-                    {"image", error.image}, {"pixels", error.pixels},     {"mean", error.mean},
-                    {"rmse", error.rmse},   {"penumbra", error.penumbra}, {"nonFinite", error.nonFinite}};
+                record["errors"][error.effect] = {{"image", error.image},
+                                                  {"pixels", error.pixels},
+                                                  {"mean", error.mean},
+                                                  {"rmse", error.rmse},
+                                                  {"penumbra", error.penumbra},
+                                                  {"nonFinite", error.nonFinite},
+                                                  {"maeClamped", error.maeClamped}};
+                if (error.noisyMean >= 0.0) record["errors"][error.effect]["noisyMean"] = error.noisyMean;
                 if (error.nonFinite > 0.0) ++nonFiniteFrames;
             }
             summary["frames"].push_back(record);
@@ -126,7 +202,7 @@ int runRun(const ReplayOptions& options) {
                     first.height, range.first, range.last);
         for (const std::string& effect : session.effects()) std::printf(" %s", effect.c_str());
         std::printf("\n");
-        for (const std::string& setting : options.settings) std::printf("  set %s\n", setting.c_str());
+        for (const std::string& setting : settings) std::printf("  set %s\n", setting.c_str());
         std::printf("%-28s %12s %12s %12s\n", "pass", "median us", "min us", "max us");
         double sum = 0.0;
         for (const std::string& pass : passOrder) {
@@ -157,11 +233,15 @@ int runRun(const ReplayOptions& options) {
             std::printf("error of %s against the reference: first frame %s, last frame %s", effect.c_str(),
                         scored(values.front()).c_str(), scored(values.back()).c_str());
             if (noisy >= 0.0) std::printf(" (its noisy input %.4f)", noisy);
+            if (noiseFloors.contains(effect) && noiseFloors[effect] >= 0.0)
+                std::printf(" (reference noise floor %.4f)", noiseFloors[effect]);
             if (std::isnan(values.back())) std::printf(" (no pixel of the last frame is in its error mask)");
             std::printf("\n");
             summary["error"][effect] = {{"first", scoredJson(values.front())},
                                         {"last", scoredJson(values.back())},
                                         {"noisyLast", noisy}};
+            if (noiseFloors.contains(effect))
+                summary["error"][effect]["referenceNoiseLast"] = noiseFloors[effect];
         }
         if (nonFiniteFrames > 0) std::printf("non-finite output pixels in %zu frame(s)\n", nonFiniteFrames);
         std::filesystem::create_directories(out);

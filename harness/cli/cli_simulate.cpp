@@ -1,5 +1,8 @@
 // glint simulate: a scene file -> a capture sequence (docs/scenes.md). Prints the layers and
-// passes it computed and their GPU time.
+// passes it computed and their GPU time. Next to the sequence's manifest it writes
+// simulation.json: the scene file, size, frame count, reference samples per pixel and seed the
+// capture was simulated with (what `glint run` copies into its summary and the demo keys its
+// cache on).
 #include "cli_commands.h"
 
 #include "capture/sequence_io.h"
@@ -8,7 +11,11 @@
 
 #include <gpu/gpu_context.h>
 
+#include <nlohmann/json.hpp>
+
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 
 namespace glint::cli {
 
@@ -32,6 +39,18 @@ int runSimulate(const SimulateOptions& options) {
         for (const std::string& warning : sim.warnings) std::fprintf(stderr, "glint: %s\n", warning.c_str());
         const capture::Environment* environment = sim.environment ? &*sim.environment : nullptr;
         capture::writeSequence(options.outDir, sim.frames, scene.frameRate, environment, options.scenePath);
+        const nlohmann::json simulation{{"scene", options.scenePath},
+                                        {"width", scene.width},
+                                        {"height", scene.height},
+                                        {"frames", scene.frameCount},
+                                        {"referenceSpp", scene.reference.samplesPerPixel},
+                                        {"seed", scene.seed}};
+        const std::filesystem::path simulationPath =
+            std::filesystem::path(options.outDir) / "simulation.json";
+        std::ofstream simulationFile(simulationPath);
+        simulationFile << simulation.dump(2) << "\n";
+        if (!simulationFile)
+            throw std::runtime_error("simulate: " + simulationPath.string() + ": cannot write");
 
         std::printf("device: %s, driver %s %s\n", context.info.name.c_str(), context.info.driverName.c_str(),
                     context.info.driverInfo.c_str());

@@ -3,7 +3,8 @@
 // converged reference after a fixed warm-up of frames. Writes study.csv, study.json and, per
 // point, the last frame's output and the reference as EXR (masked to the pixels the error is
 // measured over) for scripts/study.py, which adds FLIP, the Pareto front and plots
-// (docs/accuracy-vs-time.md). Paths inside study.json are relative to the output folder, so the
+// (docs/accuracy-vs-time.md), and presets.toml, the presets chosen from this run's points
+// (cli_study_presets.cpp). Paths inside study.json are relative to the output folder, so the
 // folder can be evaluated on another machine than the one that measured it.
 #include "cli_study.h"
 
@@ -83,6 +84,7 @@ std::vector<Point> pointsFor(const std::string& effect, bool quick) {
             {"filter_off", {"shadows.filter=false"}},
             {"no_tile_skip", {"shadows.skipClearedTiles=false"}},
             {"no_anti_lag", {"shadows.antiLag=false"}},
+            {"no_penumbra_aware", {"shadows.penumbraAware=false"}},
             {"filter_variance_0.0625", {"shadows.storedVarianceScale=0.0625"}},
             {"filter_variance_4", {"shadows.storedVarianceScale=4"}},
             {"depth_sigma_0.01", {"shadows.depthSigma=0.01"}},
@@ -210,10 +212,13 @@ std::string rayTracedShare(const Measurement& measurement) {
     return formatNumber(*traced + *answered > 0.0 ? *traced / (*traced + *answered) : 0.0);
 }
 
-void writeResults(const Plan& plan, const gpu::Context& context, const std::vector<Row>& rows) {
+// `choices`: the presets and the budget choice (choosePresetsAndBudget), kept in study.json.
+void writeResults(const Plan& plan, const gpu::Context& context, const std::vector<Row>& rows,
+                  const nlohmann::json& choices) {
     const nlohmann::json device = deviceJson(context);
     nlohmann::json json{{"device", device},      {"width", plan.width}, {"height", plan.height},
                         {"frames", plan.frames}, {"runs", plan.runs},   {"rows", nlohmann::json::array()}};
+    json.update(choices);
     std::ostringstream csv;
     csv << "scene,effect,label,settings,time_us,time_min_us,time_max_us,passes,error_mean,rmse,penumbra,"
            "non_finite,traced_fraction,output,reference,mask,device\n";
@@ -268,6 +273,15 @@ Plan resolve(const StudyOptions& options) {
     plan.frames = options.frames ? options.frames : (options.quick ? 3u : 16u);
     plan.runs = options.runs ? options.runs : (options.quick ? 2u : 50u);
     plan.spp = options.spp;
+    if (options.budgetUs) {
+        if (options.scaling)
+            throw std::invalid_argument(
+                "study: --budget-us goes with the settings sweep, not with --scaling");
+        if (!(*options.budgetUs > 0.0) || !std::isfinite(*options.budgetUs))
+            throw std::invalid_argument("study: --budget-us must be a positive number of microseconds, got " +
+                                        formatNumber(*options.budgetUs));
+        plan.budgetUs = options.budgetUs;
+    }
     return plan;
 }
 
@@ -371,7 +385,12 @@ int runStudy(const StudyOptions& options) {
                             std::make_move_iterator(more.end()));
             }
         }
-        study::writeResults(plan, context, rows);
+        std::vector<study::Measured> measured;
+        for (const study::Row& row : rows)
+            measured.push_back({row.effect, row.scene, row.label, row.settings,
+                                row.measurement.total.medianUs, row.error.mean});
+        const nlohmann::json choices = study::choosePresetsAndBudget(plan, context.info.name, measured);
+        study::writeResults(plan, context, rows, choices);
         bool finite = true;
         for (const study::Row& row : rows) finite = finite && row.error.nonFinite == 0.0;
         if (!finite) std::fprintf(stderr, "glint: study: non-finite output pixels (see study.csv)\n");

@@ -4,6 +4,7 @@
 
 #include "cli_bench_capture.h"
 #include "cli_commands.h"
+#include "cli_presets.h"
 
 #include "capture/capture_frame.h"
 #include "capture/environment_io.h"
@@ -26,6 +27,7 @@ struct Plan {
     std::uint32_t width = 0, height = 0, frames = 0, runs = 0;
     std::uint32_t spp = 0; // 0: per-effect default
     bool quick = false;
+    std::optional<double> budgetUs; // --budget-us: name the most accurate point that fits
 };
 
 struct SimulatedScene {
@@ -57,5 +59,25 @@ std::string csvField(const std::string& text);
 void writeText(const std::filesystem::path& file, const std::string& text);
 
 int runScaling(const Plan& plan, const gpu::Context& context);
+
+// One measured row of the sweep, as the presets and the budget choice read it.
+struct Measured {
+    std::string effect, scene, label;
+    std::vector<std::string> settings; // as --set would give them (the base's included)
+    double timeUs = 0.0;               // median GPU time
+    double error = 0.0;                // mean error against the reference
+};
+// The sweep's points of `effect` with their scenes combined (cli_study_presets.cpp): a point's
+// time is its largest time over the scenes (a budget it fits holds on every scene), its error
+// the mean over the scenes of its error divided by the `defaults` point's on that scene (1: as
+// accurate as the effect as shipped; every scene weighs the same). A scene where the defaults
+// point's error is not positive and finite cannot weigh in and is left out; a point without a
+// finite error on a scene that counts gets a NaN error (on no front).
+std::vector<StudyPoint> combineScenes(const std::vector<Measured>& rows, const std::string& effect);
+// Per effect studied: the four presets from the combined points' front, written to
+// plan.out/presets.toml, and with plan.budgetUs the most accurate point that fits it, printed.
+// Returns both for study.json ("presets", "front", "budget").
+nlohmann::json choosePresetsAndBudget(const Plan& plan, const std::string& device,
+                                      const std::vector<Measured>& rows);
 
 } // namespace glint::cli::study

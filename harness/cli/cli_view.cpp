@@ -248,6 +248,9 @@ int runView(const ViewOptions& options) {
         opened.capture = std::make_unique<CaptureSource>(options.capture, options.mapPath);
         const CaptureSource& source = *opened.capture;
         setGeometry(sessionOptions, source.sceneFile(), options.geometry);
+        sessionOptions.settings = replay::parseSettings(presetThenSettings(
+            options.preset, options.effects.empty() ? source.declaredEffects() : options.effects,
+            options.settings));
         source.checkFrames(0, source.frameCount() - 1, sessionOptions);
         const capture::Frame first = source.frame(0);
         source.checkEffects(first, 0, sessionOptions);
@@ -276,6 +279,12 @@ int runView(const ViewOptions& options) {
                 opened.frames.count = opened.simulated.size();
                 opened.frames.frame = [&opened](std::size_t index) { return opened.simulated.at(index); };
                 opened.frames.environment = simulation.environment.value_or(blackEnvironment());
+                // A scene's effects are known once simulated: --preset follows them.
+                if (!options.preset.name.empty() && !opened.simulated.empty())
+                    sessionOptions.settings = replay::parseSettings(presetThenSettings(
+                        options.preset,
+                        options.effects.empty() ? opened.simulated.front().effects : options.effects,
+                        options.settings));
             }
             view::Player player(context, opened.frames, sessionOptions);
             view::Presenter presenter(context, window);

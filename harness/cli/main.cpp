@@ -16,6 +16,16 @@ int main(int argc, char** argv) {
         "--validate", validate,
         "Run under VK_LAYER_KHRONOS_validation (with synchronization validation); any error exits 1");
 
+    // --preset on every verb that takes --set (cli_presets.h): the preset's settings for each
+    // effect being run, before --set.
+    auto presetOptions = [](CLI::App* command, glint::cli::PresetChoice& preset) {
+        command->add_option("--preset", preset.name,
+                            "low | medium | high | ultra: settings per effect, applied before --set "
+                            "(docs/accuracy-vs-time.md, Presets)");
+        command->add_option("--preset-file", preset.file,
+                            "read --preset from this file (presets.toml written by glint study)");
+    };
+
     CLI::App* devices =
         app.add_subcommand("devices", "List Vulkan devices: driver, subgroup size, float16 support");
 
@@ -56,6 +66,7 @@ int main(int argc, char** argv) {
     benchCommand->add_option("--scene", bench.scene,
                              "sssr: scene file to simulate (default: the glossy room)");
     benchCommand->add_option("--set", bench.settings, "a setting, name=value (repeatable; glint settings)");
+    presetOptions(benchCommand, bench.preset);
     benchCommand->footer(glint::cli::settingsHelp());
     benchCommand
         ->add_option("--effects", bench.effects,
@@ -73,7 +84,8 @@ int main(int argc, char** argv) {
     std::string studySize;
     CLI::App* studyCommand = app.add_subcommand(
         "study", "Sweep effect settings on scenes with references: GPU time and error per setting");
-    studyCommand->add_option("--out", study.outDir, "output folder (study.csv, study.json, images/)")
+    studyCommand
+        ->add_option("--out", study.outDir, "output folder (study.csv, study.json, presets.toml, images/)")
         ->required();
     studyCommand->add_option("--effect", study.effect, "reflections | shadows | hybrid | all")
         ->capture_default_str();
@@ -86,6 +98,9 @@ int main(int argc, char** argv) {
     studyCommand->add_option("--spp", study.spp, "reference samples per pixel");
     studyCommand->add_option("--runs", study.runs, "timed runs per point (default 50)");
     studyCommand->add_flag("--quick", study.quick, "tiny sizes, few frames and points (smoke test)");
+    double studyBudget = 0.0;
+    CLI::Option* studyBudgetOption = studyCommand->add_option(
+        "--budget-us", studyBudget, "name the most accurate measured point whose GPU time fits this budget");
     studyCommand->add_flag("--scaling", study.scaling,
                            "time against resolution and against the fraction of affected pixels");
 
@@ -106,7 +121,7 @@ int main(int argc, char** argv) {
 
     // run, dump and check share the capture, map, effect and setting options.
     glint::cli::ReplayOptions run, dump, check;
-    auto replayOptions = [](CLI::App* command, glint::cli::ReplayOptions& options) {
+    auto replayOptions = [&presetOptions](CLI::App* command, glint::cli::ReplayOptions& options) {
         command
             ->add_option("capture", options.capture,
                          "frame .exr, sequence folder, or foreign EXR(s) with --map")
@@ -120,6 +135,7 @@ int main(int argc, char** argv) {
         command->add_option("--effects", options.effects, glint::cli::effectNames() + " (default: declared)")
             ->delimiter(',');
         command->add_option("--set", options.settings, "a setting, name=value (repeatable; glint settings)");
+        presetOptions(command, options.preset);
         command->footer(glint::cli::settingsHelp());
     };
     CLI::App* runCommand =
@@ -128,6 +144,9 @@ int main(int argc, char** argv) {
     runCommand->add_option("--out", run.outDir, "output folder")->required();
     runCommand->add_option("--frames", run.frames, "frames a..b (inclusive), a.. or a");
     runCommand->add_flag("--json", run.json, "also print the summary as JSON");
+    runCommand->add_option("--second-reference", run.secondReference,
+                           "the same capture simulated with another --seed: its references against the "
+                           "capture's give each frame's reference noise floor (docs/replay.md)");
     CLI::App* dumpCommand =
         app.add_subcommand("dump", "Write every intermediate of the named passes of one frame");
     replayOptions(dumpCommand, dump);
@@ -158,6 +177,7 @@ int main(int argc, char** argv) {
     viewCommand->add_option("--effects", view.effects, glint::cli::effectNames() + " (default: declared)")
         ->delimiter(',');
     viewCommand->add_option("--set", view.settings, "a setting, name=value (repeatable; glint settings)");
+    presetOptions(viewCommand, view.preset);
     viewCommand->add_option("--script", view.script, "commands to run, one a line (docs/viewer.md)");
     viewCommand->add_option("--screenshot", view.screenshot,
                             "write the window's image as PNG after frame --after, then exit");
@@ -171,6 +191,9 @@ int main(int argc, char** argv) {
     reportCommand->add_option("runs", report.runs, "folders written by glint run")->required();
     reportCommand->add_option("--out", report.outPath, "the HTML file")->required();
     reportCommand->add_option("--title", report.title, "page title")->capture_default_str();
+    reportCommand->add_option("--anchors", report.anchorsPath,
+                              "anchor points measured elsewhere (docs/anchors/*.json), listed with their "
+                              "conditions beside the plot of the scene they were measured on");
 
     try {
         app.parse(argc, argv);
@@ -193,6 +216,10 @@ int main(int argc, char** argv) {
             return glint::cli::runSimulate(simulate);
         }
         if (*reportCommand) return glint::cli::runReport(report);
+        // An unknown preset or an unreadable preset file fails before any capture is read.
+        for (const glint::cli::PresetChoice* preset :
+             {&bench.preset, &run.preset, &dump.preset, &check.preset, &view.preset})
+            glint::cli::checkPresetChoice(*preset);
         if (*viewCommand) {
             view.validate = validate;
             return glint::cli::runView(view);
@@ -219,6 +246,11 @@ int main(int argc, char** argv) {
             else
                 bench.captures = benchTargets;
             if (!bench.captures.empty()) return glint::cli::runBenchCaptures(bench);
+            if (!bench.preset.name.empty() && bench.effect != "sssr")
+                throw std::invalid_argument(
+                    "bench: --preset applies to sssr, captures and scene files, not to "
+                    "the synthetic effect '" +
+                    bench.effect + "'");
             if (!bench.geometry.empty())
                 throw std::invalid_argument("bench: --geometry is for captures and scene files, not the "
                                             "synthetic effect '" +
@@ -230,6 +262,7 @@ int main(int argc, char** argv) {
                 std::sscanf(studySize.c_str(), "%ux%u", &study.width, &study.height) != 2)
                 throw std::invalid_argument("study: --size must read WxH, e.g. 1920x1080");
             study.validate = validate;
+            if (*studyBudgetOption) study.budgetUs = studyBudget;
             return glint::cli::runStudy(study);
         }
     } catch (const std::exception& error) {

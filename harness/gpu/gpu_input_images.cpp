@@ -25,6 +25,9 @@ VkFormat formatFor(InputKind kind, bool compact) {
     // 8-bit visibility: 0 or 1; NaN uploads as 0, shadowed, as the shader treats it.
     case InputKind::ShadowVisibility:
         return compact ? VK_FORMAT_R8_UNORM : VK_FORMAT_R32_SFLOAT;
+    // A distance in scene units; < 0 marks unknown.
+    case InputKind::ShadowBlockerDistance:
+        return compact ? VK_FORMAT_R16_SFLOAT : VK_FORMAT_R32_SFLOAT;
     case InputKind::Environment:
         return VK_FORMAT_R32G32B32A32_SFLOAT;
     case InputKind::SceneGeometry: // buffers, not an image

@@ -1,7 +1,12 @@
 #include "replay/replay_error.h"
 
+#include "replay/replay_frame.h"
+
+#include <glint/glint_effect.h>
+
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace glint::replay {
 namespace {
@@ -53,7 +58,7 @@ ReferenceError compare(const std::string& effect, const NamedImage& output, cons
     const std::uint32_t channels = std::min(out.channels, reference.channels);
     error.map = report::Image{out.width, out.height, 1,
                               std::vector<float>(std::size_t{out.width} * out.height, 0.0f)};
-    double sum = 0.0, squares = 0.0, penumbraSum = 0.0;
+    double sum = 0.0, squares = 0.0, clampedSum = 0.0, penumbraSum = 0.0;
     std::size_t penumbraCount = 0, nonFinite = 0;
     for (std::size_t i = 0; i < mask.size(); ++i) {
         const float* a = &out.pixels[i * out.channels];
@@ -62,10 +67,14 @@ ReferenceError compare(const std::string& effect, const NamedImage& output, cons
         if (!finite) ++nonFinite;
         if (!mask[i] || !finitePixel(b, channels)) continue;
         float difference[3] = {};
-        double pixelSquares = 0.0;
+        double pixelSquares = 0.0, pixelClamped = 0.0;
         for (std::uint32_t c = 0; c < std::min(channels, 3u); ++c) {
             difference[c] = finite ? std::abs(a[c] - b[c]) : 0.0f;
             pixelSquares += double{difference[c]} * double{difference[c]};
+            // A non-finite output pixel counts as the largest clamped difference.
+            pixelClamped += finite ? std::abs(std::clamp(double{a[c]}, 0.0, kMaeClamp) -
+                                              std::clamp(double{b[c]}, 0.0, kMaeClamp))
+                                   : kMaeClamp;
         }
         float value = luminance(difference, std::min(channels, 3u));
         if (relative) value /= std::max(luminance(b, std::min(channels, 3u)), 0.05f);
@@ -73,6 +82,7 @@ ReferenceError compare(const std::string& effect, const NamedImage& output, cons
         error.map.pixels[i] = value;
         sum += double{value};
         squares += pixelSquares / std::min(channels, 3u);
+        clampedSum += pixelClamped / std::min(channels, 3u);
         ++error.pixels;
         if (!relative && b[0] > 0.05f && b[0] < 0.95f) {
             penumbraSum += double{value};
@@ -82,6 +92,7 @@ ReferenceError compare(const std::string& effect, const NamedImage& output, cons
     if (error.pixels > 0) {
         error.mean = sum / static_cast<double>(error.pixels);
         error.rmse = std::sqrt(squares / static_cast<double>(error.pixels));
+        error.maeClamped = clampedSum / static_cast<double>(error.pixels);
     }
     if (penumbraCount > 0) error.penumbra = penumbraSum / static_cast<double>(penumbraCount);
     error.nonFinite =
@@ -125,6 +136,31 @@ std::vector<ReferenceError> referenceErrors(const capture::Frame& frame, const F
                 errors.back().noisyMean = compare("shadows", *noisy, reference->image, mask, false).mean;
         }
     return errors;
+}
+
+std::vector<ReferenceError> referenceNoise(const capture::Frame& frame, const FrameResult& result,
+                                           const capture::Frame& second, float roughnessThreshold) {
+    if (second.width != frame.width || second.height != frame.height)
+        throw std::invalid_argument("second reference: its frame is " + std::to_string(second.width) + "x" +
+                                    std::to_string(second.height) + ", the capture's " +
+                                    std::to_string(frame.width) + "x" + std::to_string(frame.height));
+    std::vector<ReferenceError> noise;
+    for (const std::string effect : {"reflections", "hybrid", "shadows"}) {
+        const NamedImage* reference = result.find(effect + "/reference");
+        const EffectDescriptor* descriptor = findEffect(effect);
+        if (!reference || !descriptor || descriptor->reference.empty()) continue;
+        const capture::Layer* layer = capture::findLayer(second, "reference." + descriptor->reference);
+        if (!layer) continue;
+        const std::uint32_t channels = std::min<std::uint32_t>(
+            reference->image.channels, static_cast<std::uint32_t>(layer->channels.size()));
+        const report::Image other{second.width, second.height, channels,
+                                  layerChannels(second, layer->name, channels)};
+        const bool reflection = isReflectionEffect(effect);
+        const std::vector<std::uint8_t> mask =
+            reflection ? glossyMask(frame, roughnessThreshold) : surfaceMask(frame);
+        noise.push_back(compare(effect, *reference, other, mask, reflection));
+    }
+    return noise;
 }
 
 } // namespace glint::replay

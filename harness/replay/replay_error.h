@@ -7,6 +7,9 @@
 //   shadows      "denoised" against reference.shadow over receivers (depth not background);
 //                per-pixel |out - ref|; `penumbra` is the mean over reference in (0.05, 0.95)
 // Non-finite output pixels count in `nonFinite` and as error 1 in the map, never as NaN.
+// `maeClamped`: radiance (or visibility) clamped to [0, kMaeClamp] per channel, then the mean of
+// |out - ref| over the colour channels and the mask's pixels; bounded, so a few fireflies in
+// either image cannot dominate it the way they dominate the relative error.
 #pragma once
 
 #include "capture/capture_frame.h"
@@ -18,12 +21,16 @@
 
 namespace glint::replay {
 
+// The upper end of the range `maeClamped` clamps radiance to (the lower end is 0).
+inline constexpr double kMaeClamp = 16.0;
+
 struct ReferenceError {
     std::string effect;      // "reflections"
     std::string image;       // the image compared, "reflections/denoised"
     std::size_t pixels = 0;  // pixels in the mask
     double mean = 0.0;       // mean per-pixel error over the mask
     double rmse = 0.0;       // RMSE of the colour channels over the mask
+    double maeClamped = 0.0; // mean |out - ref| of the colour channels clamped to [0, kMaeClamp]
     double penumbra = -1.0;  // shadows: mean |error| over penumbra pixels (-1 when there are none)
     double noisyMean = -1.0; // the same mean for the effect's noisy input, when the output is denoised
     double nonFinite = 0.0;  // fraction of output pixels (all, not only the mask) that are not finite
@@ -38,5 +45,14 @@ std::vector<std::uint8_t> errorMask(const capture::Frame& frame, const std::stri
 // One entry per effect whose output and reference are both in `result`.
 std::vector<ReferenceError> referenceErrors(const capture::Frame& frame, const FrameResult& result,
                                             float roughnessThreshold);
+
+// The noise of the capture's own references: for every effect referenceErrors scores, the
+// reference in `result` against `second`'s reference layer (the same frame rendered again with
+// an independent seed), in the same metric and over the same mask, taken from `frame`. Its
+// `mean` is the floor under which an effect's error cannot be told from zero. An effect whose
+// reference `second` lacks is left out; a `second` of another size throws
+// std::invalid_argument naming both sizes.
+std::vector<ReferenceError> referenceNoise(const capture::Frame& frame, const FrameResult& result,
+                                           const capture::Frame& second, float roughnessThreshold);
 
 } // namespace glint::replay

@@ -96,6 +96,8 @@ std::string inputLayer(const capture::Frame& frame, InputKind kind) {
         return "material";
     case InputKind::ShadowVisibility:
         return "shadow";
+    case InputKind::ShadowBlockerDistance:
+        return "shadow_blocker";
     case InputKind::PreviousDepth:
     case InputKind::Environment:
     case InputKind::SceneGeometry:
@@ -127,6 +129,13 @@ std::vector<float> inputTexels(const capture::Frame& frame, InputKind kind, std:
     case InputKind::ShadowVisibility:
         channels = 1;
         return layerChannels(frame, "shadow", 1);
+    case InputKind::ShadowBlockerDistance:
+        // Optional: without the layer every pixel's blocker is unknown (-1), and the shadow
+        // denoiser filters as without its penumbra estimate.
+        channels = 1;
+        if (!capture::findLayer(frame, "shadow_blocker"))
+            return std::vector<float>(std::size_t{frame.width} * frame.height, -1.0f);
+        return layerChannels(frame, "shadow_blocker", 1);
     case InputKind::PreviousDepth:
     case InputKind::Environment:
     case InputKind::SceneGeometry:
@@ -186,6 +195,7 @@ FrameInfo frameInfo(const capture::Frame& frame, const capture::Environment& env
     }
     info.frameIndex = index;
     info.resetHistory = reset;
+    info.shadowLightTanHalfAngle = static_cast<float>(frame.shadowLightTanHalfAngle);
     return info;
 }
 

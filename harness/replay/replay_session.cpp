@@ -78,7 +78,8 @@ std::optional<MissingLayer> missingLayer(const capture::Frame& frame, const std:
         if (std::find(effects.begin(), effects.end(), effect->name) == effects.end()) continue;
         for (const InputDesc& input : effect->inputs) {
             if (!inputUsed(input, settings) || input.kind == InputKind::Environment ||
-                input.kind == InputKind::PreviousDepth || input.kind == InputKind::SceneGeometry)
+                input.kind == InputKind::PreviousDepth || input.kind == InputKind::SceneGeometry ||
+                input.kind == InputKind::ShadowBlockerDistance) // optional (inputTexels)
                 continue;
             const std::string layer = inputLayer(frame, input.kind);
             if (input.kind == InputKind::Material && !hasLayer(frame, layer))

@@ -98,6 +98,7 @@ dl.facts dd { margin: 0; font-family: ui-monospace, monospace; }
 figure { margin: 0; }
 figure img { display: block; height: auto; max-width: 100%; background: #000; }
 img.pixelated { image-rendering: pixelated; }
+svg.plot { max-width: 100%; height: auto; font-family: system-ui, sans-serif; }
 figcaption { font-size: 0.9em; margin-top: 0.3em; max-width: 32em; }
 table { border-collapse: collapse; margin: 1em 0; font-variant-numeric: tabular-nums; }
 th, td { border: 1px solid #ccc; padding: 0.25em 0.6em; text-align: left; }
@@ -173,6 +174,11 @@ std::string renderHtml(const Report& report) {
     for (const Section& section : report.sections) {
         out += "<section>\n<h2>" + htmlEscape(section.heading) + "</h2>\n";
         appendParagraphs(out, section.text);
+        if (!section.plots.empty()) {
+            out += "<div class=\"figures\">\n";
+            for (const Plot& plot : section.plots) out += renderSvgPlot(plot) + "\n";
+            out += "</div>\n";
+        }
         if (!section.figures.empty()) {
             out += "<div class=\"figures\">\n";
             for (const Figure& figure : section.figures) appendFigure(out, figure);

@@ -1,6 +1,9 @@
-// A self-contained HTML report: one file with inline CSS and every figure embedded as a
-// base64 PNG data URI, so it can be moved or mailed alone and opens without a network.
+// A self-contained HTML report: one file with inline CSS, every figure embedded as a base64
+// PNG data URI and every plot as inline SVG, so it can be moved or mailed alone and opens
+// without a network.
 #pragma once
+
+#include "report/report_plot.h"
 
 #include <string>
 #include <string_view>
@@ -24,6 +27,7 @@ struct Section {
     std::string text; // blank lines separate paragraphs; single newlines are kept as line breaks
     std::vector<Figure> figures;
     std::vector<Table> tables;
+    std::vector<Plot> plots; // inline SVG, shown before the figures
 };
 
 struct Report {

@@ -136,8 +136,10 @@ EffectPlan planFrame(const Scene& scene, const GLINT_SceneConstants& base,
         c.passSalt = 0x53484431u;
         std::vector<ResourceUse> uses = common;
         uses.push_back(write("g_visibility", "shadow"));
-        plan.passes.push_back(makePass("shadow", "scene_shadow", uses, c, w, h));
+        uses.push_back(write("g_blocker", "shadow_blocker"));
+        plan.passes.push_back(makePass("shadow", "scene_shadow.blocker", uses, c, w, h));
         outputs.push_back({"shadow", "shadow", Format::R32Float, {"Y"}});
+        outputs.push_back({"shadow_blocker", "shadow_blocker", Format::R32Float, {"Y"}});
         if (scene.reference.shadows) {
             c.passSalt = 0x53484432u;
             uses = common;
@@ -363,6 +365,14 @@ Simulation simulate(const gpu::Context& context, const Scene& scene) {
         f.motion = capture::kConventionA;
         if (reflections) f.roughness = {"roughness", "Y", true};
         f.effects = captureEffects(scene);
+        if (needsShadows(scene)) {
+            // The light the shadow layers sample: its angular radius for the denoiser's
+            // penumbra estimate (directional lights only; a sphere light's varies with distance).
+            const LightDesc light = lightsAt(scene, frame).at(scene.shadowLight);
+            if (light.kind == LightKind::Directional && light.angularRadiusDegrees > 0.0f)
+                f.shadowLightTanHalfAngle =
+                    std::tan(static_cast<double>(light.angularRadiusDegrees) * std::numbers::pi / 180.0);
+        }
         for (const OutputImage& out : outputs) {
             const vk::Image& image = res.owned.images.at(out.resource);
             f.layers.push_back(

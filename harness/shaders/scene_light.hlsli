@@ -55,6 +55,20 @@ float SceneVisibilityAlong(float3 position, float3 normal, float3 dir, float max
     return h.t > 0.0 ? 0.0 : 1.0;
 }
 
+// The same test, also giving the distance to the blocker along `dir`: 0 when the direction
+// reaches the light or lies below the surface (a blocker at the surface itself).
+float SceneVisibilityAndBlocker(float3 position, float3 normal, float3 dir, float maxT, out float blocker)
+{
+    blocker = 0.0;
+    if (dot(normal, dir) <= 0.0) return 0.0;
+    SceneHit h = SceneTrace(SceneOffsetOrigin(position, normal), dir, maxT, false); // the closest blocker
+    if (h.t > 0.0) {
+        blocker = h.t;
+        return 0.0;
+    }
+    return 1.0;
+}
+
 // Visible count of cone samples [start, start + count) of a `total`-sample stratification
 // (stratified in cos(theta), golden-ratio in phi). The first two random numbers place the
 // whole stratification, so every chunk of one pixel must start from the same rng state.
@@ -70,6 +84,15 @@ float SceneVisibilitySum(float3 position, float3 normal, SceneLightCone c, uint 
         visible += SceneVisibilityAlong(position, normal, SceneSampleCone(c, u1, u2), c.maxT);
     }
     return visible;
+}
+
+// One cone sample placed exactly as SceneVisibilitySum(.., 0, 1, 1, rng) places it, with the
+// distance to its blocker (SceneVisibilityAndBlocker).
+float SceneVisibilityOneSample(float3 position, float3 normal, SceneLightCone c, inout uint rng, out float blocker)
+{
+    float offset = SceneRandom(rng);
+    float jitter = SceneRandom(rng);
+    return SceneVisibilityAndBlocker(position, normal, SceneSampleCone(c, jitter, frac(offset)), c.maxT, blocker);
 }
 
 // Mean visibility of `count` cone samples.

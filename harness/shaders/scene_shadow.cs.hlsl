@@ -3,6 +3,9 @@
 // `reference.shadow` layer, run in chunks (sampleStart, sampleTotal) that accumulate a running
 // mean in the image. New random numbers every frame (frameIndex seeds them).
 // Background pixels are lit (1).
+// Permutation "blocker" (SCENE_WRITE_BLOCKER=1, one sample per pixel): also writes the distance
+// along the sample's ray to the closest blocker into g_blocker (0 when lit or on the background),
+// the `shadow_blocker` layer the shadow denoiser's penumbra estimate reads.
 #include "entry/common/glint_entry_common.hlsli"
 #include "../harness/shaders/scene_constants.h"
 
@@ -11,6 +14,9 @@ GLINT_BINDING(1, 0) StructuredBuffer<SceneBvhNode> g_scene_nodes;
 GLINT_BINDING(2, 0) StructuredBuffer<ScenePrimitive> g_scene_primitives;
 GLINT_BINDING(3, 0) StructuredBuffer<SceneLight> g_scene_lights;
 GLINT_BINDING(4, 0) GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float> g_visibility;
+#if SCENE_WRITE_BLOCKER
+GLINT_BINDING(5, 0) GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float> g_blocker;
+#endif
 
 #include "../harness/shaders/scene_trace.hlsli"
 #include "../harness/shaders/scene_light.hlsli"
@@ -22,15 +28,24 @@ GLINT_BINDING(4, 0) GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float> g_visibility;
     SceneHit hit;
     bool inside = ScenePrimaryHit(id.xy, origin, dir, hit);
     float visibility = 1.0;
+    float blocker = 0.0;
     if (inside) {
         float3 position = origin + dir * hit.t;
         float3 normal = SceneHitNormal(hit, origin, dir);
         uint rng = SceneSeed(id.xy, g_scene.frameIndex, g_scene.passSalt);
+#if SCENE_WRITE_BLOCKER
+        visibility = SceneVisibilityOneSample(position, normal, SceneLightConeAt(g_scene.shadowLight, position), rng,
+                                              blocker);
+#else
         float sum = SceneVisibilitySum(position, normal, SceneLightConeAt(g_scene.shadowLight, position),
                                        g_scene.sampleStart, g_scene.samples, g_scene.sampleTotal, rng);
         // Running mean over the chunks so far (the image holds the previous chunks' mean).
         float previous = g_scene.sampleStart == 0 ? 0.0 : g_visibility[id.xy] * float(g_scene.sampleStart);
         visibility = (previous + sum) / float(max(g_scene.sampleStart + g_scene.samples, 1u));
+#endif
     }
     g_visibility[id.xy] = visibility;
+#if SCENE_WRITE_BLOCKER
+    g_blocker[id.xy] = blocker;
+#endif
 }

@@ -17,6 +17,11 @@ float3 GLINT_SHADOW_DENOISER_LoadNormal(int2 pixel)
     return g_glint_check[pixel.x + pixel.y].xyz;
 }
 
+float GLINT_SHADOW_DENOISER_LoadBlockerDistance(int2 pixel)
+{
+    return g_glint_check[pixel.x].w;
+}
+
 void GLINT_SHADOW_DENOISER_StoreFiltered(int2 pixel, float2 meanVariance)
 {
     g_glint_check[pixel.x] = float4(meanVariance, 0.0, 0.0);
@@ -26,5 +31,5 @@ void GLINT_SHADOW_DENOISER_StoreFiltered(int2 pixel, float2 meanVariance)
                                 uint groupIndex : SV_GroupIndex)
 {
     GLINT_SHADOW_DENOISER_Filter(groupId.xy, groupThreadId.xy, groupIndex, uint2(13, 7), 2, true,
-                                 float4(0.1, 1.0, -1.0, 0.0), 0.02, 32.0);
+                                 float4(0.1, 1.0, -1.0, 0.0), 0.02, 32.0, 40.0);
 }

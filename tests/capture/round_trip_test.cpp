@@ -92,6 +92,16 @@ TEST_CASE("camera matrices and every header attribute read back bit-exact", "[ca
     CHECK(read.effects == written.effects);
 }
 
+// glint.shadowLightTanHalfAngle is optional: written only when known (> 0), read back bit-exact,
+// and 0 (unknown) when absent (docs/capture-format.md).
+TEST_CASE("the optional shadow light angle reads back bit-exact, and as 0 when absent", "[capture]") {
+    Frame written = test::makeFullFrame(5, 3);
+    CHECK(writeAndRead("round_trip_no_light_angle", written).shadowLightTanHalfAngle == 0.0);
+    written.shadowLightTanHalfAngle = 0.017455064928217585; // tan(1 degree)
+    const Frame read = writeAndRead("round_trip_light_angle", written);
+    CHECK(bits(read.shadowLightTanHalfAngle) == bits(written.shadowLightTanHalfAngle));
+}
+
 TEST_CASE("every enumeration value survives the file attributes", "[capture]") {
     for (DepthConvention depth :
          {DepthConvention::Standard, DepthConvention::Reversed, DepthConvention::ReversedInfinite}) {

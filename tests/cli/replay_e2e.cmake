@@ -7,6 +7,10 @@
 #                penumbra's under a bound, with no non-finite pixel
 #   roundtrip:   dump a frame, check it against itself (exit 0), then against a dump made with
 #                a different traversal budget (exit 1, the intersection differs), then report
+#   noisefloor:  --second-reference: a capture against itself has a noise floor of exactly 0
+#                (identical references), against another seed's a floor above 0; simulate
+#                records its size, samples and seed in simulation.json and run copies it into
+#                the summary; a second capture with fewer frames is one line naming it
 file(REMOVE_RECURSE "${OUT}")
 function(glint_step)
   execute_process(COMMAND "${GLINT}" ${ARGN} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
@@ -67,6 +71,31 @@ elseif(CASE STREQUAL "shadows")
   require_less("denoised shadow error over the penumbra" "${penumbra}" 0.2)
   if(NOT nonFinite EQUAL 0)
     message(FATAL_ERROR "non-finite shadow pixels: ${nonFinite}")
+  endif()
+elseif(CASE STREQUAL "noisefloor")
+  glint_expect(0 --validate simulate "${SCENES}/glossy_room.toml" --size 32x18 --frame-count 2 --spp 4 --out "${OUT}/capture")
+  glint_expect(0 simulate "${SCENES}/glossy_room.toml" --size 32x18 --frame-count 2 --spp 4 --seed 2 --out "${OUT}/capture2")
+  glint_expect(0 --validate run "${OUT}/capture" --second-reference "${OUT}/capture" --out "${OUT}/run")
+  summary_error(reflections referenceNoiseLast same)
+  if(NOT same EQUAL 0)
+    message(FATAL_ERROR "a reference against itself has a noise floor of ${same}, not 0")
+  endif()
+  glint_expect(0 run "${OUT}/capture" --second-reference "${OUT}/capture2" --out "${OUT}/run")
+  summary_error(reflections referenceNoiseLast floor)
+  if(NOT floor GREATER 0)
+    message(FATAL_ERROR "references of seeds 1 and 2 at 4 spp have a noise floor of ${floor}, not above 0")
+  endif()
+  file(READ "${OUT}/run/summary.json" json)
+  string(JSON spp GET "${json}" simulation referenceSpp)
+  string(JSON seed GET "${json}" secondReference seed)
+  string(JSON width GET "${json}" width)
+  if(NOT spp EQUAL 4 OR NOT seed EQUAL 2 OR NOT width EQUAL 32)
+    message(FATAL_ERROR "summary.json records spp ${spp}, second seed ${seed}, width ${width}; expected 4, 2, 32")
+  endif()
+  glint_expect(0 simulate "${SCENES}/glossy_room.toml" --size 32x18 --frame-count 1 --spp 1 --out "${OUT}/capture1")
+  glint_step(run "${OUT}/capture" --second-reference "${OUT}/capture1" --out "${OUT}/run_bad")
+  if(NOT step_status EQUAL 2)
+    message(FATAL_ERROR "a second reference with fewer frames exited ${step_status}, not 2")
   endif()
 elseif(CASE STREQUAL "unscored")
   # No glossy pixel at all (roughnessThreshold 0): the error is "no pixels scored", null in

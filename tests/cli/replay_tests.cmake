@@ -43,7 +43,7 @@ glint_cli_test(NAME "report without summary.json names the file" LABELS unit EXI
   COMMAND report "${GLINT_CLI_SAMPLE_DIR}" --out "${PROJECT_BINARY_DIR}/test-output/cli/report_bad.html")
 
 # Simulated scenes with references through run (bounds in replay_e2e.cmake), then dump/check.
-foreach(case IN ITEMS reflections shadows roundtrip unscored)
+foreach(case IN ITEMS reflections shadows roundtrip unscored noisefloor)
   add_test(NAME "cli: replay end to end: ${case}"
     COMMAND "${CMAKE_COMMAND}" "-DGLINT=$<TARGET_FILE:glint>" "-DCASE=${case}"
             "-DSCENES=${PROJECT_SOURCE_DIR}/harness/scenes" "-DOUT=${PROJECT_BINARY_DIR}/test-output/cli/replay_${case}"
@@ -95,3 +95,11 @@ glint_cli_test(NAME "run with a missing channel map names the map file" LABELS u
   STDERR_ONE_LINE "no_such_map.toml"
   COMMAND run "${GLINT_CLI_SAMPLE_DIR}/sample" --map "${GLINT_CLI_SAMPLE_DIR}/no_such_map.toml"
           --out "${PROJECT_BINARY_DIR}/test-output/cli/run_bad")
+
+# The report's metric sentence, error-against-frame plot and anchors (no GPU: a hand-written run).
+add_test(NAME "cli: report names the metric, plots error against frame and lists anchors beside the plot"
+  COMMAND "${CMAKE_COMMAND}" "-DGLINT=$<TARGET_FILE:glint>"
+          "-DANCHORS=${PROJECT_SOURCE_DIR}/docs/anchors/fidelityfx-sdk-1.1.4.json"
+          "-DOUT=${PROJECT_BINARY_DIR}/test-output/cli/report_plot" -P "${CMAKE_CURRENT_SOURCE_DIR}/cli/report_plot.cmake")
+set_tests_properties("cli: report names the metric, plots error against frame and lists anchors beside the plot"
+  PROPERTIES LABELS unit)

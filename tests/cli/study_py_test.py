@@ -43,6 +43,21 @@ class ParetoTest(unittest.TestCase):
         self.assertEqual(study.scored(0.12345), "0.1235")
 
 
+class ChoiceTableTest(unittest.TestCase):
+    def test_presets_and_budget_are_listed_as_study_json_holds_them(self):
+        point = {"point": "no_denoiser", "settings": ["denoise=false"], "time_us": 412.3, "error": 1.5}
+        study_json = {"presets": {"reflections": {"ultra": dict(point, point="spq_4"), "low": point}},
+                      "budget": {"budget_us": 500.0, "choices": {"reflections": point, "shadows": None}}}
+        lines = study.choice_tables(study_json)
+        self.assertIn("| reflections | low | no_denoiser | `denoise=false` | 412.3 | 1.5000 |", lines)
+        rows = [line for line in lines if line.startswith("| reflections |")]
+        self.assertEqual([row.split(" | ")[1] for row in rows], ["low", "ultra"])  # cheapest first
+        self.assertIn("### budget 500 µs", lines)
+        self.assertIn("- reflections: no_denoiser (`denoise=false`), 412.3 µs, error 1.5000 × the defaults'", lines)
+        self.assertIn("- shadows: no measured point fits", lines)
+        self.assertEqual(study.choice_tables({}), [])  # a study from before the presets
+
+
 class FlipTest(unittest.TestCase):
     def setUp(self):
         self.folder = tempfile.TemporaryDirectory()

@@ -1,15 +1,44 @@
 # Script mode: the lavapipe-sized study (glint --validate study --quick) and its scaling runs
-# exit 0, and every row of study.csv reports zero non-finite output pixels.
+# exit 0, and every row of study.csv reports zero non-finite output pixels. The sweep runs with
+# a budget every point fits, so it names a point per effect, and the presets.toml it writes
+# reads back through --preset-file.
 cmake_minimum_required(VERSION 3.25) # policies: empty CSV fields stay list elements, IN_LIST
 file(REMOVE_RECURSE "${OUT}")
-foreach(extra IN ITEMS "" "--scaling")
+foreach(extra IN ITEMS "--budget-us;1e9" "--scaling")
   execute_process(COMMAND "${GLINT}" --validate study --quick ${extra} --out "${OUT}"
                   RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
   message(STATUS "glint study --quick ${extra}: exit ${status}\n${out}${err}")
   if(NOT status EQUAL 0)
     message(FATAL_ERROR "glint study --quick ${extra} exited ${status}")
   endif()
+  if(extra STREQUAL "--budget-us;1e9")
+    foreach(effect IN ITEMS reflections shadows)
+      if(NOT out MATCHES "budget 1000000000.0 us: ${effect}: [a-z_0-9.]+ \\(")
+        message(FATAL_ERROR "glint study --budget-us 1e9 named no point for ${effect}")
+      endif()
+      foreach(preset IN ITEMS low medium high ultra)
+        if(NOT out MATCHES "preset ${preset} +${effect} ")
+          message(FATAL_ERROR "glint study printed no ${preset} preset for ${effect}")
+        endif()
+      endforeach()
+    endforeach()
+    file(READ "${OUT}/study.json" json)
+    string(JSON chosen ERROR_VARIABLE missing GET "${json}" budget choices shadows point)
+    if(missing)
+      message(FATAL_ERROR "study.json has no budget choice for shadows: ${missing}")
+    endif()
+  endif()
 endforeach()
+
+# The presets.toml the study wrote is a presets file --preset-file reads: bench applies its low
+# shadows bundle, which is the settings of one of the study's shadow points.
+execute_process(COMMAND "${GLINT}" --validate bench harness/scenes/courtyard_penumbra.toml --resolution 32x18
+                        --runs 1 --effects shadows --preset-file "${OUT}/presets.toml" --preset low --json -
+                RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+message(STATUS "glint bench --preset-file ${OUT}/presets.toml --preset low: exit ${status}\n${err}")
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "glint bench with the study's presets.toml exited ${status}")
+endif()
 
 # CSV lines hold ';' (lists inside a field): swap it out before CMake's lists see it.
 function(read_csv file header_out rows_out)

@@ -140,6 +140,10 @@ Rgb averageAt(const TileGrid& tiles, std::uint32_t x, std::uint32_t y) {
     return {sum[0] / total, sum[1] / total, sum[2] / total};
 }
 
+double spatialFootprint(double alpha, double mirrorThreshold) {
+    return std::clamp((alpha - mirrorThreshold) / kFootprintRamp, 0.0, 1.0);
+}
+
 void prefilter(const PrefilterInputs& in, std::vector<RadianceVariance>& out) {
     const DenoiserSurface& s = *in.surface;
     const TileGrid& tiles = *in.tiles;
@@ -171,14 +175,19 @@ void prefilter(const PrefilterInputs& in, std::vector<RadianceVariance>& out) {
             Rgb sum{centreWeight * in.radiance[p][0], centreWeight * in.radiance[p][1],
                     centreWeight * in.radiance[p][2]};
             const double varianceWeight = std::max(0.1, 1.0 - std::exp(-4.4 * variance));
+            const double footprint = spatialFootprint(s.alpha[p], in.mirrorThreshold);
             for (const PixelOffset& tap : taps) {
                 const std::size_t q = clampedIndex(w, h, std::int64_t{x} + tap.x, std::int64_t{y} + tap.y);
                 if (!s.glossy[q]) continue;
                 const double normalWeight = std::pow(std::max(0.0, dot(s.normal[p], s.normal[q])), 512.0);
                 const double depthWeight =
                     std::exp(-4.0 * std::abs(s.viewDepth[p] - s.viewDepth[q]) / s.viewDepth[p]);
+                // The footprint: a Gaussian in the tap's distance that narrows to nothing as
+                // alpha falls to the mirror threshold (pow(0, d^2 / 2) = 0 for every tap).
+                const double distanceWeight = std::pow(footprint, 0.5 * (tap.x * tap.x + tap.y * tap.y));
                 const double weight = normalWeight * depthWeight *
-                                      radianceWeight(average, in.radiance[q], variance) * varianceWeight;
+                                      radianceWeight(average, in.radiance[q], variance) * varianceWeight *
+                                      distanceWeight;
                 for (std::size_t c = 0; c < 3; ++c) sum[c] += weight * in.radiance[q][c];
                 varianceSum += weight * weight * in.variance[q];
                 weightSum += weight;
@@ -225,10 +234,14 @@ RadianceVariance resolvePixel(const ResolveInputs& in) {
     const double n = std::max(in.historyLength, 1.0);
     // 3. The history, clipped toward the box centre (without one, the current sample stands in).
     const Rgb history = in.historyValid ? clipTowardCentre(in.history, boxCentre, extent) : current;
-    // 4. The current sample pulled toward the average by 1/(n+1), then clipped around it.
-    const Rgb pulled = clipTowardCentre(mix(current, in.average, 1.0 / (n + 1.0)), in.average, extent);
-    // 5. Blend by history length.
-    const double historyWeight = in.historyValid ? 1.0 - 1.0 / n : 0.0;
+    // 4. The current sample pulled toward the average by 1/(n+1), then clipped around it; of
+    // that move, the spatial footprint's share is taken (none for mirrors).
+    const Rgb pulled =
+        mix(current, clipTowardCentre(mix(current, in.average, 1.0 / (n + 1.0)), in.average, extent),
+            spatialFootprint(in.alpha, in.mirrorThreshold));
+    // 5. Blend by history length. A mirror's sample is noise-free: it is the output.
+    const bool mirror = in.alpha < in.mirrorThreshold;
+    const double historyWeight = in.historyValid && !mirror ? 1.0 - 1.0 / n : 0.0;
     RadianceVariance out;
     out.rgb = clampStored(mix(pulled, history, historyWeight));
     // The variance for next frame: the squared relative luminance change against the history,

@@ -50,6 +50,13 @@ TileGrid tileAverages(std::uint32_t width, std::uint32_t height, const std::vect
 // tiles, renormalized over those that are listed and have a weight; 0 when none has.
 Rgb averageAt(const TileGrid& tiles, std::uint32_t x, std::uint32_t y);
 
+// How far the spatial filters reach, as a scale in [0, 1] (docs/reflections_denoiser.md,
+// "Mirrors"): 0 for alpha at or below the mirror threshold, rising linearly in alpha to 1 at
+// kFootprintRamp above it. The prefilter weighs a tap at distance d pixels by s^(d^2 / 2) and
+// the resolve applies s times its pull toward the tile average.
+inline constexpr double kFootprintRamp = 0.01;
+double spatialFootprint(double alpha, double mirrorThreshold);
+
 // The per-pixel surface the passes share.
 struct DenoiserSurface {
     std::uint32_t width = 0, height = 0;
@@ -89,6 +96,8 @@ struct ResolveInputs {
     bool historyValid = false;
     double historyLength = 1.0;
     double historyClipScale = 0.7;
+    double alpha = 1.0;            // the centre's GGX alpha
+    double mirrorThreshold = 1e-4; // below it, the output is the centre's prefiltered sample
     // Added to the neighbourhood's sigma (clamped at 0): 0 for the pass itself; a test probes
     // how much a rounding error in sigma can move the result with it.
     Rgb sigmaOffset{};

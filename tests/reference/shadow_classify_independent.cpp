@@ -85,7 +85,9 @@ Result evaluate(const Pixel& p, double mean, double historyOffset, double scoreO
     const double temporalVariance = n > 1.0 ? newM2 / (n - 1.0) : 1.0;
     const double history = p.found ? std::clamp(p.history + historyOffset, 0.0, 1.0) : mean;
     const double radius = kClampSigmas * sigma;
-    const double clamped = std::clamp(history, mean - radius, mean + radius);
+    // The range holds this frame's sample (docs/shadow_denoiser.md, "Classification").
+    const double clamped =
+        std::clamp(history, std::min(mean - radius, p.sample), std::max(mean + radius, p.sample));
     const double deviation = (history - mean) / std::max(radius, 0.001);
     n *= std::exp(-deviation * deviation / 20.0);
     if (p.found && p.antiLagScore >= 0.0) n = std::min(n, antiLagCap(p.antiLagScore + scoreOffset));
@@ -185,14 +187,20 @@ ShadowClassifyRanges shadowClassifyIndependent(const ShadowClassifyInputs& in,
                     const double zc = z(x, y);
                     const bool receiver = zc > 0.0;
                     if (clear) {
-                        // (value, 0), moments (value, 0, receiver ? 1 : 0, value).
+                        // (value, 0), moments (value, 0, receiver ? 1 : 0, value); a
+                        // non-receiver's shadow is 1 (lit, docs/shadow_denoiser.md).
                         const double value = anyReceiver && allLit && receiver ? 1.0 : 0.0;
-                        const double sv[2] = {value, 0.0};
+                        const double sv[2] = {receiver ? value : 1.0, 0.0};
                         const double moments[4] = {value, 0.0, receiver ? 1.0 : 0.0, value};
                         store(p, sv, moments);
                         continue;
                     }
-                    if (!receiver) continue; // zeros
+                    if (!receiver) { // (1, 0), moments zeros
+                        const double sv[2] = {1.0, 0.0};
+                        const double moments[4] = {0.0, 0.0, 0.0, 0.0};
+                        store(p, sv, moments);
+                        continue;
+                    }
 
                     // The 17x17 Gaussian mean, in double with the exact weights.
                     double mean = 0.0;

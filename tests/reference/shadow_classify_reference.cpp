@@ -147,13 +147,16 @@ ShadowClassifyOutputs shadowClassify(const ShadowClassifyInputs& in) {
                     const bool receiver = zc > 0.0f;
                     if (clear) {
                         const float value = anyReceiver && allLit && receiver ? 1.0f : 0.0f;
-                        out.shadowVariance[2 * p] = value;
+                        out.shadowVariance[2 * p] = receiver ? value : 1.0f; // non-receivers: lit
                         out.moments[4 * p] = value;
                         out.moments[4 * p + 2] = receiver ? 1.0f : 0.0f;
                         out.moments[4 * p + 3] = value;
                         continue;
                     }
-                    if (!receiver) continue;
+                    if (!receiver) {
+                        out.shadowVariance[2 * p] = 1.0f; // (1, 0), moments zeros
+                        continue;
+                    }
                     float lit = 0.0f, shadowed = 0.0f;
                     for (int r = -8; r <= 8; ++r) {
                         const auto [rowLit, rowShadowed] = rowSum(x, y + r);
@@ -236,9 +239,11 @@ ShadowClassifyOutputs shadowClassify(const ShadowClassifyInputs& in) {
                     const float newMean = m + delta / n;
                     const float newM2 = m2 + delta * (sample - newMean);
                     const float temporalVariance = n > 1.0f ? newM2 / (n - 1.0f) : 1.0f;
-                    // Wide clamp (2 sigma_s), blend max(1/n, 1/64), variance of the mean scaled.
+                    // Wide clamp (2 sigma_s, widened to hold the sample), blend max(1/n, 1/64),
+                    // variance of the mean scaled.
                     const float radius = 2.0f * spatialSigma;
-                    const float clamped = std::clamp(history, mean - radius, mean + radius);
+                    const float clamped =
+                        std::clamp(history, std::min(mean - radius, sample), std::max(mean + radius, sample));
                     const float deviation = (history - mean) / std::max(radius, 0.001f);
                     n *= std::exp(-deviation * deviation / 20.0f);
                     if (found && in.antiLag) n = std::min(n, antiLagCap(x, y, px, py, zc));

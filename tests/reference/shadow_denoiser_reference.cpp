@@ -76,16 +76,46 @@ std::vector<float> shadowFilterPass(const ShadowFilterInputs& inputs, const std:
         return std::size_t(std::clamp(y, 0, h - 1)) * std::size_t(w) + std::size_t(std::clamp(x, 0, w - 1));
     };
 
+    // Penumbra width in pixels each receiver's blocker implies (0 for lit or non-receivers).
+    std::vector<double> width(count, 0.0);
+    if (inputs.penumbraScale > 0.0f)
+        for (std::size_t i = 0; i < count; ++i) {
+            if (geometry[i].z <= 0.0f) continue;
+            const double b = inputs.blockerDistance.at(i);
+            const double wide = 64.0; // unknown: wider than the full footprint needs
+            width[i] = !std::isfinite(b) || b < 0.0
+                           ? wide
+                           : std::min(wide, double{inputs.penumbraScale} * b / double{geometry[i].z});
+        }
+
     std::vector<float> out(2 * count, 0.0f);
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
             const std::size_t c = at(x, y);
-            if (geometry[c].z <= 0.0f) continue;
+            double footprint = 1.0;
+            if (inputs.penumbraScale > 0.0f) {
+                double widest = 0.0;
+                for (int j = -2; j <= 2; ++j)
+                    for (int i = -2; i <= 2; ++i) widest = std::max(widest, width[at(x + i, y + j)]);
+                footprint = std::clamp((widest - 1.0) / double(step), 0.0, 1.0);
+            }
+            if (geometry[c].z <= 0.0f) { // non-receivers: (1, 0), lit
+                out[2 * c] = 1.0f;
+                continue;
+            }
             float filteredVariance = 0.0f;
             for (int j = -1; j <= 1; ++j)
                 for (int i = -1; i <= 1; ++i)
                     filteredVariance +=
                         (i == 0 ? 0.5f : 0.25f) * (j == 0 ? 0.5f : 0.25f) * values[at(x + i, y + j)][1];
+            if (!(footprint > 0.0)) { // no taps: the input as it is (then the remap, if asked)
+                const float variance = values[c][1];
+                const float mean =
+                    finalPass ? std::pow(values[c][0], std::max(1.2f - variance, 1.0f)) : values[c][0];
+                out[2 * c] = std::isfinite(mean) ? mean : 0.0f;
+                out[2 * c + 1] = variance;
+                continue;
+            }
             const float sigma = std::sqrt(filteredVariance + 1e-9f);
             const float depthScale = std::max(inputs.depthSigma * geometry[c].z, 1e-20f);
             float weightSum = 1.0f;
@@ -100,7 +130,7 @@ std::vector<float> shadowFilterPass(const ShadowFilterInputs& inputs, const std:
                     const auto& a = geometry[c].n;
                     const auto& b = geometry[q].n;
                     const float cosine = std::max(a[0] * b[0] + a[1] * b[1] + a[2] * b[2], 0.0f);
-                    const float weight = kernel(i) * kernel(j) *
+                    const float weight = static_cast<float>(footprint) * kernel(i) * kernel(j) *
                                          std::exp(-std::abs(values[c][0] - values[q][0]) / sigma) *
                                          std::exp(-std::abs(geometry[c].z - geometry[q].z) / depthScale) *
                                          std::pow(cosine, inputs.normalPower);

@@ -21,6 +21,11 @@ struct ShadowFilterInputs {
     float depthSigma = 0.02f;
     float normalPower = 32.0f;
     bool contrastRemap = false; // the last pass applies mean^max(1.2 - variance, 1)
+    // Penumbra footprint (docs/shadow_denoiser.md, "Penumbra-aware filtering"): with
+    // penumbraScale > 0, a pass of step s weighs every neighbour by clamp((W - 1) / s, 0, 1), W the
+    // widest penumbraScale * blocker / z over the pixel's 5 x 5 (unknown blockers: 64 pixels).
+    float penumbraScale = 0.0f;
+    std::vector<float> blockerDistance; // per pixel; read only with penumbraScale > 0
 };
 
 // One a-trous iteration; returns RG per pixel.

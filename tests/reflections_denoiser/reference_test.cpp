@@ -370,6 +370,8 @@ void checkPassesAgainstReferences(bool half) {
                 r.historyValid = reprojected[4 * i + 3] > 0.5f;
                 r.historyLength = length[i];
                 r.historyClipScale = denoiser.historyClipScale;
+                r.alpha = surface.alpha[i];
+                r.mirrorThreshold = desc.mirrorThreshold;
                 const reference::RadianceVariance e = reference::resolvePixel(r);
                 const reference::NeighbourhoodStatistics statistics = reference::resolveStatistics(r);
                 Rgb move{};

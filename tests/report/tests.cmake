@@ -4,4 +4,5 @@ find_package(PNG REQUIRED)
 glint_add_test_suite(NAME report LABELS unit
   SOURCES
     report/report_test.cpp
+    report/report_plot_test.cpp
   LIBS glint_report PNG::PNG OpenEXR::OpenEXR)

@@ -40,7 +40,20 @@ TEST_CASE("A shadows-only scene traces no reflection rays and writes no reflecti
     scene.reference.samplesPerPixel = 4;
     const Simulation sim = simulate(test::testContext(), scene);
     CHECK(passNames(sim) == Names{"gbuffer", "shadow", "reference.shadow"});
-    CHECK(frameLayers(sim.frames[0]) == Names{"depth", "normal", "motion", "shadow", "reference.shadow"});
+    CHECK(frameLayers(sim.frames[0]) ==
+          Names{"depth", "normal", "motion", "shadow", "shadow_blocker", "reference.shadow"});
+    // The shadow denoiser's penumbra estimate: the sun's tan(4 degrees), and a blocker distance
+    // exactly where the noisy sample is shadowed (0 where lit; > 0, or 0 for a direction below
+    // the surface, where shadowed).
+    CHECK(sim.frames[0].shadowLightTanHalfAngle == Approx(std::tan(4.0 * 3.14159265358979 / 180.0)));
+    const auto& visibility = capture::findLayer(sim.frames[0], "shadow")->pixels;
+    const auto& blocker = capture::findLayer(sim.frames[0], "shadow_blocker")->pixels;
+    REQUIRE(blocker.size() == visibility.size());
+    for (std::size_t i = 0; i < visibility.size(); ++i) {
+        CHECK(std::isfinite(blocker[i]));
+        CHECK(blocker[i] >= 0.0f);
+        if (visibility[i] > 0.5f) CHECK(blocker[i] == 0.0f);
+    }
     CHECK_FALSE(sim.environment.has_value());
     CHECK(sim.frames[0].effects == Names{"shadows"});
     CHECK(sim.frames[0].roughness.layer.empty());

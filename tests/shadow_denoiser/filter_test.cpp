@@ -112,3 +112,80 @@ TEST_CASE("an invalid desc is refused with the planner's message, its prefix onc
     desc.normalPower = 0.5f;
     CHECK_THROWS_WITH(test::ShadowRunner(desc), "shadow denoiser: normalPower must be 1..256");
 }
+
+// The penumbra estimate (docs/shadow_denoiser.md, "Penumbra-aware filtering") against the CPU
+// reference, and two analytic expectations: where every blocker is close (a penumbra far under
+// a pixel) the filter takes no taps, so the output is its input; where every blocker is far
+// (a penumbra wider than 2 x the largest step) it is the full filter, as without the estimate.
+TEST_CASE("penumbra-aware filter: hard shadows keep their input, wide penumbrae get the full filter",
+          "[filter][penumbra]") {
+    constexpr std::uint32_t kWidth = 64, kHeight = 48;
+    test::ShadowInputs inputs = test::makeShadowInputs(kWidth, kHeight, 6);
+    // Columns 0..23 close blockers, 24..47 far ones, 48.. lit samples (0), unknown (-1) and NaN.
+    // Pass 3 reads pass 2 at +-5 (taps +-4, variance +-1), which reads pass 1 at +-7, which
+    // reads the input at +-8; each pass's estimate spans +-2 more.
+    inputs.blockerDistance.resize(std::size_t{kWidth} * kHeight);
+    for (std::uint32_t y = 0; y < kHeight; ++y)
+        for (std::uint32_t x = 0; x < kWidth; ++x) {
+            float& b = inputs.blockerDistance[std::size_t{y} * kWidth + x];
+            const std::uint32_t k = (x * 7u + y * 3u) % 5u;
+            if (x < 24)
+                b = k == 0 ? 0.0f : 0.01f;
+            else if (x < 48)
+                b = k == 0 ? 0.0f : 50.0f;
+            else
+                b = k == 0 ? -1.0f : (k == 1 ? std::numeric_limits<float>::quiet_NaN() : 0.0f);
+        }
+    for (bool paired : {true, false}) {
+        ShadowDenoiserDesc desc;
+        desc.size = {kWidth, kHeight};
+        desc.classify = false;
+        desc.pairedFilter = paired;
+        desc.outputFormat = Format::RG32Float;
+        desc.lightTanHalfAngle = 0.01746f; // tan(1 degree)
+        desc.pixelAngularSize = 0.01f;
+        INFO((paired ? "paired" : "three dispatches"));
+        // Receivers here have view depth 1..5 (device depth 0.9..0.98, near 0.1, far 1000), and
+        // 2 tan / pixel = 3.49: a 0.01 blocker gives a penumbra under 0.04 pixels, a 50 one over
+        // 34 (>= 5, the full filter in every pass).
+        const test::ShadowOutputs outputs = test::runShadowDenoiser(desc, inputs);
+        reference::ShadowFilterInputs ref = referenceInputs(desc, inputs);
+        ref.penumbraScale = 2.0f * desc.lightTanHalfAngle / desc.pixelAngularSize;
+        ref.blockerDistance = inputs.blockerDistance;
+        const std::vector<float> expected = reference::shadowFilter(ref);
+        ref.penumbraScale = 0.0f;
+        const std::vector<float> full = reference::shadowFilter(ref);
+        REQUIRE(outputs.filtered.size() == expected.size());
+        float worst = 0.0f, hardWorst = 0.0f, wideWorst = 0.0f;
+        std::size_t nonFinite = 0, hard = 0, wideChanged = 0;
+        for (std::uint32_t y = 0; y < kHeight; ++y)
+            for (std::uint32_t x = 0; x < kWidth; ++x) {
+                const std::size_t i = std::size_t{y} * kWidth + x;
+                const float out = outputs.filtered[2 * i];
+                if (!std::isfinite(out) || !std::isfinite(outputs.filtered[2 * i + 1])) {
+                    ++nonFinite;
+                    continue;
+                }
+                worst = std::max({worst, std::abs(out - expected[2 * i]),
+                                  std::abs(outputs.filtered[2 * i + 1] - expected[2 * i + 1])});
+                const bool receiver = inputs.depth[i] < 1.0f;
+                // x <= 21: the pixel's own estimate sees only close blockers in every pass, so
+                // its value passes through; 33..38: everything it depends on (+-9) is far.
+                if (receiver && x <= 21) {
+                    ++hard;
+                    hardWorst = std::max(hardWorst, std::abs(out - inputs.meanVariance[2 * i]));
+                }
+                if (receiver && x >= 33 && x <= 38) {
+                    wideWorst = std::max(wideWorst, std::abs(out - full[2 * i]));
+                    wideChanged += std::abs(out - inputs.meanVariance[2 * i]) > 1e-3f ? 1u : 0u;
+                }
+            }
+        CHECK(nonFinite == 0u);
+        CHECK(worst <= kTolerance);
+        REQUIRE(hard > 0u);
+        CHECK(hardWorst == 0.0f); // no taps: the (in-range) input passes through unchanged
+        CHECK(wideWorst <= kTolerance);
+        CHECK(wideChanged > 0u);
+    }
+    GLINT_REQUIRE_NO_VALIDATION_ERRORS();
+}

@@ -307,6 +307,49 @@ TEST_CASE("shadow plan: invalid descriptions are refused", "[plan]") {
     CHECK(planShadowDenoiser(desc, plan, &error) == Result::InvalidArgument);
 }
 
+// The penumbra estimate (docs/shadow_denoiser.md, "Penumbra-aware filtering"): only with
+// penumbraAware and both sizes known do the filter passes read "shadow_blocker_distance", with
+// penumbraScale = 2 tan / pixel angle; otherwise 0 (the full filter) and the depth bound there.
+TEST_CASE("shadow plan: the penumbra estimate needs the light's and a pixel's angular size", "[plan]") {
+    ShadowDenoiserDesc desc;
+    desc.size = {64, 48};
+    const auto filterPasses = [&](float expectedScale, const char* expectedImage) {
+        EffectPlan plan;
+        std::string error;
+        REQUIRE(planShadowDenoiser(desc, plan, &error) == Result::Ok);
+        std::size_t filters = 0;
+        for (const Pass& pass : plan.passes) {
+            if (pass.name.rfind("filter", 0) != 0) continue;
+            ++filters;
+            shaders::GLINT_ShadowDenoiserFilterConstants constants{};
+            REQUIRE(pass.constants.size() == sizeof(constants));
+            std::memcpy(&constants, pass.constants.data(), sizeof(constants));
+            CHECK(constants.penumbraScale == Approx(expectedScale).epsilon(1e-6));
+            std::string bound;
+            for (const ResourceUse& use : pass.uses)
+                if (use.binding == "g_glint_blocker_distance") bound = use.resource;
+            CHECK(bound == expectedImage);
+        }
+        CHECK(filters == 2u);
+    };
+    filterPasses(0.0f, "shadow_depth"); // both sizes unknown
+    desc.lightTanHalfAngle = 0.05f;
+    filterPasses(0.0f, "shadow_depth"); // the pixel's unknown
+    desc.pixelAngularSize = 0.01f;
+    filterPasses(10.0f, "shadow_blocker_distance"); // 2 * 0.05 / 0.01
+    desc.penumbraAware = false;
+    filterPasses(0.0f, "shadow_depth");
+    desc.penumbraAware = true;
+    desc.pixelAngularSize = -1.0f;
+    EffectPlan plan;
+    std::string error;
+    CHECK(planShadowDenoiser(desc, plan, &error) == Result::InvalidArgument);
+    CHECK(error.find("pixelAngularSize") != std::string::npos);
+    desc.pixelAngularSize = 0.01f;
+    desc.lightTanHalfAngle = std::numeric_limits<float>::quiet_NaN();
+    CHECK(planShadowDenoiser(desc, plan, &error) == Result::InvalidArgument);
+}
+
 // The automatic stored variance scale: 1/16 up to 360 rows, (rows / 360)^2 / 16 above; an
 // explicit value wins; the classify constants carry it in their own field.
 TEST_CASE("shadow plan: the stored variance scale follows the image height", "[plan]") {

@@ -25,6 +25,7 @@ glint_add_test_suite(NAME shadow_denoiser_scene LABELS gpu
     shadow_denoiser/convergence_test.cpp
     shadow_denoiser/tracking_test.cpp
     shadow_denoiser/penumbra_measure_test.cpp
+    shadow_denoiser/penumbra_scene_test.cpp
     shadow_denoiser/scene_replay.cpp
     shadow_denoiser/shadow_runner.cpp
   LIBS glint_test_replay glint_replay glint_scene glint_gpu_test_support glint_gpu)

@@ -11,17 +11,18 @@
 namespace glint::gpu {
 
 namespace {
-const char* const kInputNames[] = {"shadow_visibility", "shadow_depth",  "shadow_previous_depth",
-                                   "shadow_normals",    "shadow_motion", "shadow_filter_input"};
-const VkFormat kInputFormats[] = {VK_FORMAT_R32_SFLOAT,    VK_FORMAT_R32_SFLOAT,
-                                  VK_FORMAT_R32_SFLOAT,    VK_FORMAT_R32G32B32A32_SFLOAT,
-                                  VK_FORMAT_R32G32_SFLOAT, VK_FORMAT_R32G32_SFLOAT};
+const char* const kInputNames[] = {"shadow_visibility",      "shadow_depth",  "shadow_previous_depth",
+                                   "shadow_normals",         "shadow_motion", "shadow_filter_input",
+                                   "shadow_blocker_distance"};
+const VkFormat kInputFormats[] = {
+    VK_FORMAT_R32_SFLOAT,    VK_FORMAT_R32_SFLOAT,    VK_FORMAT_R32_SFLOAT, VK_FORMAT_R32G32B32A32_SFLOAT,
+    VK_FORMAT_R32G32_SFLOAT, VK_FORMAT_R32G32_SFLOAT, VK_FORMAT_R32_SFLOAT};
 // What an engine would bind: an 8-bit visibility target (0 or 1; NaN uploads as 0, shadowed, as
 // the shader treats it), 16-bit normals and motion. Depth stays 32-bit.
-const VkFormat kCompactFormats[] = {VK_FORMAT_R8_UNORM,      VK_FORMAT_R32_SFLOAT,
-                                    VK_FORMAT_R32_SFLOAT,    VK_FORMAT_R16G16B16A16_SFLOAT,
-                                    VK_FORMAT_R16G16_SFLOAT, VK_FORMAT_R32G32_SFLOAT};
-const std::uint32_t kInputChannels[] = {1, 1, 1, 4, 2, 2};
+const VkFormat kCompactFormats[] = {
+    VK_FORMAT_R8_UNORM,      VK_FORMAT_R32_SFLOAT,    VK_FORMAT_R32_SFLOAT, VK_FORMAT_R16G16B16A16_SFLOAT,
+    VK_FORMAT_R16G16_SFLOAT, VK_FORMAT_R32G32_SFLOAT, VK_FORMAT_R16_SFLOAT};
+const std::uint32_t kInputChannels[] = {1, 1, 1, 4, 2, 2, 1};
 
 // The output's texels as (shadow, variance) pairs; one-channel formats get variance 0.
 std::vector<float> asShadowVariance(std::vector<float> texels, Format format) {
@@ -76,8 +77,9 @@ void ShadowRunner::setHistory(std::uint32_t frameIndex, const std::vector<float>
 ShadowOutputs ShadowRunner::run(const ShadowDenoiserDesc& desc, const ShadowInputs& inputs, FrameRun* timings,
                                 bool readback) {
     const EffectPlan plan = planOrThrow(desc);
-    const std::vector<float>* data[] = {&inputs.visibility, &inputs.depth,  &inputs.previousDepth,
-                                        &inputs.normals,    &inputs.motion, &inputs.meanVariance};
+    const std::vector<float>* data[] = {&inputs.visibility,     &inputs.depth,  &inputs.previousDepth,
+                                        &inputs.normals,        &inputs.motion, &inputs.meanVariance,
+                                        &inputs.blockerDistance};
     vk::ResourceTable table;
     for (std::size_t i = 0; i < std::size(kInputNames); ++i) {
         if (!data[i]->empty()) uploadImage(context_, inputs_[i], *data[i], kInputChannels[i]);

@@ -21,6 +21,9 @@ struct ShadowInputs {
     std::vector<float> normals;       // RGBA per pixel
     std::vector<float> motion;        // RG per pixel
     std::vector<float> meanVariance;  // RG per pixel (the filter's input without classification)
+    // W x H: distance to the visibility sample's blocker (0 lit, < 0 unknown); read by the
+    // filter when the plan's penumbra estimate is on (shadowPenumbraActive).
+    std::vector<float> blockerDistance;
 };
 
 struct ShadowOutputs {

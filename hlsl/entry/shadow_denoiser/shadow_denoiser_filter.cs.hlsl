@@ -17,6 +17,9 @@ GLINT_BINDING(1, 0) Texture2D<float2> g_glint_filter_input;
 GLINT_BINDING(2, 0) Texture2D<float> g_glint_depth;
 GLINT_BINDING(3, 0) Texture2D<float4> g_glint_normals;
 GLINT_BINDING(4, 0) GLINT_SHADOW_DENOISER_OUTPUT_IMAGE g_glint_filter_output;
+// Blocker distance of the visibility sample (< 0: unknown); read only with penumbraScale > 0
+// (otherwise the plan binds another R32F image here).
+GLINT_BINDING(8, 0) Texture2D<float> g_glint_blocker_distance;
 #if GLINT_SHADOW_DENOISER_TILE_LIST
 GLINT_BINDING(7, 0) StructuredBuffer<uint> g_glint_filter_tiles;
 
@@ -57,6 +60,11 @@ float3 GLINT_SHADOW_DENOISER_LoadNormal(int2 pixel)
     return g_glint_normals.Load(int3(pixel, 0)).xyz * unpack.x + unpack.y;
 }
 
+float GLINT_SHADOW_DENOISER_LoadBlockerDistance(int2 pixel)
+{
+    return g_glint_blocker_distance.Load(int3(pixel, 0));
+}
+
 void GLINT_SHADOW_DENOISER_StoreFiltered(int2 pixel, float2 meanVariance)
 {
     g_glint_filter_output[pixel] = GLINT_SHADOW_DENOISER_OUTPUT_TEXEL(meanVariance);
@@ -68,7 +76,7 @@ void GLINT_SHADOW_DENOISER_StoreFiltered(int2 pixel, float2 meanVariance)
 {
     GLINT_SHADOW_DENOISER_FilterPair(groupId.xy, groupThreadId.xy, groupIndex, g_glint_constants.inputSize,
                                      g_glint_constants.viewDepth, g_glint_constants.depthSigma,
-                                     g_glint_constants.normalPower);
+                                     g_glint_constants.normalPower, g_glint_constants.penumbraScale);
 }
 #else
 [numthreads(8, 8, 1)] void main(uint3 groupId : SV_GroupID, uint3 groupThreadId : SV_GroupThreadID,
@@ -77,6 +85,6 @@ void GLINT_SHADOW_DENOISER_StoreFiltered(int2 pixel, float2 meanVariance)
     GLINT_SHADOW_DENOISER_Filter(groupId.xy, groupThreadId.xy, groupIndex, g_glint_constants.inputSize,
                                  g_glint_constants.step, g_glint_constants.finalPass != 0,
                                  g_glint_constants.viewDepth, g_glint_constants.depthSigma,
-                                 g_glint_constants.normalPower);
+                                 g_glint_constants.normalPower, g_glint_constants.penumbraScale);
 }
 #endif

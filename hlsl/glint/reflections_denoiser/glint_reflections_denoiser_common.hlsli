@@ -261,6 +261,31 @@ float3 GLINT_RD_ClipToBox(float3 x, float3 m, float3 e)
     return u > 1.0 ? m + v / u : x;
 }
 
+// Mirrors stay sharp (docs/reflections_denoiser.md, "Mirrors"). The scale s of every spatial
+// operation, in [0, 1]: 0 at and below mirrorThreshold, where SSSR traces the exact mirror
+// direction without noise, so that any spatial reuse could only blur the reflection; rising
+// linearly in alpha to 1 at GLINT_RD_FOOTPRINT_RAMP above it, where the filters act in full. The
+// prefilter's taps fall off as s^(d^2 / 2) with their distance d in pixels (a Gaussian whose
+// width goes to 0 with s), the firefly clamp's bound is 3 sigma / s, and the resolve moves its
+// sample toward the tile average by s times the full amount: at s = 0 each passes the input
+// through unchanged.
+#define GLINT_RD_FOOTPRINT_RAMP 0.01
+float GLINT_RD_SpatialFootprint(GLINT_ReflectionsDenoiserConstants c, float alpha)
+{
+    return GLINT_Saturate((alpha - c.mirrorThreshold) * (1.0 / GLINT_RD_FOOTPRINT_RAMP));
+}
+
+// A mirror's sample is noise-free, so its history may differ from it only by resampling: the
+// half-width, per channel, of the band around the sample within which a mirror's history counts
+// as the same reflected point (relative, with a floor for dark pixels). A history outside the
+// band is stale (the reflected point moved another way) and is rejected: the pixel's history
+// length and temporal variance restart.
+#define GLINT_RD_MIRROR_TOLERANCE 0.1
+float3 GLINT_RD_MirrorBand(float3 radiance)
+{
+    return GLINT_RD_MIRROR_TOLERANCE * (radiance + 0.05);
+}
+
 // The history length a pixel can use: near-mirrors keep 8 frames, alpha >~ 0.03 keeps the cap.
 float GLINT_RD_MaxHistoryLength(GLINT_ReflectionsDenoiserConstants c, float alpha)
 {

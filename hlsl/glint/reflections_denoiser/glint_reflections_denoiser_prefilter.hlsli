@@ -1,8 +1,9 @@
 // glint reflections denoiser, pass 2: prefilter (docs/reflections_denoiser.md). A
 // variance-guided, edge-aware spatial filter over 15 fixed taps within 3 pixels, with normal,
-// relative depth and radiance weights. Mirrors and pixels with zero variance are copied
-// through; pixels that are not glossy store (0, 0, 0, GLINT_RD_NOT_GLOSSY), which tells the
-// resolve (with this frame's tile mask) that they are not glossy.
+// relative depth and radiance weights and a footprint that shrinks to zero toward mirrors.
+// Mirrors and pixels with zero variance are copied through; pixels that are not glossy store
+// (0, 0, 0, GLINT_RD_NOT_GLOSSY), which tells the resolve (with this frame's tile mask) that
+// they are not glossy.
 //
 // Integration: the callbacks of glint_reflections_denoiser_common.hlsli (with the average), and
 //
@@ -51,18 +52,20 @@ struct GLINT_RD_PrefilterSums
 // The per-pixel factors of a tap's weight, in base-2 exponent units (see GLINT_RD_PrefilterTap).
 struct GLINT_RD_PrefilterRates
 {
-    float depth;    // log2(e) 4 / z: relative depth difference
-    float radiance; // log2(e) (0.6 + 0.1 var): distance from the tile average
+    float depth;     // log2(e) 4 / z: relative depth difference
+    float radiance;  // log2(e) (0.6 + 0.1 var): distance from the tile average
+    float footprint; // log2(s) / 2, s = GLINT_RD_SpatialFootprint: per squared pixel of distance
 };
 
 // log2 of GLINT_RD_RadianceWeight's floor (0.01).
 #define GLINT_RD_LOG2_RADIANCE_FLOOR -6.64385619
 
 // One tap of the prefilter at a constant offset from the centre slot. Its weight is
-// max(N.Nq, 0)^512 exp(-4 |z - zq| / z) GLINT_RD_RadianceWeight(...) varianceWeight, computed
-// as one exp2 of the summed exponents (the radiance weight's floor applied to its exponent,
-// which is monotonic): one log2, one exp2 and one length a tap instead of two exps and a pow.
-// A normal at 90 degrees or more gives log2(0) = -inf and a weight of 0, as pow does.
+// max(N.Nq, 0)^512 exp(-4 |z - zq| / z) GLINT_RD_RadianceWeight(...) s^(|offset|^2 / 2)
+// varianceWeight, computed as one exp2 of the summed exponents (the radiance weight's floor
+// applied to its exponent, which is monotonic): one log2, one exp2 and one length a tap instead
+// of two exps and a pow. A normal at 90 degrees or more gives log2(0) = -inf and a weight of 0, as
+// pow does; so does s = 0 (no exponent term is +inf, so the sum is -inf, never NaN).
 void GLINT_RD_PrefilterTap(inout GLINT_RD_PrefilterSums sums, uint centre, int2 offset, float4 geometry,
                            float3 average, GLINT_RD_PrefilterRates rates, float varianceWeight)
 {
@@ -72,7 +75,8 @@ void GLINT_RD_PrefilterTap(inout GLINT_RD_PrefilterSums sums, uint centre, int2 
     // Relative depth difference (docs/conventions.md, defect RD5: the reference multiplies by z).
     float exponent = 512.0 * log2(max(dot(geometry.xyz, qGeometry.xyz), 0.0)) -
                      abs(geometry.w - qGeometry.w) * rates.depth +
-                     max(-length(average - q.rgb) * rates.radiance, GLINT_RD_LOG2_RADIANCE_FLOOR);
+                     max(-length(average - q.rgb) * rates.radiance, GLINT_RD_LOG2_RADIANCE_FLOOR) +
+                     float(dot(offset, offset)) * rates.footprint;
     float w = exp2(exponent) * varianceWeight;
     // Only glossy neighbours count. A neighbour that is not glossy is weighted by an exact 0 (a
     // select, not a branch): everything in the span is finite (radiance sanitised, the normal
@@ -143,6 +147,8 @@ void GLINT_RD_Prefilter(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint
     GLINT_RD_PrefilterRates rates;
     rates.depth = 1.44269504 * 4.0 / geometry.w;
     rates.radiance = 1.44269504 * (0.6 + 0.1 * own.a);
+    // The footprint shrinks to the pixel itself as alpha falls to the mirror threshold.
+    rates.footprint = 0.5 * log2(GLINT_RD_SpatialFootprint(c, alpha));
     float centreWeight = GLINT_RD_RadianceWeight(average, own.rgb, own.a);
     GLINT_RD_PrefilterSums sums;
     sums.radiance = centreWeight * own.rgb;

@@ -1,6 +1,7 @@
 // glint reflections denoiser, pass 1: reproject (docs/reflections_denoiser.md). For every
 // pixel of a listed tile: neighbourhood statistics of the noisy sample, a firefly clamp, the
-// history fetched along the surface motion or the reflection's parallax (whichever fits),
+// history fetched along the surface motion or the reflection's parallax (whichever fits;
+// mirrors only the parallax, tested against their noise-free sample),
 // the history length and temporal variance, this frame's guides for next frame, and the
 // tile's luminance-weighted average radiance.
 //
@@ -219,12 +220,18 @@ void GLINT_RD_Reproject(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint
     // The nearest hit of the 3x3 (one noisy hit distance is a poor parallax estimate:
     // docs/conventions.md, defect RD11). First, so that the parallax candidate's taps are
     // fetched before the 9x9 statistics, which then hide their latency.
+    //
+    // A mirror's own hit distance is exact (its ray is the mirror direction, not a sample), and
+    // the nearest of its neighbours' may belong to another object at a reflection's edge: a
+    // mirror follows its own reflected point (docs/reflections_denoiser.md, "Mirrors").
+    bool mirror = surface.alpha < c.mirrorThreshold;
     float hitDistance = GLINT_RD_MISS_DISTANCE;
     [unroll] for (int hy = -1; hy <= 1; ++hy)
         [unroll] for (int hx = -1; hx <= 1; ++hx)
         {
             float a = GLINT_RD_UnpackSpanTexel(g_glint_rd_noisy[centre + hy * GLINT_RD_SPAN + hx]).a;
-            hitDistance = min(hitDistance, a < 0.0 ? GLINT_RD_MISS_DISTANCE : a);
+            bool counts = a >= 0.0 && (!mirror || (hx == 0 && hy == 0));
+            hitDistance = min(hitDistance, counts ? a : GLINT_RD_MISS_DISTANCE);
         }
     GLINT_RD_HistoryTaps virtualTaps = (GLINT_RD_HistoryTaps)0;
     if (surface.glossy)
@@ -266,8 +273,11 @@ void GLINT_RD_Reproject(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint
     float3 mean = weightSum > 0.0 ? sum / weightSum : current;
     float3 variance3 = weightSum > 0.0 ? abs(sumSquares / weightSum - mean * mean) : float3(0.0, 0.0, 0.0);
     float3 sigma = sqrt(variance3);
-    // Firefly clamp before any spatial reuse (docs/conventions.md, defect RD14).
-    current = min(current, mean + 3.0 * sigma);
+    // Firefly clamp before any spatial reuse (docs/conventions.md, defect RD14). Its bound
+    // widens as the spatial footprint shrinks and is gone for mirrors, whose samples are
+    // noise-free: a bright reflected highlight is not a firefly (GLINT_RD_SpatialFootprint).
+    float footprint = GLINT_RD_SpatialFootprint(c, surface.alpha);
+    current = footprint > 0.0 ? min(current, mean + 3.0 * sigma / footprint) : current;
 
     GLINT_RD_History history = (GLINT_RD_History)0;
     history.valid = false;
@@ -276,14 +286,21 @@ void GLINT_RD_Reproject(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint
         GLINT_RD_History virtualHistory = GLINT_RD_EvaluateHistory(virtualTaps, surface, expected);
         float virtualFit = dot(virtualHistory.normal, surface.normal);
         float surfaceFit = onSurface.valid ? dot(onSurface.normal, surface.normal) : -1.0;
-        bool useVirtual = virtualHistory.valid && virtualFit > 0.9999 && virtualFit + 1e-3 > surfaceFit &&
-                          (!onSurface.valid ||
-                           abs(virtualHistory.alpha - surface.alpha) < abs(onSurface.alpha - surface.alpha) + 1e-3);
+        // A mirror reuses only the parallax candidate: what it shows moves with the reflected
+        // point, not with its surface.
+        bool useVirtual = virtualHistory.valid && virtualFit > 0.9999 &&
+                          (mirror || (virtualFit + 1e-3 > surfaceFit &&
+                                      (!onSurface.valid || abs(virtualHistory.alpha - surface.alpha) <
+                                                               abs(onSurface.alpha - surface.alpha) + 1e-3)));
         float3 surfaceOffset = onSurface.radiance - mean;
         if (useVirtual)
             history = virtualHistory;
-        else if (onSurface.valid && dot(surfaceOffset, surfaceOffset) < 1.5 * length(variance3) + 1e-6)
+        else if (!mirror && onSurface.valid && dot(surfaceOffset, surfaceOffset) < 1.5 * length(variance3) + 1e-6)
             history = onSurface;
+        // A mirror's sample is noise-free: a history outside the band around it shows another
+        // point (an object that moved, a wrong hit distance) and is rejected, not blended.
+        if (mirror && any(abs(history.radiance - current) > GLINT_RD_MirrorBand(current)))
+            history.valid = false;
     }
 
     float3 reprojected = float3(0.0, 0.0, 0.0);

@@ -1,11 +1,12 @@
 // glint reflections denoiser, pass 3: temporal resolve (docs/reflections_denoiser.md).
 // Neighbourhood statistics of the prefiltered radiance, history clipping toward them, and a
-// blend by history length. The result is written over SSSR's radiance in place (so that the
-// effect's output is defined in every tile: unlisted tiles keep classification's values) and
-// into this frame's radiance history; the variance feeds next frame and SSSR's TVGT.
+// blend by history length (mirrors: their noise-free sample, no blend). The result is written
+// over SSSR's radiance in place (so that the effect's output is defined in every tile: unlisted
+// tiles keep classification's values) and into this frame's radiance history; the variance
+// feeds next frame and SSSR's TVGT.
 //
 // Integration: of the callbacks of glint_reflections_denoiser_common.hlsli only GLINT_RD_LoadTile
-// is called (and the average's), and
+// and GLINT_RD_LoadRoughness are called (and the average's), and
 //
 //   float4 GLINT_RD_LoadPrefiltered(int2 pixel);    rgb, a = variance (GLINT_RD_NOT_GLOSSY: not glossy;
 //                                                   defined in tiles listed this frame)
@@ -59,6 +60,7 @@ void GLINT_RD_Resolve(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint2 
     float4 reprojected = GLINT_RD_LoadReprojected(ipixel);
     float storedLength = GLINT_RD_LoadLength(ipixel);
     float hitDistance = GLINT_RD_LoadNoisy(ipixel).a;
+    float alpha = GLINT_FiniteOr(GLINT_RD_LoadRoughness(ipixel), 1.0);
     // Unrolled (exactly 4 span slots a thread) so that the loads of all four are in flight
     // together instead of one slot's round trip after the other.
     //
@@ -118,9 +120,16 @@ void GLINT_RD_Resolve(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint2 
     float3 extent = (sigma + abs(mean - average)) * c.historyClipScale * 1.4;
     float3 boxCentre = lerp(mean, average, 0.2);
     float3 history = valid ? GLINT_RD_ClipToBox(GLINT_RD_SanitizeRadiance(reprojected.rgb), boxCentre, extent) : current;
-    current = lerp(current, average, 1.0 / (historyLength + 1.0));
-    current = GLINT_RD_ClipToBox(current, average, extent);
-    float historyWeight = valid ? 1.0 - 1.0 / historyLength : 0.0;
+    // The pull toward the tile average and the clip around it, scaled by the spatial footprint
+    // (0 for mirrors: GLINT_RD_SpatialFootprint).
+    float3 regularised = GLINT_RD_ClipToBox(lerp(current, average, 1.0 / (historyLength + 1.0)), average, extent);
+    current = lerp(current, regularised, GLINT_RD_SpatialFootprint(c, alpha));
+    // Mirrors (docs/reflections_denoiser.md, "Mirrors"): the sample is noise-free, so averaging
+    // it with a history removes no noise and can only lag a moving reflection; the output is
+    // the sample. Reproject still follows the reflected point for the history's length and
+    // temporal variance (a history that left the band around the sample restarts them).
+    bool mirror = alpha < c.mirrorThreshold;
+    float historyWeight = valid && !mirror ? 1.0 - 1.0 / historyLength : 0.0;
     float3 result = GLINT_RD_SanitizeRadiance(lerp(current, history, historyWeight));
     float lumaResult = max(GLINT_RD_Luma(result), 0.001);
     float lumaHistory = max(GLINT_RD_Luma(history), 0.001);

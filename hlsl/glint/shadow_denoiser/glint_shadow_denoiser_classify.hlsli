@@ -26,6 +26,8 @@
 //          may keep .x only); its StoreShadowVariance is then skipped (the filter rebuilds clear
 //          tiles from the metadata).
 // Every loaded value may be non-finite: such histories count as missing, such depths as sky.
+// The (shadow, variance) stored for a non-receiver is (1, 0): lit, as the visibility input marks
+// it (docs/shadow_denoiser.md, "Non-receivers"); its moments are zeros (no history).
 //
 // Entry: from main, GLINT_SHADOW_DENOISER_Classify(SV_GroupID.xy, SV_GroupThreadID, p), p a
 // GLINT_ShadowDenoiserClassifyParams (below) copied field by field from a
@@ -506,10 +508,11 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint3 groupThreadId, GLINT_Sh
     if (clear && inside)
     {
         float value = anyReceiver && allLit && receiver ? 1.0 : 0.0;
+        float shadow = receiver ? value : 1.0;
 #if GLINT_SHADOW_DENOISER_TILE_LIST
-        GLINT_SHADOW_DENOISER_StoreClearOutput(pixel, float2(value, 0.0));
+        GLINT_SHADOW_DENOISER_StoreClearOutput(pixel, float2(shadow, 0.0));
 #else
-        GLINT_SHADOW_DENOISER_StoreShadowVariance(pixel, float2(value, 0.0));
+        GLINT_SHADOW_DENOISER_StoreShadowVariance(pixel, float2(shadow, 0.0));
 #endif
         if ((c.flags & GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_REBUILD_CLEAR) == 0u)
             GLINT_SHADOW_DENOISER_StoreMoments(pixel, float4(value, 0.0, receiver ? 1.0 : 0.0, value));
@@ -603,7 +606,7 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint3 groupThreadId, GLINT_Sh
     {
         if (inside)
         {
-            GLINT_SHADOW_DENOISER_StoreShadowVariance(pixel, float2(0.0, 0.0));
+            GLINT_SHADOW_DENOISER_StoreShadowVariance(pixel, float2(1.0, 0.0));
             GLINT_SHADOW_DENOISER_StoreMoments(pixel, float4(0.0, 0.0, 0.0, 0.0));
         }
         return;
@@ -619,8 +622,11 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint3 groupThreadId, GLINT_Sh
     // The history is the unfiltered accumulation (never a filter output: feeding the filtered
     // value back blurs the penumbra again every frame). The clamp is wide (2 sigma_s): the
     // 17x17 mean is biased across narrow penumbrae, and a tight clamp pins the history to it.
+    // The range always holds this frame's sample: a history that agrees with it is kept (a thin
+    // hard shadow in a mostly lit window would otherwise be pulled towards the window's mean on
+    // every frame, though every sample says shadowed).
     float clampRadius = GLINT_SHADOW_DENOISER_CLAMP_SIGMAS * spatialSigma;
-    float clamped = clamp(history, mean - clampRadius, mean + clampRadius);
+    float clamped = clamp(history, min(mean - clampRadius, x), max(mean + clampRadius, x));
     float deviation = (history - mean) / max(clampRadius, 0.001);
     n *= exp(-deviation * deviation / 20.0);
     // n <= 1024 already: the cap changes only the histories the anti-lag test contradicted.

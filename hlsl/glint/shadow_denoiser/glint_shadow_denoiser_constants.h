@@ -23,6 +23,9 @@
 // The filter works on 8x8 pixel tiles with a 4-pixel apron (step 4 x radius 1).
 #define GLINT_SHADOW_DENOISER_FILTER_TILE 8
 #define GLINT_SHADOW_DENOISER_FILTER_APRON 4
+// The penumbra width (pixels) an unknown blocker stands for: beyond the largest step + 1, so
+// the filter's full footprint.
+#define GLINT_SHADOW_DENOISER_FULL_PENUMBRA 64.0
 
 #ifdef __cplusplus
 namespace glint::shaders {
@@ -47,6 +50,13 @@ GLINT_CONSTANTS_BEGIN(GLINT_ShadowDenoiserFilterConstants)
     float2 normalUnpack;     // (mul, add): n = normalize(raw.xyz * mul + add)
     float depthSigma;        // relative depth edge stop: exp(-|z_c - z_q| / (depthSigma z_c))
     float normalPower;       // normal edge stop: max(0, N_c . N_q)^normalPower
+    // Penumbra width in pixels per unit of blocker distance / receiver view depth:
+    // 2 tan(light angular radius) / (pixel angular size); 0 turns the penumbra estimate off
+    // (every pixel takes the full filter). See GLINT_SHADOW_DENOISER_PenumbraFootprint.
+    float penumbraScale;
+    uint padding0;           // the struct is whole 16-byte registers
+    uint padding1;
+    uint padding2;
 GLINT_CONSTANTS_END(GLINT_ShadowDenoiserFilterConstants);
 
 // Temporal accumulation (docs/shadow_denoiser.md, "Convergence"): the history is clamped to
@@ -107,7 +117,8 @@ static_assert(offsetof(GLINT_ShadowDenoiserClassifyConstants, normalUnpack) == 1
 static_assert(offsetof(GLINT_ShadowDenoiserClassifyConstants, flags) == 188);
 static_assert(offsetof(GLINT_ShadowDenoiserClassifyConstants, storedVarianceScale) == 192);
 static_assert(sizeof(GLINT_ShadowDenoiserPrepareConstants) == 16);
-static_assert(sizeof(GLINT_ShadowDenoiserFilterConstants) == 48);
+static_assert(sizeof(GLINT_ShadowDenoiserFilterConstants) == 64);
+static_assert(offsetof(GLINT_ShadowDenoiserFilterConstants, penumbraScale) == 48);
 static_assert(offsetof(GLINT_ShadowDenoiserFilterConstants, viewDepth) == 16);
 static_assert(offsetof(GLINT_ShadowDenoiserFilterConstants, normalUnpack) == 32);
 } // namespace glint::shaders

@@ -16,6 +16,12 @@
 //   void   GLINT_SHADOW_DENOISER_StoreFiltered(int2 pixel, float2 meanVariance);
 //       Writes the result; the final pass writes (remapped mean, variance). The image's format
 //       is the integration's choice: a one-channel output may keep .x only.
+//   float  GLINT_SHADOW_DENOISER_LoadBlockerDistance(int2 pixel);
+//       Distance along this frame's shadow ray of an in-image pixel to its closest blocker, in
+//       the units of the view depth: > 0 for a shadowed sample, 0 when the ray reached the
+//       light (or the sample lay below the surface); negative or non-finite when unknown.
+//       Read only when penumbraScale > 0; an integration without the data returns -1 (or
+//       passes penumbraScale 0): every pixel then takes the full filter.
 //
 // Tile skipping, GLINT_SHADOW_DENOISER_TILE_LIST=1 (tile metadata and the tile list from the
 // classification pass): the dispatch is indirect, one group per tile classification listed
@@ -32,16 +38,28 @@
 // with k(0) = 1, k(1) = 2/3, sigma = sqrt(var_f + 1e-9), var_f the 3x3 Gaussian (1/4 centre,
 // 1/8 edges, 1/16 corners) of the variance around c, z the view depth A / (B + C d). The
 // centre weighs 1. mean = sum w s / sum w, variance = sum w^2 var_q / (sum w)^2.
-// Final pass: mean^max(1.2 - variance, 1). Non-receivers write (0, 0).
+// Final pass: mean^max(1.2 - variance, 1). Non-receivers write (1, 0): lit, as the visibility
+// input marks them (docs/shadow_denoiser.md, "Non-receivers").
+//
+// Penumbra footprint (penumbraScale > 0): the penumbra width in pixels at a receiver is about
+// W = penumbraScale * b / z, b the blocker distance, z the view depth; per pixel, W is the
+// largest over its 5 x 5 neighbourhood (one shadow ray a pixel, and a lit one carries no
+// distance). A pass of step s scales every neighbour's weight by saturate((W - 1) / s): no taps
+// for a penumbra under a pixel, the full filter from s + 1 pixels. A hard shadow keeps its
+// input, a wide penumbra gets the filter as without the estimate. The neighbourhood stays
+// within the span in both the single and the paired passes (+-2 around pixels at most 2 beyond
+// the tile), so both give the same result.
 //
 // Entry: from main, with c a GLINT_ShadowDenoiserFilterConstants (glint_shadow_denoiser_constants.h,
 // filled by host/src/core/shadow_denoiser_passes.cpp; c.normalUnpack is for LoadNormal):
 //   GLINT_SHADOW_DENOISER_Filter(SV_GroupID.xy, SV_GroupThreadID.xy, SV_GroupIndex, c.inputSize,
-//                                c.step, c.finalPass != 0, c.viewDepth, c.depthSigma, c.normalPower)
+//                                c.step, c.finalPass != 0, c.viewDepth, c.depthSigma, c.normalPower,
+//                                c.penumbraScale)
 // or, with GLINT_SHADOW_DENOISER_FILTER_PAIR=1, steps 1 and 2 in one dispatch (the first over the
 // tile +- 2 pixels, in groupshared memory; same taps, same results as two Filter dispatches):
 //   GLINT_SHADOW_DENOISER_FilterPair(SV_GroupID.xy, SV_GroupThreadID.xy, SV_GroupIndex,
-//                                    c.inputSize, c.viewDepth, c.depthSigma, c.normalPower)
+//                                    c.inputSize, c.viewDepth, c.depthSigma, c.normalPower,
+//                                    c.penumbraScale)
 // Integration guide: docs/integration.md.
 //
 // Dispatch: [numthreads(8, 8, 1)] in every variant (single, pair, tile list, pair + tile list;
@@ -58,6 +76,7 @@ float2 GLINT_SHADOW_DENOISER_LoadMeanVariance(int2 pixel);
 float GLINT_SHADOW_DENOISER_LoadDepth(int2 pixel);
 float3 GLINT_SHADOW_DENOISER_LoadNormal(int2 pixel);
 void GLINT_SHADOW_DENOISER_StoreFiltered(int2 pixel, float2 meanVariance);
+float GLINT_SHADOW_DENOISER_LoadBlockerDistance(int2 pixel);
 #if GLINT_SHADOW_DENOISER_TILE_LIST
 uint2 GLINT_SHADOW_DENOISER_LoadFilterTile(uint listIndex);
 // The metadata marks the neighbours that were not stored (CLEAR tiles).
@@ -79,6 +98,21 @@ void GLINT_SHADOW_DENOISER_CountFilteredTile();
 // (mean, variance) and (view depth or -1 for non-receivers, normal) of the span.
 groupshared float2 g_glint_shadow_denoiser_filter_values[GLINT_SHADOW_DENOISER_FILTER_BUFFERS * GLINT_SHADOW_DENOISER_FILTER_SLOTS];
 groupshared float4 g_glint_shadow_denoiser_filter_geometry[GLINT_SHADOW_DENOISER_FILTER_SLOTS];
+// Penumbra width in pixels each slot's shadow ray implies (0: lit or not a receiver); only with
+// penumbraScale > 0.
+groupshared float g_glint_shadow_denoiser_filter_penumbra[GLINT_SHADOW_DENOISER_FILTER_SLOTS];
+
+// Penumbra width in pixels a sample implies: penumbraScale * blocker / z. Unknown blockers
+// (negative, non-finite) give a width large enough for the full filter; lit samples 0.
+float GLINT_SHADOW_DENOISER_PenumbraWidth(float blocker, float z, float penumbraScale)
+{
+    if (!(z > 0.0))
+        return 0.0;
+    if (!GLINT_IsFinite(blocker) || blocker < 0.0)
+        return GLINT_SHADOW_DENOISER_FULL_PENUMBRA;
+    float width = penumbraScale * blocker / z;
+    return GLINT_IsFinite(width) ? min(width, GLINT_SHADOW_DENOISER_FULL_PENUMBRA) : GLINT_SHADOW_DENOISER_FULL_PENUMBRA;
+}
 
 float2 GLINT_SHADOW_DENOISER_SanitizeMeanVariance(float2 value)
 {
@@ -126,7 +160,7 @@ uint GLINT_SHADOW_DENOISER_FilterSlot(int2 pixel, int2 spanOrigin, uint2 inputSi
 // passes stored) takes that value here, from its tile's metadata word loaded alongside the
 // value: no second pass over the span and its barrier.
 void GLINT_SHADOW_DENOISER_LoadSpan(uint groupIndex, uint groupThreads, int2 spanOrigin, uint2 inputSize,
-                                    float4 viewDepth)
+                                    float4 viewDepth, float penumbraScale)
 {
 #if GLINT_SHADOW_DENOISER_TILE_LIST
     uint tilesX = (inputSize.x + GLINT_SHADOW_DENOISER_FILTER_TILE - 1) / GLINT_SHADOW_DENOISER_FILTER_TILE;
@@ -149,23 +183,45 @@ void GLINT_SHADOW_DENOISER_LoadSpan(uint groupIndex, uint groupThreads, int2 spa
         uint2 tile = uint2(pixel) / GLINT_SHADOW_DENOISER_FILTER_TILE;
         uint metadata = GLINT_SHADOW_DENOISER_LoadTileMetadata(tile.y * tilesX + tile.x);
         if (!(z > 0.0))
-            value = float2(0.0, 0.0);
+            value = float2(1.0, 0.0);
         else if ((metadata & GLINT_SHADOW_DENOISER_TILE_CLEAR) != 0u)
             value = float2((metadata & GLINT_SHADOW_DENOISER_TILE_LIGHT) != 0u ? 1.0 : 0.0, 0.0);
 #endif
         g_glint_shadow_denoiser_filter_values[slot] = value;
         g_glint_shadow_denoiser_filter_geometry[slot] = float4(z, n);
+        if (penumbraScale > 0.0)
+            g_glint_shadow_denoiser_filter_penumbra[slot] = GLINT_SHADOW_DENOISER_PenumbraWidth(
+                GLINT_SHADOW_DENOISER_LoadBlockerDistance(pixel), z, penumbraScale);
     }
+}
+
+// The factor of a pass of step `step` on every neighbour's weight: saturate((W - 1) / step) with W
+// the widest penumbra of the pixel's 5 x 5 neighbourhood; 1 when the estimate is off.
+float GLINT_SHADOW_DENOISER_PenumbraFootprint(int2 pixel, int2 spanOrigin, uint2 inputSize, uint step,
+                                              float penumbraScale)
+{
+    if (!(penumbraScale > 0.0))
+        return 1.0;
+    float width = 0.0;
+    [unroll] for (int y = -2; y <= 2; ++y)
+        [unroll] for (int x = -2; x <= 2; ++x)
+            width = max(width, g_glint_shadow_denoiser_filter_penumbra[GLINT_SHADOW_DENOISER_FilterSlot(
+                                   pixel + int2(x, y), spanOrigin, inputSize)]);
+    return saturate((width - 1.0) / float(step));
 }
 
 // One a-trous iteration at an in-image receiver pixel, reading value buffer `source`.
 float2 GLINT_SHADOW_DENOISER_FilterPixel(int2 pixel, int2 spanOrigin, uint2 inputSize, uint source, uint step,
-                                         float depthSigma, float normalPower)
+                                         float depthSigma, float normalPower, float penumbraScale)
 {
     uint base = source * GLINT_SHADOW_DENOISER_FILTER_SLOTS;
     uint centreSlot = GLINT_SHADOW_DENOISER_FilterSlot(pixel, spanOrigin, inputSize);
     float4 geometry = g_glint_shadow_denoiser_filter_geometry[centreSlot];
     float2 value = g_glint_shadow_denoiser_filter_values[base + centreSlot];
+    // A penumbra under a pixel: no taps, the input as it is.
+    float footprint = GLINT_SHADOW_DENOISER_PenumbraFootprint(pixel, spanOrigin, inputSize, step, penumbraScale);
+    if (!(footprint > 0.0))
+        return value;
 
     float filteredVariance = 0.0;
     [unroll] for (int y = -1; y <= 1; ++y)
@@ -199,8 +255,8 @@ float2 GLINT_SHADOW_DENOISER_FilterPixel(int2 pixel, int2 spanOrigin, uint2 inpu
             float2 tap = g_glint_shadow_denoiser_filter_values[base + slot];
             float exponent = normalPower * log2(max(dot(geometry.yzw, other.yzw), 0.0)) -
                              abs(value.x - tap.x) * luminanceRate - abs(geometry.x - other.x) * depthRate;
-            float weight = GLINT_SHADOW_DENOISER_KernelWeight(i) * GLINT_SHADOW_DENOISER_KernelWeight(j) *
-                           exp2(exponent);
+            float weight = footprint * GLINT_SHADOW_DENOISER_KernelWeight(i) *
+                           GLINT_SHADOW_DENOISER_KernelWeight(j) * exp2(exponent);
             weightSum += weight;
             meanOffsetSum += weight * (tap.x - value.x);
             varianceSum += weight * weight * tap.y;
@@ -244,13 +300,13 @@ void GLINT_SHADOW_DENOISER_LoadSpanMetadata(uint groupIndex, int2 spanOrigin, ui
 }
 #endif
 
-// The value of an in-image pixel that is not filtered: a non-receiver's (0, 0) or, with tile
+// The value of an in-image pixel that is not filtered: a non-receiver's (1, 0) or, with tile
 // skipping, a clear tile's constant; what every filter pass writes there.
 // Returns false for pixels to filter. Needs the span (and its metadata) loaded.
 bool GLINT_SHADOW_DENOISER_FixedValue(int2 pixel, int2 spanOrigin, uint2 inputSize, out float2 fixedValue)
 {
     uint slot = GLINT_SHADOW_DENOISER_FilterSlot(pixel, spanOrigin, inputSize);
-    fixedValue = float2(0.0, 0.0);
+    fixedValue = float2(1.0, 0.0);
     bool receiver = g_glint_shadow_denoiser_filter_geometry[slot].x > 0.0;
     if (!receiver)
         return true;
@@ -259,7 +315,7 @@ bool GLINT_SHADOW_DENOISER_FixedValue(int2 pixel, int2 spanOrigin, uint2 inputSi
     uint metadata = g_glint_shadow_denoiser_filter_metadata[tile.y * GLINT_SHADOW_DENOISER_FILTER_META_ACROSS + tile.x];
     if ((metadata & GLINT_SHADOW_DENOISER_TILE_CLEAR) != 0u)
     {
-        fixedValue.x = (metadata & GLINT_SHADOW_DENOISER_TILE_LIGHT) != 0u ? 1.0 : 0.0;
+        fixedValue = float2((metadata & GLINT_SHADOW_DENOISER_TILE_LIGHT) != 0u ? 1.0 : 0.0, 0.0);
         return true;
     }
 #endif
@@ -270,7 +326,7 @@ bool GLINT_SHADOW_DENOISER_FixedValue(int2 pixel, int2 spanOrigin, uint2 inputSi
 // counted `iterations` times), its span loaded into value buffer 0 and the geometry, clear
 // neighbours fixed. Returns the tile's first pixel; spanOrigin is the span's.
 int2 GLINT_SHADOW_DENOISER_FilterBegin(uint2 groupId, uint groupIndex, uint2 inputSize, float4 viewDepth,
-                                       uint iterations, out int2 spanOrigin)
+                                       float penumbraScale, uint iterations, out int2 spanOrigin)
 {
 #if GLINT_SHADOW_DENOISER_TILE_LIST
     // Only the tiles classification listed (never clear ones) are dispatched; the others hold
@@ -282,7 +338,7 @@ int2 GLINT_SHADOW_DENOISER_FilterBegin(uint2 groupId, uint groupIndex, uint2 inp
 #endif
     int2 tileOrigin = int2(groupId * GLINT_SHADOW_DENOISER_FILTER_TILE);
     spanOrigin = tileOrigin - GLINT_SHADOW_DENOISER_FILTER_APRON;
-    GLINT_SHADOW_DENOISER_LoadSpan(groupIndex, 64u, spanOrigin, inputSize, viewDepth);
+    GLINT_SHADOW_DENOISER_LoadSpan(groupIndex, 64u, spanOrigin, inputSize, viewDepth, penumbraScale);
 #if GLINT_SHADOW_DENOISER_TILE_LIST
     // Neighbouring clear tiles were not stored by classification or the earlier passes: their
     // span slots were fixed by LoadSpan; the words stay for GLINT_SHADOW_DENOISER_FixedValue.
@@ -298,10 +354,11 @@ int2 GLINT_SHADOW_DENOISER_FilterBegin(uint2 groupId, uint groupIndex, uint2 inp
 // +- 3: within the 4-pixel apron. Clear and non-receiver pixels take their fixed value in
 // both, as the separate dispatches give them.
 void GLINT_SHADOW_DENOISER_FilterPair(uint2 groupId, uint2 groupThreadId, uint groupIndex, uint2 inputSize,
-                                      float4 viewDepth, float depthSigma, float normalPower)
+                                      float4 viewDepth, float depthSigma, float normalPower, float penumbraScale)
 {
     int2 spanOrigin;
-    int2 tileOrigin = GLINT_SHADOW_DENOISER_FilterBegin(groupId, groupIndex, inputSize, viewDepth, 2u, spanOrigin);
+    int2 tileOrigin =
+        GLINT_SHADOW_DENOISER_FilterBegin(groupId, groupIndex, inputSize, viewDepth, penumbraScale, 2u, spanOrigin);
     const uint width = GLINT_SHADOW_DENOISER_FILTER_TILE + 4u;
     // 144 pixels over 64 threads: 3 rounds for the first 16, 2 for the others.
     [loop] for (uint i = groupIndex; i < width * width; i += 64u)
@@ -311,7 +368,8 @@ void GLINT_SHADOW_DENOISER_FilterPair(uint2 groupId, uint2 groupThreadId, uint g
             continue;
         float2 value;
         if (!GLINT_SHADOW_DENOISER_FixedValue(pixel, spanOrigin, inputSize, value))
-            value = GLINT_SHADOW_DENOISER_FilterPixel(pixel, spanOrigin, inputSize, 0u, 1u, depthSigma, normalPower);
+            value = GLINT_SHADOW_DENOISER_FilterPixel(pixel, spanOrigin, inputSize, 0u, 1u, depthSigma, normalPower,
+                                                      penumbraScale);
         g_glint_shadow_denoiser_filter_values[GLINT_SHADOW_DENOISER_FILTER_SLOTS +
                                               GLINT_SHADOW_DENOISER_FilterSlot(pixel, spanOrigin, inputSize)] = value;
     }
@@ -322,25 +380,29 @@ void GLINT_SHADOW_DENOISER_FilterPair(uint2 groupId, uint2 groupThreadId, uint g
         return;
     float2 result;
     if (!GLINT_SHADOW_DENOISER_FixedValue(pixel, spanOrigin, inputSize, result))
-        result = GLINT_SHADOW_DENOISER_FilterPixel(pixel, spanOrigin, inputSize, 1u, 2u, depthSigma, normalPower);
+        result = GLINT_SHADOW_DENOISER_FilterPixel(pixel, spanOrigin, inputSize, 1u, 2u, depthSigma, normalPower,
+                                                   penumbraScale);
     GLINT_SHADOW_DENOISER_StoreFiltered(pixel, result);
 }
 #endif
 
 void GLINT_SHADOW_DENOISER_Filter(uint2 groupId, uint2 groupThreadId, uint groupIndex, uint2 inputSize, uint step,
-                                  bool finalPass, float4 viewDepth, float depthSigma, float normalPower)
+                                  bool finalPass, float4 viewDepth, float depthSigma, float normalPower,
+                                  float penumbraScale)
 {
     int2 spanOrigin;
-    int2 tileOrigin = GLINT_SHADOW_DENOISER_FilterBegin(groupId, groupIndex, inputSize, viewDepth, 1u, spanOrigin);
+    int2 tileOrigin =
+        GLINT_SHADOW_DENOISER_FilterBegin(groupId, groupIndex, inputSize, viewDepth, penumbraScale, 1u, spanOrigin);
     int2 pixel = tileOrigin + int2(groupThreadId);
     if (any(uint2(pixel) >= inputSize))
         return;
     if (g_glint_shadow_denoiser_filter_geometry[GLINT_SHADOW_DENOISER_FilterSlot(pixel, spanOrigin, inputSize)].x <= 0.0)
     {
-        GLINT_SHADOW_DENOISER_StoreFiltered(pixel, float2(0.0, 0.0));
+        GLINT_SHADOW_DENOISER_StoreFiltered(pixel, float2(1.0, 0.0));
         return;
     }
-    float2 result = GLINT_SHADOW_DENOISER_FilterPixel(pixel, spanOrigin, inputSize, 0u, step, depthSigma, normalPower);
+    float2 result =
+        GLINT_SHADOW_DENOISER_FilterPixel(pixel, spanOrigin, inputSize, 0u, step, depthSigma, normalPower, penumbraScale);
     if (finalPass)
         result.x = GLINT_SHADOW_DENOISER_ContrastRemap(result);
     GLINT_SHADOW_DENOISER_StoreFiltered(pixel, result);

@@ -44,22 +44,26 @@ struct FrameInfo {
     float environmentMaxLod = 7.0f;
     std::uint32_t frameIndex = 0; // histories ping-pong on its parity
     bool resetHistory = false;    // first frame, camera cut or resize
+    // tan of the angular radius of the light ShadowVisibility samples; 0: unknown.
+    float shadowLightTanHalfAngle = 0.0f;
 };
 
 // What an application image holds. A tool fills each input from its own data by this kind.
 enum class InputKind : std::uint8_t {
-    Depth,             // R: device depth
-    PreviousDepth,     // R: last frame's device depth (this frame's on the first)
-    Normals,           // RGBA: world-space normals, encoded as FrameInfo::normalUnpack says
-    Material,          // RGBA: roughness in FrameInfo::materialChannel
-    Color,             // RGBA: lit colour
-    Motion,            // RG: motion vectors, FrameInfo::motionScale
-    Environment,       // RGBA: lat-long environment with its whole mip chain
-    BaseColorMetallic, // RGBA: base colour and metallic
-    ShadowVisibility,  // R: one binary visibility sample (1 = lit)
-    SceneGeometry,     // buffers: the application's scene for its ray tracing and shading modules
-                       // (glint's harness: "scene_constants", "scene_nodes", "scene_primitives",
-                       // "scene_materials", "scene_lights"; harness/scene/scene_buffers.h)
+    Depth,                 // R: device depth
+    PreviousDepth,         // R: last frame's device depth (this frame's on the first)
+    Normals,               // RGBA: world-space normals, encoded as FrameInfo::normalUnpack says
+    Material,              // RGBA: roughness in FrameInfo::materialChannel
+    Color,                 // RGBA: lit colour
+    Motion,                // RG: motion vectors, FrameInfo::motionScale
+    Environment,           // RGBA: lat-long environment with its whole mip chain
+    BaseColorMetallic,     // RGBA: base colour and metallic
+    ShadowVisibility,      // R: one binary visibility sample (1 = lit)
+    ShadowBlockerDistance, // R: distance along ShadowVisibility's ray to its closest blocker; 0 when lit,
+                           // < 0 unknown (optional: a capture without it reads as unknown)
+    SceneGeometry,         // buffers: the application's scene for its ray tracing and shading modules
+                           // (glint's harness: "scene_constants", "scene_nodes", "scene_primitives",
+                           // "scene_materials", "scene_lights"; harness/scene/scene_buffers.h)
 };
 
 struct InputDesc {

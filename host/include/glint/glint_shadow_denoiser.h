@@ -68,6 +68,15 @@ struct ShadowDenoiserDesc {
     // own permutation of the passes that write the output (docs/shadow_denoiser.md, "Output
     // format").
     Format outputFormat = Format::R8Unorm;
+    // Penumbra-aware filtering (docs/shadow_denoiser.md, "Penumbra-aware filtering"): each
+    // filter pass's footprint follows the penumbra width in pixels, about
+    // blocker distance x 2 lightTanHalfAngle / (view depth x pixelAngularSize), so a hard
+    // shadow keeps its (temporally accumulated) input and a wide penumbra gets the full filter.
+    // Needs "shadow_blocker_distance" and both values below; with either at 0 (unknown), or
+    // penumbraAware false, every pixel gets the full filter (the behaviour before the estimate).
+    bool penumbraAware = true;
+    float lightTanHalfAngle = 0.0f; // tan of the light's angular radius (half-angle); 0: unknown
+    float pixelAngularSize = 0.0f;  // radians per pixel at the image centre, 2 tan(fovY / 2) / H; 0: unknown
 
     // Classification (temporal) inputs. Matrices are row-major 4x4 with column vectors (q = M p).
     std::array<double, 16> reprojection{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}; // VP_prev VP^-1
@@ -82,6 +91,10 @@ struct ShadowDenoiserDesc {
 // value for the size): the factor classification applies to the variance it stores.
 float shadowStoredVarianceScale(const ShadowDenoiserDesc& desc);
 
+// Whether the plan reads "shadow_blocker_distance" and sizes the filter by the penumbra:
+// penumbraAware with a known light angle and pixel angular size.
+bool shadowPenumbraActive(const ShadowDenoiserDesc& desc);
+
 // Words of the visibility mask: ceil(W / 8) x ceil(H / 4).
 Extent2D shadowMaskTiles(Extent2D size);
 
@@ -95,6 +108,9 @@ std::string shadowTileMetadataName(std::uint32_t frameIndex);
 //   "shadow_normals"        RGBA W x H, any float format, world-space normals
 //   "shadow_motion"         RG W x H, convention A: uv_prev = uv + mv
 //   "shadow_filter_input"   RG32F W x H (mean, variance), only when classify is false
+//   "shadow_blocker_distance" R32F (or R16F) W x H, sampled, only when shadowPenumbraActive:
+//                           distance along the visibility sample's ray to its closest blocker
+//                           (view-depth units), 0 when lit, < 0 when unknown (full filter there)
 //   "shadow_mask"           buffer, 4 bytes per mask word, written by "prepare"
 //   "shadow_tile_metadata0/1" buffer, 4 bytes per 8x8 tile: bit 0 CLEAR, bit 1 LIGHT; written on
 //                           frame parity, the other read back as last frame's (rebuildClearHistory)
@@ -109,7 +125,7 @@ std::string shadowTileMetadataName(std::uint32_t frameIndex);
 //                           filter dispatches (x | y << 16), with skipping
 //   "shadow_filter_args"    buffer, 12 bytes: their indirect arguments (prepare resets, classify counts);
 //                           classification then writes the CLEAR tiles' output itself
-//   "shadow_output"         outputFormat (R8 UNORM by default): .x the denoised shadow (1 = lit, 0 for
+//   "shadow_output"         outputFormat (R8 UNORM by default): .x the denoised shadow (1 = lit, 1 for
 //                           non-receivers); .y its variance with RG32Float only
 // Every owned image must hold finite values or be ignored through resetHistory on the first frame.
 Result planShadowDenoiser(const ShadowDenoiserDesc& desc, EffectPlan& plan, std::string* error);

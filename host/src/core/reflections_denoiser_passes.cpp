@@ -47,7 +47,8 @@ std::string checkDesc(const ReflectionsDenoiserDesc& desc) {
 }
 
 // Every pass reads SSSR's tile list; those that read the surface also depth, normals and
-// roughness (the resolve learns glossiness from the prefiltered image's alpha instead).
+// roughness (the resolve learns glossiness from the prefiltered image's alpha instead, and reads
+// the roughness alone).
 Pass tilePass(const char* name, const char* pipeline, const std::vector<std::byte>& constants,
               bool readsSurface = true) {
     Pass pass;
@@ -142,7 +143,9 @@ Result planReflectionsDenoiser(const ReflectionsDenoiserDesc& desc, EffectPlan& 
                                                  {"g_glint_clamped", "rd_clamped", Access::Read},
                                                  {"g_glint_prefiltered", "rd_prefiltered", Access::Write}});
     Pass resolve = tilePass("resolve", half ? "rd_resolve.half" : "rd_resolve", constants, false);
-    resolve.uses.insert(resolve.uses.end(), {{"g_glint_average", "rd_average", Access::Read},
+    // The resolve reads the roughness alone of the surface: mirrors are resolved differently.
+    resolve.uses.insert(resolve.uses.end(), {{"g_glint_roughness", "sssr_roughness", Access::Read},
+                                             {"g_glint_average", "rd_average", Access::Read},
                                              {"g_glint_tile_mask", "rd_tile_mask" + now, Access::Read},
                                              {"g_glint_prefiltered", "rd_prefiltered", Access::Read},
                                              {"g_glint_reprojected", "rd_reprojected", Access::Read},

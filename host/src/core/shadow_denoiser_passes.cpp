@@ -87,6 +87,8 @@ Pass filterPass(const ShadowDenoiserDesc& desc, std::uint32_t index, const char*
     constants.normalUnpack = {desc.normalUnpackMul, desc.normalUnpackAdd};
     constants.depthSigma = desc.depthSigma;
     constants.normalPower = desc.normalPower;
+    const bool penumbra = shadowPenumbraActive(desc);
+    constants.penumbraScale = penumbra ? 2.0f * desc.lightTanHalfAngle / desc.pixelAngularSize : 0.0f;
     pass.constantsBinding = "g_glint_constants";
     pass.constants = core::packConstants(constants);
     pass.uses = {{"g_glint_filter_input", input, Access::Read},
@@ -106,6 +108,9 @@ Pass filterPass(const ShadowDenoiserDesc& desc, std::uint32_t index, const char*
         // Classification wrote the clear tiles of the output; this pass adds the listed ones.
         if (index == 2) pass.uses[3].access = Access::ReadWrite;
     }
+    // Without the estimate the shader never reads it: the depth stands in.
+    pass.uses.push_back(
+        {"g_glint_blocker_distance", penumbra ? "shadow_blocker_distance" : "shadow_depth", Access::Read});
     if (std::string_view(output) == "shadow_output") pass.pipeline = outputPipeline(desc, pass.pipeline);
     return pass;
 }
@@ -198,6 +203,12 @@ Extent2D shadowMaskTiles(Extent2D size) {
             core::divideRoundUp(size.height, GLINT_SHADOW_DENOISER_MASK_TILE_HEIGHT)};
 }
 
+bool shadowPenumbraActive(const ShadowDenoiserDesc& desc) {
+    return desc.filter && desc.penumbraAware && desc.lightTanHalfAngle > 0.0f &&
+           desc.pixelAngularSize > 0.0f &&
+           std::isfinite(2.0f * desc.lightTanHalfAngle / desc.pixelAngularSize);
+}
+
 float shadowStoredVarianceScale(const ShadowDenoiserDesc& desc) {
     if (desc.storedVarianceScale > 0.0f) return desc.storedVarianceScale;
     // 1/16 up to 360 rows, where any more spatial filtering costs more in bias than it gains;
@@ -219,6 +230,9 @@ Result planShadowDenoiser(const ShadowDenoiserDesc& desc, EffectPlan& plan, std:
         return invalid(error, "normalPower must be 1..256");
     if (!(desc.storedVarianceScale >= 0.0f && std::isfinite(desc.storedVarianceScale)))
         return invalid(error, "storedVarianceScale must be finite and >= 0 (0: automatic)");
+    if (!(desc.lightTanHalfAngle >= 0.0f && std::isfinite(desc.lightTanHalfAngle)) ||
+        !(desc.pixelAngularSize >= 0.0f && std::isfinite(desc.pixelAngularSize)))
+        return invalid(error, "lightTanHalfAngle and pixelAngularSize must be finite and >= 0 (0: unknown)");
     if (!std::isfinite(desc.normalUnpackMul) || !std::isfinite(desc.normalUnpackAdd))
         return invalid(error, "normal unpack factors must be finite");
 

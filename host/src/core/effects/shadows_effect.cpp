@@ -6,6 +6,8 @@
 #include "glint/glint_effect.h"
 #include "glint/glint_shadow_denoiser.h"
 
+#include <cmath>
+
 namespace glint {
 namespace {
 
@@ -35,6 +37,10 @@ std::vector<SettingDesc> shadowSettings() {
         boolSetting("shadows.rebuildClearHistory", s.rebuildClearHistory,
                     "clear tiles' histories rebuilt from tile metadata instead of stored",
                     "ShadowDenoiserDesc::rebuildClearHistory"),
+        boolSetting("shadows.penumbraAware", s.penumbraAware,
+                    "the filter's footprint follows the penumbra width (light size, blocker distance); "
+                    "false: the full filter everywhere",
+                    "ShadowDenoiserDesc::penumbraAware"),
         boolSetting("shadows.contrastRemap", s.contrastRemap, "contrast recovery in the last filter pass",
                     "ShadowDenoiserDesc::contrastRemap"),
         floatSetting("shadows.storedVarianceScale", s.storedVarianceScale, 0, 1e6,
@@ -93,6 +99,16 @@ Result planShadows(const FrameInfo& frame, const SettingValues& settings, Effect
     desc.storedVarianceScale = settings.real("shadows.storedVarianceScale");
     desc.depthSigma = settings.real("shadows.depthSigma");
     desc.normalPower = settings.real("shadows.normalPower");
+    desc.penumbraAware = settings.flag("shadows.penumbraAware");
+    // The penumbra estimate's light and pixel sizes; either unknown (0) keeps the full filter.
+    desc.lightTanHalfAngle =
+        std::isfinite(frame.shadowLightTanHalfAngle) && frame.shadowLightTanHalfAngle > 0.0f
+            ? frame.shadowLightTanHalfAngle
+            : 0.0f;
+    const double focalY = std::abs(frame.projection[5]); // 1 / tan(fovY / 2)
+    const double pixelAngle = 2.0 / (focalY * static_cast<double>(frame.size.height));
+    desc.pixelAngularSize =
+        std::isfinite(pixelAngle) && pixelAngle > 0.0 ? static_cast<float>(pixelAngle) : 0.0f;
     if (!desc.classify)
         return invalid(error, "needs shadows.classify=true (the filter alone reads a (mean, variance) image "
                               "no frame carries)");
@@ -134,10 +150,12 @@ const EffectDescriptor& shadowsEffect() {
          {"shadow_depth", InputKind::Depth, ""},
          {"shadow_previous_depth", InputKind::PreviousDepth, ""},
          {"shadow_normals", InputKind::Normals, ""},
-         {"shadow_motion", InputKind::Motion, ""}},
+         {"shadow_motion", InputKind::Motion, ""},
+         {"shadow_blocker_distance", InputKind::ShadowBlockerDistance, "shadows.penumbraAware"}},
         planShadows,
         {"shadows.filter", "shadows.classify", "shadows.skipClearedTiles", "shadows.pairedFilter",
-         "shadows.splitClassify", "shadows.outputFormat", "shadows.rebuildClearHistory"},
+         "shadows.splitClassify", "shadows.outputFormat", "shadows.rebuildClearHistory",
+         "shadows.penumbraAware"},
         "",
         "shadow",
     };
