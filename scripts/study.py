@@ -1,20 +1,30 @@
 #!/usr/bin/env python3
-"""FLIP, Pareto fronts, plots and tables for a `glint study` folder (docs/accuracy-vs-time.md).
+"""FLIP, Pareto fronts, reference noise floors, plots and tables for a `glint study` folder
+(docs/accuracy-vs-time.md).
 
-    python3 scripts/study.py DIR [MORE_DIRS...]
+    python3 scripts/study.py [--flip-only] [--hdr-flip] DIR [MORE_DIRS...]
 
 DIR is what `glint study --out DIR` (and `glint study --scaling --out DIR`) wrote, on this
 machine or another: the image paths inside study.json are relative to DIR. Studies split over
 several runs (e.g. one per effect) are combined by naming every folder; the results go to the
-first. Adds the columns `flip` and `pareto` to each folder's study.csv and writes
-DIR/<effect>.png (error against time, one colour per scene, each scene's Pareto front
-connected), DIR/scaling_resolution.png and DIR/scaling_fraction.png (from the first folder
-with a scaling.json) and DIR/study.md (the tables, with the presets and the budget choice
-glint study made).
+first. Adds the columns `flip`, `flip_hdr`, `floor_flip` and `pareto` to each folder's study.csv
+and writes DIR/<effect>.png (FLIP against time, one colour per scene, each scene's Pareto front
+connected, its reference noise floor dotted), DIR/<effect>_hdr.png (the same in HDR-FLIP, where
+it was computed), DIR/scaling_resolution.png and DIR/scaling_fraction.png (from the first folder
+with a scaling.json) and DIR/study.md (the tables, the reference noise floors and whether each
+reference is converged, the presets and the budget choice glint study made).
 
-FLIP is NVIDIA's perceptual difference (flip-evaluator): HDR-FLIP for reflection radiance,
-LDR-FLIP for shadow visibility shown as a grey image. The images are zeroed outside the pixels
-the error is measured over (mask.exr), and FLIP is averaged over those pixels only.
+FLIP is NVIDIA's perceptual difference (flip-evaluator). `flip` is LDR-FLIP for every effect: of
+reflection (and hybrid) radiance clamped to [0, radiance_clamp] (study.json's, 16) and
+tone-mapped per channel with Reinhard x / (1 + x), and of shadow visibility clamped to [0, 1].
+`flip_hdr` (--hdr-flip, reflections and hybrid only: slow at 1080p) is HDR-FLIP of the linear
+radiance. The images are zeroed outside the pixels the error is measured over (mask.exr), and
+FLIP is averaged over those pixels only. Where a row has a second, independent reference
+(`reference2`), FLIP between the two references is the noise floor `floor_flip`.
+
+--flip-only: FLIP, Pareto fronts and tables without matplotlib (the GPU machine); study.json
+keeps the FLIP values, so a later run elsewhere draws the plots without the images.
+--hdr-flip: also HDR-FLIP (flip_hdr, floor_flip_hdr) and the <effect>_hdr.png plots.
 """
 import csv
 import json
@@ -25,6 +35,15 @@ import numpy as np
 
 # Measured points of other implementations (docs/anchors/*.json), drawn beside the fronts.
 ANCHORS = pathlib.Path(__file__).resolve().parents[1] / "docs" / "anchors"
+
+# study.json's radiance_clamp where the file predates it (replay_error.h, kMaeClamp).
+RADIANCE_CLAMP = 16.0
+
+# Pixels kept around the mask when LDR-FLIP is cropped to it: LDR-FLIP at its 67 pixels per
+# degree changes no error more than 7 pixels from a changed input pixel (measured with
+# flip-evaluator 1.7), and LDR-FLIP has no image-wide statistic, so the masked pixels' errors are
+# those of the whole image. HDR-FLIP is never cropped: it picks its exposures from the whole image.
+FLIP_MARGIN = 32
 
 
 def pyplot():
@@ -37,39 +56,204 @@ def pyplot():
     return plt
 
 
+def flip_metric(clamp):
+    """What `flip` means, kept in study.json (flip_metric): a study.json whose FLIP was computed
+    another way (before it: HDR-FLIP for radiance, visibility read as sRGB) is computed again."""
+    return (f"LDR-FLIP (flip-evaluator, inputsRGB=False) of radiance clamped to [0, {clamp:g}] and "
+            f"tone-mapped with Reinhard x/(1+x), of shadow visibility clamped to [0, 1]")
+
+
 def load_rgb(path):
     import flip_evaluator as flip
 
+    if not pathlib.Path(path).exists():  # flip.load does not say what is missing
+        sys.exit(f"study.py: {path} is missing: FLIP needs the study's images (study.json holds no FLIP "
+                 f"of the current kind for it)")
     image = np.asarray(flip.load(str(path)), dtype=np.float32)[..., :3]
     return np.nan_to_num(image, nan=0.0, posinf=0.0, neginf=0.0)  # non-finite is reported apart
 
 
-def mean_flip(directory, row):
+def tone_map(radiance, clamp=RADIANCE_CLAMP):
+    """Display-linear values in [0, 1) from radiance: clamped to [0, clamp] (as the MAE is), then
+    Reinhard x / (1 + x) per channel."""
+    clamped = np.clip(np.asarray(radiance, dtype=np.float32), 0.0, clamp)
+    return clamped / (1.0 + clamped)
+
+
+def ldr_image(effect, image, clamp=RADIANCE_CLAMP):
+    """What LDR-FLIP is given: shadow visibility as it is (clamped to [0, 1]), radiance tone-mapped.
+    Both are linear values (light, not sRGB-encoded pixel values)."""
+    return np.clip(image, 0.0, 1.0) if effect == "shadows" else tone_map(image, clamp)
+
+
+def crop_to(mask, margin=FLIP_MARGIN):
+    """The rows and columns of the mask's bounding box, widened by margin (within the image)."""
+    ys, xs = np.nonzero(mask)
+    return (slice(max(ys.min() - margin, 0), ys.max() + margin + 1),
+            slice(max(xs.min() - margin, 0), xs.max() + margin + 1))
+
+
+def masked_flip(reference, test, mask, dynamic_range="LDR"):
+    """Mean FLIP of test against reference over mask; None where the mask holds no pixel."""
     import flip_evaluator as flip
 
-    reference = load_rgb(directory / row["reference"])
-    output = load_rgb(directory / row["output"])
-    mask = load_rgb(directory / row["mask"])[..., 0] > 0.5
-    if row["effect"] != "shadows":  # reflections and hybrid are HDR radiance
-        error, _, _ = flip.evaluate(np.maximum(reference, 0), np.maximum(output, 0), "HDR", applyMagma=False)
-    else:
-        error, _, _ = flip.evaluate(np.clip(reference, 0, 1), np.clip(output, 0, 1), "LDR", applyMagma=False)
+    if not mask.any():
+        return None
+    if dynamic_range == "LDR":  # the work follows the masked area; the result is the whole image's
+        box = crop_to(mask)
+        reference, test, mask = reference[box], test[box], mask[box]
+    # inputsRGB=False: both images hold linear values. flip-evaluator reads LDR input as
+    # sRGB-encoded unless told otherwise (its default inputsRGB=True), which would treat
+    # Reinhard's and visibility's linear values as display-encoded ones; HDR input is always linear.
+    error, _, _ = flip.evaluate(np.ascontiguousarray(reference), np.ascontiguousarray(test), dynamic_range,
+                                inputsRGB=False, applyMagma=False)
     error = np.asarray(error).reshape(mask.shape)
-    return float(error[mask].mean()) if mask.any() else None  # None: no pixel scored
+    return float(error[mask].mean())
+
+
+def mean_flip(directory, row, test="output", dynamic_range="LDR", clamp=RADIANCE_CLAMP):
+    """Mean FLIP of the row's image `test` (its output, or its second reference "reference2")
+    against its reference over its mask: LDR-FLIP of ldr_image(), or HDR-FLIP of the linear
+    radiance (negative values set to 0). None where the mask holds no pixel."""
+    mask = load_rgb(directory / row["mask"])[..., 0] > 0.5
+    if not mask.any():
+        return None
+    reference = load_rgb(directory / row["reference"])
+    other = load_rgb(directory / row[test])
+    if dynamic_range == "HDR":
+        return masked_flip(np.maximum(reference, 0), np.maximum(other, 0), mask, "HDR")
+    return masked_flip(ldr_image(row["effect"], reference, clamp), ldr_image(row["effect"], other, clamp), mask)
+
+
+def forget_stale_flips(study, metric):
+    """Drops FLIP values computed another way than `metric` names, so that they are computed again.
+    A study.json from before flip_metric holds HDR-FLIP of the linear radiance under `flip` for
+    reflections and hybrid: what --hdr-flip computes, so it is kept as flip_hdr."""
+    for row in study["rows"]:
+        if "flip_metric" not in study and "flip" in row and row["effect"] != "shadows":
+            row.setdefault("flip_hdr", row["flip"])
+        row.pop("flip", None)
+        row.pop("floor_flip", None)
+    study["flip_metric"] = metric
+
+
+def add_flips(directory, study, hdr=False, workers=None):
+    """flip (and flip_hdr with hdr) of every row of one folder's study.json, and the noise floors
+    floor_flip (floor_flip_hdr) of the rows with a second reference, each floor computed once per
+    reference. Values already in study.json are kept: absent means not computed, None (null) that
+    no pixel was scored. The images are independent, so they are scored in parallel, one process
+    per CPU (FLIP itself runs on one core); `workers` 1 scores them in this process."""
+    clamp = study.get("radiance_clamp", RADIANCE_CLAMP)
+    if study.get("flip_metric") != flip_metric(clamp):
+        forget_stale_flips(study, flip_metric(clamp))
+    jobs = {}  # (test image, reference, mask, dynamic range) -> the mean_flip arguments
+    wanted = []  # (row, field, job key)
+    for row in study["rows"]:
+        radiance = row["effect"] != "shadows"  # HDR-FLIP is for radiance only
+        fields = [("flip", "output", "LDR")]
+        if hdr and radiance:
+            fields.append(("flip_hdr", "output", "HDR"))
+        if row.get("reference2"):  # the floor: one per reference, shared by the scene's rows
+            fields.append(("floor_flip", "reference2", "LDR"))
+            if hdr and radiance:
+                fields.append(("floor_flip_hdr", "reference2", "HDR"))
+        for field, test, dynamic_range in fields:
+            if field in row:
+                continue
+            key = (row[test], row["reference"], row["mask"], dynamic_range)
+            jobs.setdefault(key, (row, test, dynamic_range))
+            wanted.append((row, field, key))
+    results = {}
+    if workers == 1 or len(jobs) < 2:
+        for key, (row, test, dynamic_range) in jobs.items():
+            results[key] = mean_flip(directory, row, test, dynamic_range, clamp)
+    else:
+        import multiprocessing
+        from concurrent.futures import ProcessPoolExecutor
+
+        # spawn, not fork: a forked child can inherit a lock held by another thread of this one.
+        with ProcessPoolExecutor(max_workers=workers, mp_context=multiprocessing.get_context("spawn")) as pool:
+            futures = {key: pool.submit(mean_flip, directory, row, test, dynamic_range, clamp)
+                       for key, (row, test, dynamic_range) in jobs.items()}
+            results = {key: future.result() for key, future in futures.items()}
+    for row, field, key in wanted:
+        row[field] = results[key]
+
+
+def dominated(row, rivals, key="flip"):
+    """Whether another point is at least as fast and as accurate as row, and strictly better in one."""
+    return any(r is not row and r["time_us"] <= row["time_us"] and r[key] <= row[key]
+               and (r["time_us"] < row["time_us"] or r[key] < row[key]) for r in rivals)
+
+
+def front(points, key="flip"):
+    """The points of one scene and effect that no other dominates in time and `key`, fastest first.
+    A point without a value (no pixel scored, not computed) is on no front and competes with none."""
+    scored_points = [p for p in points if p.get(key) is not None]
+    return sorted((p for p in scored_points if not dominated(p, scored_points, key)),
+                  key=lambda p: (p["time_us"], p[key]))
 
 
 def mark_pareto(rows):
     """pareto = 1 where no other point of the same scene and effect is as fast and as accurate.
     A point without a FLIP (no pixel scored) is on no front and competes with none."""
-    scored = [r for r in rows if r["flip"] is not None]
     for row in rows:
-        if row["flip"] is None:
-            row["pareto"] = 0
-            continue
-        rivals = [r for r in scored if (r["scene"], r["effect"]) == (row["scene"], row["effect"]) and r is not row]
-        row["pareto"] = int(not any(
-            r["time_us"] <= row["time_us"] and r["flip"] <= row["flip"]
-            and (r["time_us"] < row["time_us"] or r["flip"] < row["flip"]) for r in rivals))
+        row["pareto"] = 0
+    for scene, effect in {(r["scene"], r["effect"]) for r in rows}:
+        for row in front([r for r in rows if (r["scene"], r["effect"]) == (scene, effect)]):
+            row["pareto"] = 1
+
+
+def smallest_step(points, key):
+    """The smallest non-zero difference in `key` between consecutive points (None: there is none)."""
+    values = [p.get(key) for p in points]
+    steps = [abs(b - a) for a, b in zip(values, values[1:]) if a is not None and b is not None]
+    return min((s for s in steps if s > 0), default=None)
+
+
+def converged(floor, step):
+    """floor below a quarter of the smallest step; True with no step (nothing for the reference to
+    resolve), None without a floor."""
+    if floor is None:
+        return None
+    return True if step is None else floor < step / 4
+
+
+def convergence(rows):
+    """Per (scene, effect): the reference's noise floor (FLIP, MAE, mean error between the two
+    independent references), the smallest steps between consecutive points of the scene's Pareto
+    front by time (in FLIP, and in MAE between the same points), and whether the reference is
+    converged by the rule of docs/accuracy-vs-time.md: its floor below a quarter of the smallest
+    step, for FLIP and for MAE separately (None where there is no floor)."""
+    result = {}
+    for scene, effect in sorted({(r["scene"], r["effect"]) for r in rows}):
+        group = [r for r in rows if (r["scene"], r["effect"]) == (scene, effect)]
+        points = front(group)
+        floor = next((r["floor"] for r in group if r.get("floor")), {})
+        floor_flip = next((r["floor_flip"] for r in group if r.get("floor_flip") is not None), None)
+        steps = {key: smallest_step(points, key) for key in ("flip", "mae")}
+        result[(scene, effect)] = {
+            "reference_spp": next((r["reference_spp"] for r in group if r.get("reference_spp")), None),
+            "floor_flip": floor_flip, "floor_mae": floor.get("mae"), "floor_error_mean": floor.get("error_mean"),
+            "front_points": len(points),
+            "smallest_flip_step": steps["flip"], "smallest_mae_step": steps["mae"],
+            "converged_flip": converged(floor_flip, steps["flip"]),
+            "converged_mae": converged(floor.get("mae"), steps["mae"])}
+    return result
+
+
+def convergence_warnings(verdicts):
+    """One line per scene and effect whose reference is not converged, with what to do about it."""
+    lines = []
+    for (scene, effect), v in verdicts.items():
+        failed = [f"{name} floor {v[f'floor_{key}']:.4g} is not below a quarter of the smallest front step "
+                  f"{v[f'smallest_{key}_step']:.4g}" for key, name in (("flip", "FLIP"), ("mae", "MAE"))
+                  if v[f"converged_{key}"] is False]
+        if failed:
+            spp = f"{v['reference_spp']} spp" if v["reference_spp"] else "its spp"
+            lines.append(f"study.py: warning: {scene} {effect}: the reference ({spp}) is not converged: "
+                         f"{'; '.join(failed)}; run glint study again with a larger --spp")
+    return lines
 
 
 def load_anchors(folder=ANCHORS):
@@ -87,19 +271,36 @@ def comparable_anchor(anchor, study):
             and (anchor["width"], anchor["height"]) == (study["width"], study["height"]))
 
 
-def plot_effect(rows, effect, title, path, anchors=()):
+def drawn_anchors(anchors, effect, kind):
+    """The anchors of effect whose FLIP is of `kind` ("LDR" or "HDR", the anchor's flip_kind): a
+    FLIP of another or an unstated kind is not comparable with the plot's, so it is not drawn."""
+    return [a for a in anchors if a["effect"] == effect and a.get("flip") is not None and a.get("flip_kind") == kind]
+
+
+def plot_effect(rows, effect, title, path, anchors=(), key="flip"):
+    """FLIP (key "flip", LDR) or HDR-FLIP (key "flip_hdr") against time for one effect: one colour
+    per scene, its Pareto front in that metric connected, its reference noise floor dotted, and the
+    anchors whose FLIP is of the same kind."""
     plt = pyplot()
+    hdr = key == "flip_hdr"
     figure, axes = plt.subplots(figsize=(8, 5.5))
     scenes = sorted({r["scene"] for r in rows if r["effect"] == effect})
+    floor_shown = False
     for colour, scene in zip(plt.cm.tab10.colors, scenes):
-        points = sorted((r for r in rows if (r["effect"], r["scene"]) == (effect, scene) and r["flip"] is not None),
+        points = sorted((r for r in rows if (r["effect"], r["scene"]) == (effect, scene) and r.get(key) is not None),
                         key=lambda r: r["time_us"])
-        axes.scatter([p["time_us"] for p in points], [p["flip"] for p in points], color=colour, label=scene)
-        front = [p for p in points if p["pareto"]]
-        axes.plot([p["time_us"] for p in front], [p["flip"] for p in front], color=colour, linewidth=1)
+        axes.scatter([p["time_us"] for p in points], [p[key] for p in points], color=colour, label=scene)
+        line = front(points, key)
+        axes.plot([p["time_us"] for p in line], [p[key] for p in line], color=colour, linewidth=1)
         for p in points:
-            axes.annotate(p["label"], (p["time_us"], p["flip"]), fontsize=6, xytext=(3, 2), textcoords="offset points")
-    drawn = [a for a in anchors if a["effect"] == effect and a.get("flip") is not None]
+            axes.annotate(p["label"], (p["time_us"], p[key]), fontsize=6, xytext=(3, 2), textcoords="offset points")
+        floor = next((r["floor_" + key] for r in rows if (r["effect"], r["scene"]) == (effect, scene)
+                      and r.get("floor_" + key) is not None), None)
+        if floor is not None:  # an error near it is the reference's noise, not the point's
+            axes.axhline(floor, color=colour, linestyle=":", linewidth=1,
+                         label=None if floor_shown else "reference noise floor (dotted)")
+            floor_shown = True
+    drawn = drawn_anchors(anchors, effect, "HDR" if hdr else "LDR")
     for a in drawn:
         axes.scatter([a["time_us"]], [a["flip"]], marker="*", s=90, color="black")
         axes.annotate(f"{a['label']} ({a['scene']})", (a["time_us"], a["flip"]), fontsize=6, xytext=(-4, -9),
@@ -108,8 +309,10 @@ def plot_effect(rows, effect, title, path, anchors=()):
         sources = ", ".join(sorted({a["source"] for a in drawn}))
         figure.text(0.01, 0.005, f"★ measured points of other implementations; their time and error conditions "
                     f"are in study.md and docs/anchors/{sources}", fontsize=6)
-    axes.set(xlabel="GPU time of the effect (µs, median)", ylabel="mean FLIP over the measured pixels",
-             title=f"{effect}: {title}")
+    metric = ("mean HDR-FLIP of the radiance" if hdr else
+              "mean LDR-FLIP of the visibility" if effect == "shadows" else "mean LDR-FLIP of the tone-mapped radiance")
+    axes.set(xlabel="GPU time of the effect (µs, median)", ylabel=f"{metric} over the measured pixels",
+             title=f"{effect}{' (HDR-FLIP)' if hdr else ''}: {title}")
     axes.legend(fontsize=8)
     axes.grid(alpha=0.3)
     figure.tight_layout()
@@ -145,6 +348,25 @@ def scored(value, form="{:.4f}"):
     return "no pixels scored" if value is None else form.format(value)
 
 
+def metric(row, key, form="{:.4f}"):
+    """A row's metric: "-" where it was not computed (absent: an older study.json, HDR-FLIP
+    without --hdr-flip), else scored()."""
+    return "-" if key not in row else scored(row[key], form)
+
+
+def metric_lines(clamp=RADIANCE_CLAMP):
+    """What the tables' metrics are, for the head of study.md."""
+    return [f"Metrics, each over the mask (reflections and hybrid: the glossy pixels below the largest "
+            f"roughness threshold swept; shadows: the receivers): **FLIP** is LDR-FLIP (flip-evaluator, "
+            f"67 pixels per degree) of the radiance clamped to [0, {clamp:g}] and tone-mapped per channel "
+            f"with Reinhard x/(1+x), and for shadows of the visibility in [0, 1], both given to FLIP as "
+            f"linear values; **HDR-FLIP** is HDR-FLIP of the linear radiance (`study.py --hdr-flip` only, "
+            f"\"-\" where not computed); **MAE** and **RMSE** are of the colour channels clamped to "
+            f"[0, {clamp:g}] (\"-\" in a study from before them); **mean error** is glint's relative "
+            f"error (reflections: luminance of |out − ref| / max(luminance(ref), 0.05); shadows: "
+            f"|out − ref|), unclamped. The Pareto fronts are in FLIP against time.", ""]
+
+
 def study_tables(rows):
     lines = []
     for effect in sorted({r["effect"] for r in rows}):
@@ -152,28 +374,64 @@ def study_tables(rows):
         hybrid = effect == "hybrid"  # its cost follows the fraction of rays it ray traces
         lines += [f"### {effect}", "",
                   "| scene | point | settings | time (µs) |" + (" RT rays |" if hybrid else "")
-                  + " FLIP | mean error | RMSE |" + (" penumbra |" if shadows else "") + " non-finite | Pareto |",
-                  "|---|---|---|---|" + ("---|" if hybrid else "") + "---|---|---|" + ("---|" if shadows else "")
-                  + "---|---|"]
+                  + " FLIP |" + ("" if shadows else " HDR-FLIP |") + " MAE | RMSE | mean error |"
+                  + (" penumbra |" if shadows else "") + " non-finite | Pareto |",
+                  "|---|---|---|---|" + ("---|" if hybrid else "") + "---|" + ("" if shadows else "---|")
+                  + "---|---|---|" + ("---|" if shadows else "") + "---|---|"]
         for r in (r for r in rows if r["effect"] == effect):
-            penumbra = f" {r['penumbra']:.4f} |" if shadows else ""
+            # glint writes -1 where no pixel of the mask is in penumbra
+            penumbra = f" {scored(r['penumbra'] if r['penumbra'] >= 0 else None)} |" if shadows else ""
             fraction = r.get("traced_fraction", "")  # the share of rays ray traced
             traced = (f" {100 * float(fraction):.1f} % |" if fraction != "" else " - |") if hybrid else ""
+            hdr = "" if shadows else f" {metric(r, 'flip_hdr')} |"
             lines.append(f"| {r['scene']} | {r['label']} | `{' '.join(r['settings']) or '-'}` | {r['time_us']:.1f} |"
-                         f"{traced} {scored(r['flip'])} | {r['error_mean']:.4f} | {r['rmse']:.4f} |{penumbra} "
-                         f"{r['non_finite']:g} | {'**yes**' if r['pareto'] else ''} |")
+                         f"{traced} {scored(r['flip'])} |{hdr} {metric(r, 'mae')} | {metric(r, 'rmse_clamped')} | "
+                         f"{metric(r, 'error_mean')} |{penumbra} {r['non_finite']:g} | "
+                         f"{'**yes**' if r['pareto'] else ''} |")
         lines.append("")
     return lines
 
 
+def floor_tables(verdicts):
+    """The reference noise floors, the smallest front steps and whether each reference is converged."""
+    if not any(v["floor_flip"] is not None or v["floor_mae"] is not None for v in verdicts.values()):
+        return ["### reference noise floors", "",
+                "None measured: the study has no second references (glint study --no-floor, or older).", ""]
+    lines = ["### reference noise floors", "",
+             "The floor is the difference between two independent references of the same frame (different seeds) "
+             "over the same mask, in the tables' metrics. A reference is converged when its floor is below a "
+             "quarter of the smallest error difference the study reports: the smallest non-zero step between "
+             "consecutive points of the scene's Pareto front (by time), in FLIP, and in MAE between the same "
+             "points, each metric on its own. A front of one point has no step.", "",
+             "| scene | effect | reference spp | floor FLIP | floor MAE | floor mean error | smallest FLIP step "
+             "| smallest MAE step | converged (FLIP) | converged (MAE) |", "|---|---|---|---|---|---|---|---|---|---|"]
+
+    def value(x):
+        return "-" if x is None else f"{x:.4g}"
+
+    def verdict(x):
+        return "-" if x is None else "yes" if x else "**no**"
+
+    for (scene, effect), v in verdicts.items():
+        nothing = "one point" if v["front_points"] < 2 else "no step"
+        steps = [nothing if v[f"smallest_{k}_step"] is None else value(v[f"smallest_{k}_step"]) for k in ("flip", "mae")]
+        lines.append(f"| {scene} | {effect} | {v['reference_spp'] or '-'} | {value(v['floor_flip'])} | "
+                     f"{value(v['floor_mae'])} | {value(v['floor_error_mean'])} | {steps[0]} | {steps[1]} | "
+                     f"{verdict(v['converged_flip'])} | {verdict(v['converged_mae'])} |")
+    return lines + [""]
+
+
 def anchor_tables(anchors):
     lines = ["### anchors (docs/anchors)", "",
-             "Drawn on the plots only when the study ran on the device and at the size of the point's time.", "",
-             "| effect | scene | point | time (µs) | time measured | FLIP | MAE | error measured |",
-             "|---|---|---|---|---|---|---|---|"]
+             "Drawn on the plots only when the study ran on the device and at the size of the point's time, and "
+             "only on the plot of the FLIP kind the anchor states (LDR: the FLIP plot; HDR: the HDR-FLIP plot); an "
+             "anchor whose kind is unstated is listed here only.", "",
+             "| effect | scene | point | time (µs) | time measured | FLIP | FLIP kind | MAE | error measured |",
+             "|---|---|---|---|---|---|---|---|---|"]
     for a in anchors:
         lines.append(f"| {a['effect']} | {a['scene']} | {a['label']} | {a['time_us']:.1f} | {a['time_measured']} "
-                     f"| {scored(a.get('flip'))} | {scored(a.get('mae'))} | {a['error_measured']} |")
+                     f"| {scored(a.get('flip'))} | {a.get('flip_kind', 'unstated')} | {scored(a.get('mae'))} "
+                     f"| {a['error_measured']} |")
     return lines + [""]
 
 
@@ -214,47 +472,63 @@ def scaling_tables(rows):
     return lines + [""]
 
 
+# The columns study.py adds to study.csv, after glint's.
+ADDED_COLUMNS = ["flip", "flip_hdr", "floor_flip", "pareto"]
+
+
 def add_columns(directory, rows):
-    """study.csv keeps the C++ columns (same rows, same order) and gains flip and pareto."""
+    """study.csv keeps the C++ columns (same rows, same order) and gains ADDED_COLUMNS: a value,
+    "no pixels scored", or empty where not computed (flip_hdr without --hdr-flip, floor_flip
+    without a second reference)."""
     with open(directory / "study.csv", newline="") as file:
         table = list(csv.DictReader(file))
     for line, row in zip(table, rows, strict=True):
-        line["flip"], line["pareto"] = scored(row["flip"], "{:.6g}"), row["pareto"]
+        for column in ADDED_COLUMNS[:-1]:
+            line[column] = scored(row[column], "{:.6g}") if column in row else ""
+        line["pareto"] = row["pareto"]
     with open(directory / "study.csv", "w", newline="") as file:
-        writer = csv.DictWriter(file, fieldnames=list(table[0].keys()))
+        writer = csv.DictWriter(file, fieldnames=[c for c in table[0] if c not in ADDED_COLUMNS] + ADDED_COLUMNS)
         writer.writeheader()
         writer.writerows(table)
 
 
-def main(directories, plots=True):
+def main(directories, plots=True, hdr=False):
     directories = [pathlib.Path(d) for d in directories]
     out = directories[0]
     studies = [json.loads((d / "study.json").read_text()) for d in directories]
     rows = []
     for directory, study in zip(directories, studies):
-        for row in study["rows"]:
-            if "flip" not in row:  # kept in study.json, so that plots need no images
-                row["flip"] = mean_flip(directory, row)
+        add_flips(directory, study, hdr)  # kept in study.json, so that plots need no images
         (directory / "study.json").write_text(json.dumps(study, indent=1))
         rows += study["rows"]
     mark_pareto(rows)
     for directory, study in zip(directories, studies):
         add_columns(directory, study["rows"])
+    verdicts = convergence(rows)
+    for line in convergence_warnings(verdicts):
+        print(line, file=sys.stderr)
 
     study = studies[0]
     device = study["device"]["name"]
+    clamp = study.get("radiance_clamp", RADIANCE_CLAMP)
     if any(s["device"]["name"] != device or (s["width"], s["height"]) != (study["width"], study["height"])
            for s in studies):
         print("study.py: warning: the folders were measured on different devices or sizes", file=sys.stderr)
+    if any(s.get("radiance_clamp", RADIANCE_CLAMP) != clamp for s in studies):
+        print("study.py: warning: the folders clamp radiance differently: FLIP and MAE are not comparable "
+              "between them", file=sys.stderr)
     title = f"{device}, {study['width']}×{study['height']}, frame {study['frames']}"
     markdown = [f"Device: {device} ({study['device']['driver']}, subgroup {study['device']['subgroupSize']}); "
                 f"{study['width']}×{study['height']}; error on frame {study['frames']} of {study['frames']}; "
-                f"time: median of {study['runs']} runs.", ""]
+                f"time: median of {study['runs']} runs.", ""] + metric_lines(clamp)
     anchors = load_anchors()
     comparable = [a for a in anchors if comparable_anchor(a, study)]
     for effect in sorted({r["effect"] for r in rows}) if plots else []:
         plot_effect(rows, effect, title, out / f"{effect}.png", comparable)
+        if any(r.get("flip_hdr") is not None for r in rows if r["effect"] == effect):
+            plot_effect(rows, effect, title, out / f"{effect}_hdr.png", comparable, key="flip_hdr")
     markdown += study_tables(rows)
+    markdown += floor_tables(verdicts)
     for other in studies:  # each folder's own presets: a split study chose them per effect
         markdown += choice_tables(other)
     if anchors:
@@ -272,13 +546,17 @@ def main(directories, plots=True):
     if scaling_files:
         markdown += ["### scaling", ""] + scaling_tables(scaling)
     (out / "study.md").write_text("\n".join(markdown))
-    print(f"wrote {out / 'study.md'}, the plots and the flip and pareto columns of study.csv")
+    print(f"wrote {out / 'study.md'}, the plots and the {', '.join(ADDED_COLUMNS)} columns of study.csv")
 
+
+OPTIONS = ("--flip-only", "--hdr-flip")
 
 if __name__ == "__main__":
-    arguments = [a for a in sys.argv[1:] if a != "--flip-only"]
-    if not arguments:
-        sys.exit("usage: study.py [--flip-only] DIR [MORE_DIRS...] (folders written by glint study --out DIR)")
+    arguments = [a for a in sys.argv[1:] if a not in OPTIONS]
+    if not arguments or any(a.startswith("--") for a in arguments):
+        sys.exit("usage: study.py [--flip-only] [--hdr-flip] DIR [MORE_DIRS...] (folders written by glint study --out DIR)")
     # --flip-only: FLIP, Pareto and tables without matplotlib (the GPU machine); study.json keeps
     # the FLIP values, so a later run elsewhere draws the plots without the images.
-    main(arguments, plots="--flip-only" not in sys.argv)
+    # --hdr-flip: HDR-FLIP too, which evaluates FLIP at several exposures per image: the 48 reflection
+    # images of a 1080p study did not finish inside 10 minutes on the GPU machine's CPU.
+    main(arguments, plots="--flip-only" not in sys.argv, hdr="--hdr-flip" in sys.argv)

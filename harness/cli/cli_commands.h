@@ -80,6 +80,7 @@ struct StudyOptions {
     std::optional<double> budgetUs;  // --budget-us: name the most accurate point that fits
     bool quick = false;
     bool scaling = false;
+    bool noFloor = false; // no second reference, so no reference noise floor
     bool validate = false;
 };
 

@@ -81,6 +81,17 @@ double valueOr(const nlohmann::json& object, const char* key) {
     return object.at(key).get<double>();
 }
 
+// Whether the references resolve the difference the page reports for an effect, the output's
+// error against its noisy input's on the last frame: converged when the two references' own
+// difference (the floor, same metric) is below a quarter of it. "-" without a floor or a noisy
+// error to compare.
+std::string convergence(double floor, const nlohmann::json& last, double noisy) {
+    if (std::isnan(floor) || !last.is_number() || noisy < 0.0) return "-";
+    const double difference = std::abs(last.get<double>() - noisy);
+    if (floor < 0.25 * difference) return "yes";
+    return "no: floor " + fixed(floor, 4) + " is not below a quarter of " + fixed(difference, 4);
+}
+
 // The roughness threshold the run scored reflections with: the last roughnessThreshold=
 // setting it names, else the default.
 double roughnessThresholdOf(const nlohmann::json& summary) {
@@ -218,7 +229,8 @@ report::Section runSection(const std::filesystem::path& dir, const nlohmann::jso
     if (summary.contains("error")) {
         report::Table errors{{"effect", "error, first frame", "error, last frame",
                               "its noisy input, last frame", "reference noise floor, last frame",
-                              "clamped MAE, last frame", "RMSE, last frame"},
+                              "converged (floor below a quarter of |output - noisy|)",
+                              "clamped MAE, last frame", "clamped RMSE, last frame"},
                              {}};
         const nlohmann::json lastErrors = frames.back().value("errors", nlohmann::json::object());
         const nlohmann::json lastNoise = frames.back().value("referenceNoise", nlohmann::json::object());
@@ -237,8 +249,9 @@ report::Section runSection(const std::filesystem::path& dir, const nlohmann::jso
             if (floor != "-") floor += " (clamped MAE " + shown(valueOr(noise, "maeClamped")) + ")";
             errors.rows.push_back({effect, scored(values.at("first")), scored(values.at("last")),
                                    noisy >= 0.0 ? fixed(noisy, 4) : "-", floor,
+                                   convergence(valueOr(noise, "mean"), values.at("last"), noisy),
                                    shown(valueOr(lastError, "maeClamped")),
-                                   shown(valueOr(lastError, "rmse"))});
+                                   shown(valueOr(lastError, "rmseClamped"))});
         }
         section.tables.push_back(std::move(errors));
         if (!anchorTable.rows.empty()) section.tables.push_back(std::move(anchorTable)); // beside the errors

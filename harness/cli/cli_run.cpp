@@ -170,8 +170,10 @@ int runRun(const ReplayOptions& options) {
             if (second)
                 for (const replay::ReferenceError& noise :
                      replay::referenceNoise(frame, result, second->frame(index), roughnessThreshold)) {
-                    record["referenceNoise"][noise.effect] = {
-                        {"mean", noise.mean}, {"rmse", noise.rmse}, {"maeClamped", noise.maeClamped}};
+                    record["referenceNoise"][noise.effect] = {{"mean", noise.mean},
+                                                              {"rmse", noise.rmse},
+                                                              {"maeClamped", noise.maeClamped},
+                                                              {"rmseClamped", noise.rmseClamped}};
                     noiseFloors[noise.effect] = noise.pixels > 0 ? noise.mean : -1.0;
                 }
             for (const replay::ReferenceError& error :
@@ -186,7 +188,8 @@ int runRun(const ReplayOptions& options) {
                                                   {"rmse", error.rmse},
                                                   {"penumbra", error.penumbra},
                                                   {"nonFinite", error.nonFinite},
-                                                  {"maeClamped", error.maeClamped}};
+                                                  {"maeClamped", error.maeClamped},
+                                                  {"rmseClamped", error.rmseClamped}};
                 if (error.noisyMean >= 0.0) record["errors"][error.effect]["noisyMean"] = error.noisyMean;
                 if (error.nonFinite > 0.0) ++nonFiniteFrames;
             }

@@ -11,6 +11,7 @@
 #include "cli_capture.h"
 
 #include "replay/replay_error.h"
+#include "replay/replay_frame.h"
 #include "replay/replay_settings.h"
 #include "report/report_image.h"
 #include "scene/scene_file.h"
@@ -147,7 +148,22 @@ struct Row {
     Measurement measurement;
     replay::ReferenceError error;
     std::string output, reference, mask; // relative to the output folder
+    std::uint32_t referenceSpp = 0;
+    // The scene's second, independent reference: its image ("" without one) and the floor, the
+    // two references' difference in the same metrics over the same mask.
+    std::string reference2;
+    std::optional<replay::ReferenceError> floor;
 };
+
+// The reference layer of `frame` for `effect` as an image, for writing it out.
+report::Image referenceImage(const capture::Frame& frame, const std::string& effect) {
+    const EffectDescriptor* descriptor = findEffect(effect);
+    const std::string name = "reference." + (descriptor ? std::string(descriptor->reference) : effect);
+    const capture::Layer* layer = capture::findLayer(frame, name);
+    if (!layer) throw std::runtime_error("study: the second reference has no " + name + " layer");
+    const auto channels = static_cast<std::uint32_t>(std::min<std::size_t>(layer->channels.size(), 3));
+    return {frame.width, frame.height, channels, replay::layerChannels(frame, name, channels)};
+}
 
 // Runs every frame with readback and measures the last one against its reference.
 replay::ReferenceError lastFrameError(const gpu::Context& context, const SimulatedScene& scene,
@@ -161,8 +177,9 @@ replay::ReferenceError lastFrameError(const gpu::Context& context, const Simulat
                              " reference");
 }
 
+// `second`: the same scene with an independent reference (none with --no-floor).
 std::vector<Row> sweep(const gpu::Context& context, const Plan& plan, const std::string& effect,
-                       const SimulatedScene& scene) {
+                       const SimulatedScene& scene, const SimulatedScene* second) {
     const std::vector<Point> points = pointsFor(effect, plan.quick);
     // One mask for every point: the largest threshold swept, so that a lower threshold is
     // charged for the pixels it hands to the environment instead of dropping them.
@@ -187,16 +204,32 @@ std::vector<Row> sweep(const gpu::Context& context, const Plan& plan, const std:
         row.output = (folder / (point.label + ".exr")).string();
         row.reference = (folder / "reference.exr").string();
         row.mask = (folder / "mask.exr").string();
+        row.referenceSpp = referenceSpp(plan, effect);
         writeMaskedRgb(plan.out / row.output, result.find(row.error.image)->image, mask);
         if (rows.empty()) {
             writeMaskedRgb(plan.out / row.reference, result.find(effect + "/reference")->image, mask);
             const std::vector<float> ones(mask.size(), 1.0f);
             writeMaskedRgb(plan.out / row.mask,
                            {scene.frames.back().width, scene.frames.back().height, 1, ones}, mask);
+            if (second) {
+                for (replay::ReferenceError& noise : replay::referenceNoise(
+                         scene.frames.back(), result, second->frames.back(), maskThreshold))
+                    if (noise.effect == effect) row.floor = std::move(noise);
+                writeMaskedRgb(plan.out / folder / "reference2.exr",
+                               referenceImage(second->frames.back(), effect), mask);
+                std::printf("  %-16s reference noise floor at %u spp: mean error %.4f, MAE %.4f, RMSE %.4f "
+                            "(clamped to [0, %g])\n",
+                            scene.name.c_str(), row.referenceSpp, row.floor ? row.floor->mean : -1.0,
+                            row.floor ? row.floor->maeClamped : -1.0,
+                            row.floor ? row.floor->rmseClamped : -1.0, replay::kMaeClamp);
+            }
+        } else {
+            row.floor = rows.front().floor;
         }
-        std::printf("  %-16s %-22s %10.1f us   error %.4f   rmse %.4f   non-finite %g\n", scene.name.c_str(),
-                    point.label.c_str(), row.measurement.total.medianUs, row.error.mean, row.error.rmse,
-                    row.error.nonFinite);
+        if (second) row.reference2 = (folder / "reference2.exr").string();
+        std::printf("  %-16s %-22s %10.1f us   error %.4f   MAE %.4f   RMSE %.4f   non-finite %g\n",
+                    scene.name.c_str(), point.label.c_str(), row.measurement.total.medianUs, row.error.mean,
+                    row.error.maeClamped, row.error.rmseClamped, row.error.nonFinite);
         std::fflush(stdout);
         rows.push_back(std::move(row));
     }
@@ -216,12 +249,20 @@ std::string rayTracedShare(const Measurement& measurement) {
 void writeResults(const Plan& plan, const gpu::Context& context, const std::vector<Row>& rows,
                   const nlohmann::json& choices) {
     const nlohmann::json device = deviceJson(context);
-    nlohmann::json json{{"device", device},      {"width", plan.width}, {"height", plan.height},
-                        {"frames", plan.frames}, {"runs", plan.runs},   {"rows", nlohmann::json::array()}};
+    nlohmann::json json{{"device", device},
+                        {"width", plan.width},
+                        {"height", plan.height},
+                        {"frames", plan.frames},
+                        {"runs", plan.runs},
+                        {"radiance_clamp", replay::kMaeClamp},
+                        {"rows", nlohmann::json::array()}};
     json.update(choices);
     std::ostringstream csv;
-    csv << "scene,effect,label,settings,time_us,time_min_us,time_max_us,passes,error_mean,rmse,penumbra,"
-           "non_finite,traced_fraction,output,reference,mask,device\n";
+    csv << "scene,effect,label,settings,time_us,time_min_us,time_max_us,passes,error_mean,rmse,mae,rmse_"
+           "clamped,"
+           "penumbra,non_finite,traced_fraction,reference_spp,floor_error_mean,floor_mae,floor_rmse_clamped,"
+           "output,"
+           "reference,reference2,mask,device\n";
     for (const Row& row : rows) {
         const std::string traced = row.effect == "hybrid"
                                        ? rayTracedShare(row.measurement)
@@ -229,8 +270,12 @@ void writeResults(const Plan& plan, const gpu::Context& context, const std::vect
         csv << row.scene << "," << row.effect << "," << row.label << "," << joined(row.settings) << ","
             << row.measurement.total.medianUs << "," << row.measurement.total.minUs << ","
             << row.measurement.total.maxUs << "," << passesField(row.measurement) << "," << row.error.mean
-            << "," << row.error.rmse << "," << row.error.penumbra << "," << row.error.nonFinite << ","
-            << traced << "," << row.output << "," << row.reference << "," << row.mask << ","
+            << "," << row.error.rmse << "," << row.error.maeClamped << "," << row.error.rmseClamped << ","
+            << row.error.penumbra << "," << row.error.nonFinite << "," << traced << "," << row.referenceSpp
+            << "," << (row.floor ? formatNumber(row.floor->mean) : "") << ","
+            << (row.floor ? formatNumber(row.floor->maeClamped) : "") << ","
+            << (row.floor ? formatNumber(row.floor->rmseClamped) : "") << "," << row.output << ","
+            << row.reference << "," << row.reference2 << "," << row.mask << ","
             << csvField(device["name"].get<std::string>()) << "\n";
         nlohmann::json entry = measurementJson(row.measurement);
         entry.update({{"scene", row.scene},
@@ -240,6 +285,9 @@ void writeResults(const Plan& plan, const gpu::Context& context, const std::vect
                       {"time_us", row.measurement.total.medianUs},
                       {"error_mean", row.error.mean},
                       {"rmse", row.error.rmse},
+                      {"mae", row.error.maeClamped},
+                      {"rmse_clamped", row.error.rmseClamped},
+                      {"reference_spp", row.referenceSpp},
                       {"penumbra", row.error.penumbra},
                       {"non_finite", row.error.nonFinite},
                       {"pixels", row.error.pixels},
@@ -247,6 +295,13 @@ void writeResults(const Plan& plan, const gpu::Context& context, const std::vect
                       {"output", row.output},
                       {"reference", row.reference},
                       {"mask", row.mask}});
+        if (row.floor) {
+            entry["reference2"] = row.reference2;
+            entry["floor"] = {{"error_mean", row.floor->mean},
+                              {"mae", row.floor->maeClamped},
+                              {"rmse_clamped", row.floor->rmseClamped},
+                              {"penumbra", row.floor->penumbra}};
+        }
         json["rows"].push_back(entry);
     }
     writeText(plan.out / "study.csv", csv.str());
@@ -273,6 +328,7 @@ Plan resolve(const StudyOptions& options) {
     plan.frames = options.frames ? options.frames : (options.quick ? 3u : 16u);
     plan.runs = options.runs ? options.runs : (options.quick ? 2u : 50u);
     plan.spp = options.spp;
+    plan.floors = !options.noFloor;
     if (options.budgetUs) {
         if (options.scaling)
             throw std::invalid_argument(
@@ -289,8 +345,9 @@ Plan resolve(const StudyOptions& options) {
 
 SimulatedScene simulateFor(const gpu::Context& context, const std::string& path, const std::string& effect,
                            std::uint32_t width, std::uint32_t height, std::uint32_t frames,
-                           std::uint32_t referenceSpp) {
+                           std::uint32_t referenceSpp, std::uint32_t seedOffset) {
     scene::Scene scene = scene::loadScene(path);
+    scene.seed += seedOffset;
     scene.width = width;
     scene.height = height;
     scene.frameCount = frames;
@@ -377,10 +434,15 @@ int runStudy(const StudyOptions& options) {
             const std::vector<std::string> scenes =
                 plan.scenes.empty() ? study::defaultScenes(effect, plan.quick) : plan.scenes;
             for (const std::string& path : scenes) {
+                const std::uint32_t spp = study::referenceSpp(plan, effect);
                 const study::SimulatedScene scene =
-                    study::simulateFor(context, path, effect, plan.width, plan.height, plan.frames,
-                                       study::referenceSpp(plan, effect));
-                std::vector<study::Row> more = study::sweep(context, plan, effect, scene);
+                    study::simulateFor(context, path, effect, plan.width, plan.height, plan.frames, spp);
+                std::optional<study::SimulatedScene> second;
+                if (plan.floors)
+                    second = study::simulateFor(context, path, effect, plan.width, plan.height, plan.frames,
+                                                spp, study::kSecondReferenceSeedOffset);
+                std::vector<study::Row> more =
+                    study::sweep(context, plan, effect, scene, second ? &*second : nullptr);
                 rows.insert(rows.end(), std::make_move_iterator(more.begin()),
                             std::make_move_iterator(more.end()));
             }

@@ -27,8 +27,12 @@ struct Plan {
     std::uint32_t width = 0, height = 0, frames = 0, runs = 0;
     std::uint32_t spp = 0; // 0: per-effect default
     bool quick = false;
+    bool floors = true;             // a second, independent reference per scene: the reference noise floor
     std::optional<double> budgetUs; // --budget-us: name the most accurate point that fits
 };
+
+// The second reference's seed is the scene's plus this (the demo's seed 2 for a scene at seed 1).
+inline constexpr std::uint32_t kSecondReferenceSeedOffset = 1;
 
 struct SimulatedScene {
     std::string name; // the file's stem, "glossy_room"
@@ -39,10 +43,11 @@ struct SimulatedScene {
 
 // The scene at `path` with `effect` as its only effect (so that a reflections scene can serve
 // the shadow study too), at width x height for `frames` frames; with referenceSpp > 0 the
-// effect's reference at that many samples per pixel.
+// effect's reference at that many samples per pixel. A `seedOffset` other than 0 moves the
+// scene's seed, which gives an independent reference of the same frames (the noise floor).
 SimulatedScene simulateFor(const gpu::Context& context, const std::string& path, const std::string& effect,
                            std::uint32_t width, std::uint32_t height, std::uint32_t frames,
-                           std::uint32_t referenceSpp);
+                           std::uint32_t referenceSpp, std::uint32_t seedOffset = 0);
 
 // The settings every point of an effect starts from: the effect as an engine runs it.
 std::vector<std::string> baseSettings(const std::string& effect);

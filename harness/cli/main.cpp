@@ -98,6 +98,8 @@ int main(int argc, char** argv) {
     studyCommand->add_option("--spp", study.spp, "reference samples per pixel");
     studyCommand->add_option("--runs", study.runs, "timed runs per point (default 50)");
     studyCommand->add_flag("--quick", study.quick, "tiny sizes, few frames and points (smoke test)");
+    studyCommand->add_flag("--no-floor", study.noFloor,
+                           "skip the second, independent reference (no reference noise floor)");
     double studyBudget = 0.0;
     CLI::Option* studyBudgetOption = studyCommand->add_option(
         "--budget-us", studyBudget, "name the most accurate measured point whose GPU time fits this budget");

@@ -58,7 +58,7 @@ ReferenceError compare(const std::string& effect, const NamedImage& output, cons
     const std::uint32_t channels = std::min(out.channels, reference.channels);
     error.map = report::Image{out.width, out.height, 1,
                               std::vector<float>(std::size_t{out.width} * out.height, 0.0f)};
-    double sum = 0.0, squares = 0.0, clampedSum = 0.0, penumbraSum = 0.0;
+    double sum = 0.0, squares = 0.0, clampedSum = 0.0, clampedSquares = 0.0, penumbraSum = 0.0;
     std::size_t penumbraCount = 0, nonFinite = 0;
     for (std::size_t i = 0; i < mask.size(); ++i) {
         const float* a = &out.pixels[i * out.channels];
@@ -67,14 +67,16 @@ ReferenceError compare(const std::string& effect, const NamedImage& output, cons
         if (!finite) ++nonFinite;
         if (!mask[i] || !finitePixel(b, channels)) continue;
         float difference[3] = {};
-        double pixelSquares = 0.0, pixelClamped = 0.0;
+        double pixelSquares = 0.0, pixelClamped = 0.0, pixelClampedSquares = 0.0;
         for (std::uint32_t c = 0; c < std::min(channels, 3u); ++c) {
             difference[c] = finite ? std::abs(a[c] - b[c]) : 0.0f;
             pixelSquares += double{difference[c]} * double{difference[c]};
             // A non-finite output pixel counts as the largest clamped difference.
-            pixelClamped += finite ? std::abs(std::clamp(double{a[c]}, 0.0, kMaeClamp) -
-                                              std::clamp(double{b[c]}, 0.0, kMaeClamp))
-                                   : kMaeClamp;
+            const double clamped = finite ? std::abs(std::clamp(double{a[c]}, 0.0, kMaeClamp) -
+                                                     std::clamp(double{b[c]}, 0.0, kMaeClamp))
+                                          : kMaeClamp;
+            pixelClamped += clamped;
+            pixelClampedSquares += clamped * clamped;
         }
         float value = luminance(difference, std::min(channels, 3u));
         if (relative) value /= std::max(luminance(b, std::min(channels, 3u)), 0.05f);
@@ -83,6 +85,7 @@ ReferenceError compare(const std::string& effect, const NamedImage& output, cons
         sum += double{value};
         squares += pixelSquares / std::min(channels, 3u);
         clampedSum += pixelClamped / std::min(channels, 3u);
+        clampedSquares += pixelClampedSquares / std::min(channels, 3u);
         ++error.pixels;
         if (!relative && b[0] > 0.05f && b[0] < 0.95f) {
             penumbraSum += double{value};
@@ -93,6 +96,7 @@ ReferenceError compare(const std::string& effect, const NamedImage& output, cons
         error.mean = sum / static_cast<double>(error.pixels);
         error.rmse = std::sqrt(squares / static_cast<double>(error.pixels));
         error.maeClamped = clampedSum / static_cast<double>(error.pixels);
+        error.rmseClamped = std::sqrt(clampedSquares / static_cast<double>(error.pixels));
     }
     if (penumbraCount > 0) error.penumbra = penumbraSum / static_cast<double>(penumbraCount);
     error.nonFinite =

@@ -9,7 +9,8 @@
 // Non-finite output pixels count in `nonFinite` and as error 1 in the map, never as NaN.
 // `maeClamped`: radiance (or visibility) clamped to [0, kMaeClamp] per channel, then the mean of
 // |out - ref| over the colour channels and the mask's pixels; bounded, so a few fireflies in
-// either image cannot dominate it the way they dominate the relative error.
+// either image cannot dominate it the way they dominate the relative error. `rmseClamped` is the
+// RMSE of the same clamped values.
 #pragma once
 
 #include "capture/capture_frame.h"
@@ -25,16 +26,17 @@ namespace glint::replay {
 inline constexpr double kMaeClamp = 16.0;
 
 struct ReferenceError {
-    std::string effect;      // "reflections"
-    std::string image;       // the image compared, "reflections/denoised"
-    std::size_t pixels = 0;  // pixels in the mask
-    double mean = 0.0;       // mean per-pixel error over the mask
-    double rmse = 0.0;       // RMSE of the colour channels over the mask
-    double maeClamped = 0.0; // mean |out - ref| of the colour channels clamped to [0, kMaeClamp]
-    double penumbra = -1.0;  // shadows: mean |error| over penumbra pixels (-1 when there are none)
-    double noisyMean = -1.0; // the same mean for the effect's noisy input, when the output is denoised
-    double nonFinite = 0.0;  // fraction of output pixels (all, not only the mask) that are not finite
-    report::Image map;       // per-pixel error, 0 outside the mask
+    std::string effect;       // "reflections"
+    std::string image;        // the image compared, "reflections/denoised"
+    std::size_t pixels = 0;   // pixels in the mask
+    double mean = 0.0;        // mean per-pixel error over the mask
+    double rmse = 0.0;        // RMSE of the colour channels over the mask
+    double maeClamped = 0.0;  // mean |out - ref| of the colour channels clamped to [0, kMaeClamp]
+    double rmseClamped = 0.0; // RMSE of the same clamped colour channels
+    double penumbra = -1.0;   // shadows: mean |error| over penumbra pixels (-1 when there are none)
+    double noisyMean = -1.0;  // the same mean for the effect's noisy input, when the output is denoised
+    double nonFinite = 0.0;   // fraction of output pixels (all, not only the mask) that are not finite
+    report::Image map;        // per-pixel error, 0 outside the mask
 };
 
 // The pixels the error of `effect` ("reflections" or "shadows") is measured over, as above:

@@ -25,7 +25,8 @@ file(WRITE "${OUT}/glossy_room/summary.json" [=[
      "referenceNoise": {"reflections": {"mean": 0.05, "rmse": 0.06, "maeClamped": 0.01}}},
     {"frame": 1, "folder": "frame_0001", "images": [],
      "errors": {"reflections": {"image": "reflections/denoised", "pixels": 10, "mean": 0.3, "rmse": 0.4,
-                                "penumbra": -1, "nonFinite": 0, "maeClamped": 0.125, "noisyMean": 0.8}},
+                                "penumbra": -1, "nonFinite": 0, "maeClamped": 0.125, "rmseClamped": 0.35,
+                                "noisyMean": 0.8}},
      "referenceNoise": {"reflections": {"mean": 0.0625, "rmse": 0.07, "maeClamped": 0.02}}}
   ],
   "error": {"reflections": {"first": 0.5, "last": 0.3, "noisyLast": 0.8, "referenceNoiseLast": 0.0625}}
@@ -33,6 +34,17 @@ file(WRITE "${OUT}/glossy_room/summary.json" [=[
 ]=])
 run_glint(0 report "${OUT}/glossy_room" --out "${OUT}/report.html" --anchors "${ANCHORS}")
 file(READ "${OUT}/report.html" html)
+
+# References too noisy for the difference reported: a floor of 0.2 against |0.3 - 0.8| = 0.5.
+file(READ "${OUT}/glossy_room/summary.json" noisy_summary)
+string(REPLACE "\"mean\": 0.0625" "\"mean\": 0.2" noisy_summary "${noisy_summary}")
+file(MAKE_DIRECTORY "${OUT}/noisy_references/frame_0000" "${OUT}/noisy_references/frame_0001")
+file(WRITE "${OUT}/noisy_references/summary.json" "${noisy_summary}")
+run_glint(0 report "${OUT}/noisy_references" --out "${OUT}/report_noisy.html")
+file(READ "${OUT}/report_noisy.html" noisy_html)
+if(NOT noisy_html MATCHES "<td>no: floor 0.2000 is not below a quarter of 0.5000</td>")
+  message(FATAL_ERROR "report_noisy.html does not say the references are not converged")
+endif()
 foreach(expected
     "GGX alpha below roughnessThreshold = 0.30"
     "radiance clamped to \\[0, 16\\]"
@@ -43,7 +55,7 @@ foreach(expected
     "noisy input"
     "output \\(denoised\\)"
     "reference noise floor"
-    "<td>0.0625 \\(clamped MAE 0.0200\\)</td><td>0.1250</td><td>0.4000</td>"
+    "<td>0.0625 \\(clamped MAE 0.0200\\)</td><td>yes</td><td>0.1250</td><td>0.3500</td>"
     "FidelityFX SDK 1.1.4, denoised"
     "640x360, frame 15 of a 16-frame sequence")
   if(NOT html MATCHES "${expected}")
