@@ -28,6 +28,7 @@ keeps the FLIP values, so a later run elsewhere draws the plots without the imag
 """
 import csv
 import json
+import math
 import pathlib
 import sys
 
@@ -211,6 +212,24 @@ def smallest_step(points, key):
     return min((s for s in steps if s > 0), default=None)
 
 
+def spp_to_converge(spp, floor, step):
+    """The reference spp at which the floor would fall below a quarter of step, if the floor falls
+    like 1/sqrt(spp) (Monte Carlo noise; FLIP's floor only roughly does): spp (4 floor / step)^2,
+    rounded up to a power of two; None where there is nothing to estimate."""
+    if not spp or floor is None or not step or floor < step / 4:
+        return None
+    needed = spp * (4 * floor / step) ** 2
+    return 1 << max(0, math.ceil(math.log2(needed)))
+
+
+def resolved_steps(points, key, floor):
+    """(steps between consecutive front points at least 4 floor apart, all non-zero steps)."""
+    values = [p.get(key) for p in points]
+    steps = [abs(b - a) for a, b in zip(values, values[1:]) if a is not None and b is not None]
+    steps = [s for s in steps if s > 0]
+    return (None if floor is None else sum(s > 4 * floor for s in steps)), len(steps)
+
+
 def converged(floor, step):
     """floor below a quarter of the smallest step; True with no step (nothing for the reference to
     resolve), None without a floor."""
@@ -239,6 +258,10 @@ def convergence(rows):
             "smallest_flip_step": steps["flip"], "smallest_mae_step": steps["mae"],
             "converged_flip": converged(floor_flip, steps["flip"]),
             "converged_mae": converged(floor.get("mae"), steps["mae"])}
+        spp = result[(scene, effect)]["reference_spp"]
+        needed = [spp_to_converge(spp, f, steps[k]) for k, f in (("flip", floor_flip), ("mae", floor.get("mae")))]
+        result[(scene, effect)]["spp_to_converge"] = max((n for n in needed if n), default=None)
+        result[(scene, effect)]["resolved_flip_steps"] = resolved_steps(points, "flip", floor_flip)
     return result
 
 
@@ -251,8 +274,11 @@ def convergence_warnings(verdicts):
                   if v[f"converged_{key}"] is False]
         if failed:
             spp = f"{v['reference_spp']} spp" if v["reference_spp"] else "its spp"
+            needed = v.get("spp_to_converge")
+            hint = f"glint study --spp {needed} would converge it, if the floor falls like 1/sqrt(spp)" if needed else \
+                "run glint study again with a larger --spp"
             lines.append(f"study.py: warning: {scene} {effect}: the reference ({spp}) is not converged: "
-                         f"{'; '.join(failed)}; run glint study again with a larger --spp")
+                         f"{'; '.join(failed)}; {hint}")
     return lines
 
 
@@ -402,9 +428,12 @@ def floor_tables(verdicts):
              "over the same mask, in the tables' metrics. A reference is converged when its floor is below a "
              "quarter of the smallest error difference the study reports: the smallest non-zero step between "
              "consecutive points of the scene's Pareto front (by time), in FLIP, and in MAE between the same "
-             "points, each metric on its own. A front of one point has no step.", "",
+             "points, each metric on its own. A front of one point has no step. A front step smaller than 4× the "
+             "floor is within the references' noise: the two points it separates are a tie at this spp. The spp "
+             "to converge assumes the floor falls like 1/sqrt(spp).", "",
              "| scene | effect | reference spp | floor FLIP | floor MAE | floor mean error | smallest FLIP step "
-             "| smallest MAE step | converged (FLIP) | converged (MAE) |", "|---|---|---|---|---|---|---|---|---|---|"]
+             "| smallest MAE step | converged (FLIP) | converged (MAE) | FLIP front steps above 4× floor "
+             "| spp to converge (estimate) |", "|---|---|---|---|---|---|---|---|---|---|---|---|"]
 
     def value(x):
         return "-" if x is None else f"{x:.4g}"
@@ -412,12 +441,17 @@ def floor_tables(verdicts):
     def verdict(x):
         return "-" if x is None else "yes" if x else "**no**"
 
+    def resolved(v):
+        above, steps = v.get("resolved_flip_steps", (None, 0))
+        return "-" if above is None else f"{above} of {steps}"
+
     for (scene, effect), v in verdicts.items():
         nothing = "one point" if v["front_points"] < 2 else "no step"
         steps = [nothing if v[f"smallest_{k}_step"] is None else value(v[f"smallest_{k}_step"]) for k in ("flip", "mae")]
         lines.append(f"| {scene} | {effect} | {v['reference_spp'] or '-'} | {value(v['floor_flip'])} | "
                      f"{value(v['floor_mae'])} | {value(v['floor_error_mean'])} | {steps[0]} | {steps[1]} | "
-                     f"{verdict(v['converged_flip'])} | {verdict(v['converged_mae'])} |")
+                     f"{verdict(v['converged_flip'])} | {verdict(v['converged_mae'])} | {resolved(v)} | "
+                     f"{v.get('spp_to_converge') or '-'} |")
     return lines + [""]
 
 

@@ -236,7 +236,7 @@ class ConvergenceTest(unittest.TestCase):
         self.assertIn("room reflections", warnings[0])
         self.assertIn("0.006", warnings[0])
         self.assertIn("0.02", warnings[0])
-        self.assertIn("--spp", warnings[0])
+        self.assertIn("--spp 128 would converge it", warnings[0])  # both metrics need 65-92 spp
         self.assertEqual(study.convergence_warnings(study.convergence(self.scene(0.004))), [])
 
     def test_one_point_front_is_converged_trivially(self):
@@ -247,7 +247,8 @@ class ConvergenceTest(unittest.TestCase):
         self.assertIsNone(verdict["smallest_flip_step"])
         self.assertEqual((verdict["converged_flip"], verdict["converged_mae"]), (True, True))
         table = "\n".join(study.floor_tables({("hall", "reflections"): verdict}))
-        self.assertIn("| hall | reflections | 64 | 0.3 | 0.3 | 0.01 | one point | one point | yes | yes |", table)
+        self.assertIn("| hall | reflections | 64 | 0.3 | 0.3 | 0.01 | one point | one point | yes | yes | 0 of 0 | - |",
+                      table)
 
     def test_rows_without_a_floor_are_not_judged(self):
         rows = [study_row("room", t, f, m) for t, f, m in ((1.0, 0.3, 0.5), (2.0, 0.2, 0.3))]
@@ -262,7 +263,16 @@ class ConvergenceTest(unittest.TestCase):
         self.assertEqual(verdicts[("room", "reflections")]["converged_flip"], True)
         self.assertEqual(verdicts[("room", "hybrid")]["converged_flip"], False)
         table = "\n".join(study.floor_tables(verdicts))
-        self.assertIn("| room | hybrid | 64 | 0.006 | 0.01 | 0.01 | 0.02 | 0.05 | **no** | yes |", table)
+        # FLIP steps 0.10 and 0.02 against 4 x 0.006 = 0.024: one resolved. Converging the 0.02 step
+        # needs 64 (4 x 0.006 / 0.02)^2 = 92.2 spp, so 128; MAE is converged already.
+        self.assertIn("| room | hybrid | 64 | 0.006 | 0.01 | 0.01 | 0.02 | 0.05 | **no** | yes | 1 of 2 | 128 |", table)
+
+    def test_spp_to_converge_follows_one_over_the_square_root_of_spp(self):
+        self.assertEqual(study.spp_to_converge(64, 0.01, 0.01), 1024)  # floor 4x too high: 16x the spp
+        self.assertEqual(study.spp_to_converge(64, 0.01, 0.02), 256)  # 2x too high: 4x
+        self.assertIsNone(study.spp_to_converge(64, 0.001, 0.1))  # converged already
+        self.assertIsNone(study.spp_to_converge(None, 0.01, 0.01))  # spp unknown
+        self.assertIsNone(study.spp_to_converge(64, 0.01, None))  # no step to resolve
 
 
 class FloorTest(unittest.TestCase):
