@@ -12,8 +12,10 @@
 #     count or sample count changed (demo_key in its folder),
 #   - replays every capture through the effects it declares (glint run, reflections with the
 #     denoiser and the composite, --second-reference for the noise floor) into out/demo/runs,
-#     and writes out/demo/report.html (per scene the metric in words, error against frame of
-#     the noisy input, the output and the reference noise floor, the images side by side,
+#     scores every frame with LDR-FLIP (scripts/run_flip.py in build/venv, which
+#     scripts/python_env.sh makes; skipped, with one line saying so, where it cannot be made),
+#     and writes out/demo/report.html (per scene the metric in words, error and FLIP against
+#     frame of the noisy input, the output and the reference noise floor, the images side by side,
 #     per-pass times, the FidelityFX anchor points with their conditions, the device),
 #   - measures the depth pyramid at 1920x1080 and SSSR on the glossy room at 640x360 on the
 #     selected device (per-pass times, traced fraction, how the rays ended),
@@ -41,8 +43,8 @@ if [ ${#scenes[@]} -eq 0 ]; then
   echo "demo: GLINT_DEMO_SCENES='${GLINT_DEMO_SCENES:-}' names no scene of harness/scenes" >&2
   exit 2
 fi
-# Per scene: two simulations and a run; then the report and the two benchmarks.
-steps=$((3 * ${#scenes[@]} + 3))
+# Per scene: two simulations and a run; then FLIP, the report and the two benchmarks.
+steps=$((3 * ${#scenes[@]} + 4))
 step=0
 started=$SECONDS
 progress() {
@@ -93,6 +95,21 @@ simulate() {
     echo '```'
     runs+=("$out/demo/runs/$name")
   done
+  echo
+  # LDR-FLIP per frame (scripts/run_flip.py) into each run's summary.json, for the report. It
+  # needs build/venv (scripts/python_env.sh makes it, from the network the first time); without
+  # it the report shows "-" for FLIP.
+  progress "scoring every frame with LDR-FLIP (scripts/run_flip.py)"
+  echo "## LDR-FLIP of the runs (scripts/run_flip.py)"
+  echo '```'
+  if scripts/python_env.sh >&2; then
+    if ! build/venv/bin/python scripts/run_flip.py "${runs[@]}"; then
+      echo "demo: scripts/run_flip.py failed: the report shows no FLIP"
+    fi
+  else
+    echo "demo: FLIP skipped: scripts/python_env.sh could not make build/venv (flip-evaluator, numpy)"
+  fi
+  echo '```'
   echo
   progress "writing $out/demo/report.html"
   "$glint" report "${runs[@]}" --out "$out/demo/report.html" --title "glint demo: the bundled scenes" \

@@ -513,7 +513,9 @@ ADDED_COLUMNS = ["flip", "flip_hdr", "floor_flip", "pareto"]
 def add_columns(directory, rows):
     """study.csv keeps the C++ columns (same rows, same order) and gains ADDED_COLUMNS: a value,
     "no pixels scored", or empty where not computed (flip_hdr without --hdr-flip, floor_flip
-    without a second reference)."""
+    without a second reference). A folder brought back with study.json alone has nothing to add to."""
+    if not (directory / "study.csv").exists():
+        return
     with open(directory / "study.csv", newline="") as file:
         table = list(csv.DictReader(file))
     for line, row in zip(table, rows, strict=True):
@@ -526,7 +528,17 @@ def add_columns(directory, rows):
         writer.writerows(table)
 
 
-def main(directories, plots=True, hdr=False):
+def borrow_times(rows, timed):
+    """The rows with each one's time taken from the row of `timed` (another study's study.json) with
+    the same scene, effect and label; a row `timed` lacks is left out. For points whose error and
+    time are measured under different conditions, as the anchors' are (error at a small size on
+    any device, time on the GPU at full size): the plots then put both kinds of point on one axis."""
+    times = {(r["scene"], r["effect"], r["label"]): r["time_us"] for r in timed["rows"]}
+    return [dict(r, time_us=times[(r["scene"], r["effect"], r["label"])], time_us_own=r["time_us"])
+            for r in rows if (r["scene"], r["effect"], r["label"]) in times]
+
+
+def main(directories, plots=True, hdr=False, times_from=None):
     directories = [pathlib.Path(d) for d in directories]
     out = directories[0]
     studies = [json.loads((d / "study.json").read_text()) for d in directories]
@@ -535,6 +547,9 @@ def main(directories, plots=True, hdr=False):
         add_flips(directory, study, hdr)  # kept in study.json, so that plots need no images
         (directory / "study.json").write_text(json.dumps(study, indent=1))
         rows += study["rows"]
+    timed = json.loads((pathlib.Path(times_from) / "study.json").read_text()) if times_from else None
+    if timed:
+        rows = borrow_times(rows, timed)
     mark_pareto(rows)
     for directory, study in zip(directories, studies):
         add_columns(directory, study["rows"])
@@ -555,6 +570,14 @@ def main(directories, plots=True, hdr=False):
     markdown = [f"Device: {device} ({study['device']['driver']}, subgroup {study['device']['subgroupSize']}); "
                 f"{study['width']}×{study['height']}; error on frame {study['frames']} of {study['frames']}; "
                 f"time: median of {study['runs']} runs.", ""] + metric_lines(clamp)
+    if timed:  # the time axis is the other study's: anchors measured there are comparable
+        title = (f"error: {title}\ntime: {timed['device']['name']}, {timed['width']}×{timed['height']} "
+                 f"(--times-from)")
+        markdown += [f"The times are those of the same points in {times_from} ({timed['device']['name']}, "
+                     f"{timed['width']}×{timed['height']}, median of {timed['runs']} runs): errors and times "
+                     "were measured under different conditions, as the anchors' are. Points it lacks are left "
+                     "out.", ""]
+        study = dict(study, device=timed["device"], width=timed["width"], height=timed["height"])
     anchors = load_anchors()
     comparable = [a for a in anchors if comparable_anchor(a, study)]
     for effect in sorted({r["effect"] for r in rows}) if plots else []:
@@ -587,10 +610,18 @@ OPTIONS = ("--flip-only", "--hdr-flip")
 
 if __name__ == "__main__":
     arguments = [a for a in sys.argv[1:] if a not in OPTIONS]
+    times_from = None
+    if "--times-from" in arguments[:-1]:
+        index = arguments.index("--times-from")
+        times_from = arguments[index + 1]
+        del arguments[index:index + 2]
     if not arguments or any(a.startswith("--") for a in arguments):
-        sys.exit("usage: study.py [--flip-only] [--hdr-flip] DIR [MORE_DIRS...] (folders written by glint study --out DIR)")
+        sys.exit("usage: study.py [--flip-only] [--hdr-flip] [--times-from TIMED_DIR] DIR [MORE_DIRS...] "
+                 "(folders written by glint study --out DIR)")
     # --flip-only: FLIP, Pareto and tables without matplotlib (the GPU machine); study.json keeps
     # the FLIP values, so a later run elsewhere draws the plots without the images.
     # --hdr-flip: HDR-FLIP too, which evaluates FLIP at several exposures per image: the 48 reflection
     # images of a 1080p study did not finish inside 10 minutes on the GPU machine's CPU.
-    main(arguments, plots="--flip-only" not in sys.argv, hdr="--hdr-flip" in sys.argv)
+    # --times-from TIMED_DIR: plot each point at the time of the same point in TIMED_DIR's study
+    # (borrow_times), so that anchors timed there are drawn beside points scored here.
+    main(arguments, plots="--flip-only" not in sys.argv, hdr="--hdr-flip" in sys.argv, times_from=times_from)

@@ -1,7 +1,7 @@
 # Script mode: one end-to-end replay case under the validation layer (any error exits 1).
 #   reflections: the glossy room with references through run with the denoiser; the denoised
 #                error against reference.reflection must be below the noisy input's and under
-#                a bound, with no non-finite pixel
+#                a bound, with no non-finite pixel, and the error mask written (EXR)
 #   shadows:     the courtyard through run; the denoised error over receivers against
 #                reference.shadow must be below the noisy input's and under a bound, the
 #                penumbra's under a bound, with no non-finite pixel
@@ -10,7 +10,8 @@
 #   noisefloor:  --second-reference: a capture against itself has a noise floor of exactly 0
 #                (identical references), against another seed's a floor above 0; simulate
 #                records its size, samples and seed in simulation.json and run copies it into
-#                the summary; a second capture with fewer frames is one line naming it
+#                the summary, and writes the second reference's images; a second capture with
+#                fewer frames is one line naming it
 file(REMOVE_RECURSE "${OUT}")
 function(glint_step)
   execute_process(COMMAND "${GLINT}" ${ARGN} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
@@ -52,6 +53,11 @@ if(CASE STREQUAL "reflections")
       message(FATAL_ERROR "run wrote no reflections_${image}.png")
     endif()
   endforeach()
+  # The error mask, for scripts/run_flip.py: EXR only; no second reference without --second-reference.
+  if(NOT EXISTS "${OUT}/run/frame_0005/reflections_mask.exr" OR EXISTS "${OUT}/run/frame_0005/reflections_mask.png"
+     OR EXISTS "${OUT}/run/frame_0005/reflections_reference2.exr")
+    message(FATAL_ERROR "run wrote no reflections_mask.exr, a mask PNG, or a reference2 it was not asked for")
+  endif()
 elseif(CASE STREQUAL "shadows")
   glint_expect(0 --validate simulate "${SCENES}/courtyard_penumbra.toml" --size 96x54 --frame-count 6 --spp 16 --out "${OUT}/capture")
   glint_expect(0 --validate run "${OUT}/capture" --out "${OUT}/run")
@@ -72,6 +78,9 @@ elseif(CASE STREQUAL "shadows")
   if(NOT nonFinite EQUAL 0)
     message(FATAL_ERROR "non-finite shadow pixels: ${nonFinite}")
   endif()
+  if(NOT EXISTS "${OUT}/run/frame_0005/shadows_mask.exr")
+    message(FATAL_ERROR "run wrote no shadows_mask.exr")
+  endif()
 elseif(CASE STREQUAL "noisefloor")
   glint_expect(0 --validate simulate "${SCENES}/glossy_room.toml" --size 32x18 --frame-count 2 --spp 4 --out "${OUT}/capture")
   glint_expect(0 simulate "${SCENES}/glossy_room.toml" --size 32x18 --frame-count 2 --spp 4 --seed 2 --out "${OUT}/capture2")
@@ -85,6 +94,11 @@ elseif(CASE STREQUAL "noisefloor")
   if(NOT floor GREATER 0)
     message(FATAL_ERROR "references of seeds 1 and 2 at 4 spp have a noise floor of ${floor}, not above 0")
   endif()
+  foreach(frame 0000 0001)  # the second reference's images, for scripts/run_flip.py's floor
+    if(NOT EXISTS "${OUT}/run/frame_${frame}/reflections_reference2.exr")
+      message(FATAL_ERROR "run --second-reference wrote no frame_${frame}/reflections_reference2.exr")
+    endif()
+  endforeach()
   file(READ "${OUT}/run/summary.json" json)
   string(JSON spp GET "${json}" simulation referenceSpp)
   string(JSON seed GET "${json}" secondReference seed)

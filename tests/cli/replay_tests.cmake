@@ -103,3 +103,14 @@ add_test(NAME "cli: report names the metric, plots error against frame and lists
           "-DOUT=${PROJECT_BINARY_DIR}/test-output/cli/report_plot" -P "${CMAKE_CURRENT_SOURCE_DIR}/cli/report_plot.cmake")
 set_tests_properties("cli: report names the metric, plots error against frame and lists anchors beside the plot"
   PROPERTIES LABELS unit)
+
+# scripts/run_flip.py (docs/replay.md, "FLIP of a run"): its value tests, then LDR-FLIP per frame of
+# two small runs and the report's FLIP columns and plots. Needs build/venv (python_env_check.cmake).
+add_test(NAME "cli: run_flip.py adds LDR-FLIP per frame to glint run folders and report shows it"
+  COMMAND "${CMAKE_COMMAND}" "-DGLINT=$<TARGET_FILE:glint>" "-DPYTHON=${PROJECT_SOURCE_DIR}/build/venv/bin/python"
+          "-DSCRIPT=${PROJECT_SOURCE_DIR}/scripts/run_flip.py" "-DSCRIPTS=${PROJECT_SOURCE_DIR}/scripts"
+          "-DVALUE_TESTS=${CMAKE_CURRENT_SOURCE_DIR}/cli/run_flip_test.py"
+          "-DSCENES=${PROJECT_SOURCE_DIR}/harness/scenes" "-DOUT=${PROJECT_BINARY_DIR}/test-output/cli/run_flip"
+          -P "${CMAKE_CURRENT_SOURCE_DIR}/cli/run_flip.cmake")
+set_tests_properties("cli: run_flip.py adds LDR-FLIP per frame to glint run folders and report shows it"
+  PROPERTIES LABELS gpu SKIP_REGULAR_EXPRESSION "SKIP:")

@@ -2,8 +2,9 @@
 # docs/replay.md) and the FidelityFX anchors file: the page names the metric (mask, threshold,
 # clamp range, reference samples and seeds), draws one error-against-frame plot with the noisy
 # input, the output and the reference noise floor, and lists the glossy room's anchor points
-# with their conditions in a table, never on the plot. A malformed anchors file is one line
-# naming it.
+# with their conditions in a table, never on the plot; its FLIP columns show "-" without FLIP
+# values, and the values scripts/run_flip.py adds (with a FLIP plot) when the summary has them. A
+# malformed anchors file is one line naming it.
 file(REMOVE_RECURSE "${OUT}")
 include("${CMAKE_CURRENT_LIST_DIR}/run_glint.cmake")
 file(MAKE_DIRECTORY "${OUT}/glossy_room/frame_0000" "${OUT}/glossy_room/frame_0001")
@@ -70,6 +71,58 @@ if(NOT count EQUAL 3)
 endif()
 if(html MATCHES "<circle")
   message(FATAL_ERROR "an anchor was drawn on a plot it was not measured on")
+endif()
+
+# A summary from before FLIP: the FLIP columns show "-" and the page says FLIP was not computed.
+if(NOT html MATCHES "<td>0.1250</td><td>0.3500</td><td>-</td><td>-</td></tr>"
+   OR NOT html MATCHES "FLIP was not computed for this run")
+  message(FATAL_ERROR "report.html of a summary without FLIP does not show \"-\" in its FLIP columns")
+endif()
+
+# The same run after scripts/run_flip.py: per-frame FLIP of the output, its noisy input and the
+# reference noise floor; the table's FLIP columns and the floor cell show them, the page names
+# the metric and plots FLIP against frame beside the error (three more lines).
+file(READ "${OUT}/glossy_room/summary.json" flip_summary)
+string(REPLACE "\"noisyMean\": 0.9}" "\"noisyMean\": 0.9, \"flip\": 0.2, \"noisyFlip\": 0.4}"
+       flip_summary "${flip_summary}")
+string(REPLACE "\"noisyMean\": 0.8}" "\"noisyMean\": 0.8, \"flip\": 0.125, \"noisyFlip\": 0.375}"
+       flip_summary "${flip_summary}")
+string(REPLACE "\"maeClamped\": 0.01}" "\"maeClamped\": 0.01, \"flip\": 0.05}" flip_summary "${flip_summary}")
+string(REPLACE "\"maeClamped\": 0.02}" "\"maeClamped\": 0.02, \"flip\": 0.0625}" flip_summary "${flip_summary}")
+string(REPLACE "\"referenceNoiseLast\": 0.0625}"
+       "\"referenceNoiseLast\": 0.0625, \"flipLast\": 0.125, \"noisyFlipLast\": 0.375, \"referenceNoiseFlipLast\": 0.0625}"
+       flip_summary "${flip_summary}")
+string(REPLACE "\"frames\": [" "\"flip\": {\"metric\": \"LDR-FLIP of the test\", \"clamp\": 16},\n  \"frames\": ["
+       flip_summary "${flip_summary}")
+file(MAKE_DIRECTORY "${OUT}/with_flip/frame_0000" "${OUT}/with_flip/frame_0001")
+file(WRITE "${OUT}/with_flip/summary.json" "${flip_summary}")
+run_glint(0 report "${OUT}/with_flip" --out "${OUT}/report_flip.html")
+file(READ "${OUT}/report_flip.html" flip_html)
+foreach(expected
+    "<th>FLIP, last frame</th><th>its noisy input&#39;s FLIP, last frame</th>"
+    "<td>0.0625 \\(clamped MAE 0.0200, FLIP 0.0625\\)</td><td>yes</td><td>0.1250</td><td>0.3500</td><td>0.1250</td><td>0.3750</td></tr>"
+    "LDR-FLIP as scripts/study.py defines it"
+    "radiance clamped to \\[0, 16\\] and tone-mapped per channel with Reinhard x/\\(1\\+x\\)"
+    "shadow visibility clamped to \\[0, 1\\]"
+    "reflections: LDR-FLIP against the reference"
+    "mean LDR-FLIP")
+  if(NOT flip_html MATCHES "${expected}")
+    message(FATAL_ERROR "report_flip.html lacks '${expected}'")
+  endif()
+endforeach()
+string(REGEX MATCHALL "<polyline" lines "${flip_html}")
+list(LENGTH lines count)
+if(NOT count EQUAL 6)
+  message(FATAL_ERROR "expected 6 plotted lines (error and FLIP: noisy, output, noise floor), found ${count}")
+endif()
+# A null FLIP (the frame's mask held no pixel) is "no pixels scored", never a number.
+string(REPLACE "\"noisyFlip\": 0.375" "\"noisyFlip\": null" null_summary "${flip_summary}")
+file(MAKE_DIRECTORY "${OUT}/null_flip/frame_0000" "${OUT}/null_flip/frame_0001")
+file(WRITE "${OUT}/null_flip/summary.json" "${null_summary}")
+run_glint(0 report "${OUT}/null_flip" --out "${OUT}/report_null_flip.html")
+file(READ "${OUT}/report_null_flip.html" null_html)
+if(NOT null_html MATCHES "<td>0.1250</td><td>no pixels scored</td></tr>")
+  message(FATAL_ERROR "report_null_flip.html does not show a null FLIP as \"no pixels scored\"")
 endif()
 
 file(WRITE "${OUT}/bad_anchors.json" "{\"points\": 3}")

@@ -213,6 +213,19 @@ def study_row(scene, time_us, flip, mae=None, floor_flip=None, floor_mae=None, e
     return row
 
 
+class BorrowTimesTest(unittest.TestCase):
+    def test_each_point_takes_the_time_of_the_same_point_in_the_timed_study(self):
+        scored = [{"scene": "room", "effect": "reflections", "label": "defaults", "time_us": 85.0, "flip_hdr": 0.23},
+                  {"scene": "room", "effect": "reflections", "label": "spq_4", "time_us": 84.0, "flip_hdr": 0.22},
+                  {"scene": "hall", "effect": "reflections", "label": "defaults", "time_us": 9.0, "flip_hdr": 0.5}]
+        timed = {"rows": [{"scene": "room", "effect": "reflections", "label": "defaults", "time_us": 191.6},
+                          {"scene": "room", "effect": "reflections", "label": "spq_4", "time_us": 234.8},
+                          {"scene": "room", "effect": "shadows", "label": "defaults", "time_us": 59.0}]}
+        rows = study.borrow_times(scored, timed)
+        self.assertEqual([(r["label"], r["time_us"], r["time_us_own"], r["flip_hdr"]) for r in rows],
+                         [("defaults", 191.6, 85.0, 0.23), ("spq_4", 234.8, 84.0, 0.22)])  # hall: not timed
+
+
 class ConvergenceTest(unittest.TestCase):
     def scene(self, floor_flip, floor_mae=0.01, scene="room"):
         # Front by time: FLIP 0.30, 0.20, 0.18 (steps 0.10 and 0.02), MAE 0.50, 0.30, 0.25 (steps

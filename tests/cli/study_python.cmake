@@ -4,21 +4,8 @@
 # numpy, from the network; scripts/setup.sh debug and scripts/study.sh run it). Without it the
 # test prints SKIP and ctest reports it skipped, unless skips are forbidden (CI=true or
 # GLINT_FORBID_SKIPS=1): then it fails.
-function(cannot_run reason)
-  if("$ENV{CI}" STREQUAL "true" OR ("$ENV{GLINT_FORBID_SKIPS}" AND NOT "$ENV{GLINT_FORBID_SKIPS}" STREQUAL "0"))
-    message(FATAL_ERROR "cannot run, and skips are forbidden here: ${reason}")
-  endif()
-  message("SKIP: ${reason}")
-endfunction()
-if(NOT EXISTS "${PYTHON}")
-  cannot_run("no ${PYTHON}; scripts/python_env.sh creates it")
-  return()
-endif()
-execute_process(COMMAND "${PYTHON}" -c "import flip_evaluator, matplotlib, numpy" RESULT_VARIABLE status)
-if(NOT status EQUAL 0)
-  cannot_run("${PYTHON} lacks flip_evaluator, matplotlib or numpy; scripts/python_env.sh installs them")
-  return()
-endif()
+include("${CMAKE_CURRENT_LIST_DIR}/python_env_check.cmake")
+require_python(flip_evaluator matplotlib numpy)
 execute_process(COMMAND "${PYTHON}" "${VALUE_TESTS}" -v RESULT_VARIABLE status)
 if(NOT status EQUAL 0)
   message(FATAL_ERROR "study.py's value tests failed (exit ${status})")

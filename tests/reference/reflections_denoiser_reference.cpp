@@ -224,6 +224,30 @@ NeighbourhoodStatistics resolveStatistics(const ResolveInputs& in) {
     return s;
 }
 
+double resolveHistoryLength(const ResolveInputs& in) {
+    const double n = std::max(in.historyLength, 1.0);
+    if (!in.antiLag || !in.historyValid || in.alpha < in.mirrorThreshold) return n;
+    const NeighbourhoodStatistics statistics = resolveStatistics(in);
+    // How far, on average over the neighbourhood, the histories lie from this frame's samples.
+    // A neighbour without a history counts with difference 0; every glossy neighbour weighs.
+    double difference = 0.0, total = 0.0;
+    for (int dy = -4; dy <= 4; ++dy)
+        for (int dx = -4; dx <= 4; ++dx) {
+            const auto i = static_cast<std::size_t>((dy + 4) * 9 + dx + 4);
+            if (!in.glossy[i]) continue;
+            const double w = std::exp(-3.0 * (dx * dx + dy * dy) / 25.0);
+            total += w;
+            if (in.neighbourHistoryValid[i])
+                difference += w * (luma(clampStored(in.neighbourHistory[i])) - luma(in.prefiltered[i]));
+        }
+    const double tolerance =
+        kAntiLagNoise * luma(statistics.sigma) + kAntiLagRelative * luma(statistics.mean) + kAntiLagFloor;
+    const double excess = std::abs(difference / total) / tolerance;
+    // Within the tolerance the history stays; beyond it, its length falls with the square.
+    if (excess <= 1.0) return n;
+    return std::max(n / (excess * excess), 1.0);
+}
+
 RadianceVariance resolvePixel(const ResolveInputs& in) {
     // 1-2. Neighbourhood statistics and the clip box.
     const NeighbourhoodStatistics statistics = resolveStatistics(in);
@@ -231,7 +255,8 @@ RadianceVariance resolvePixel(const ResolveInputs& in) {
     const Rgb& extent = statistics.extent;
     const Rgb boxCentre = mix(mean, in.average, 0.2);
     const Rgb current = in.prefiltered[40];
-    const double n = std::max(in.historyLength, 1.0);
+    // The anti-lag's history length stands for reproject's in every step below.
+    const double n = resolveHistoryLength(in);
     // 3. The history, clipped toward the box centre (without one, the current sample stands in).
     const Rgb history = in.historyValid ? clipTowardCentre(in.history, boxCentre, extent) : current;
     // 4. The current sample pulled toward the average by 1/(n+1), then clipped around it; of

@@ -1,6 +1,6 @@
 // CPU references of the deterministic parts of the reflections denoiser
 // (docs/reflections_denoiser.md): the reproject pass's tile average, the prefilter pass, and
-// the resolve pass's clip and blend for one pixel. Written from the documented rules, in
+// the resolve pass's anti-lag, clip and blend for one pixel. Written from the documented rules, in
 // double precision, independent of the shaders.
 #pragma once
 
@@ -94,8 +94,13 @@ struct ResolveInputs {
     Rgb average{};         // averageAt for the pixel
     Rgb history{};         // reprojected history
     bool historyValid = false;
-    double historyLength = 1.0;
+    // The reprojected histories of the same 9x9 neighbourhood (the centre's at index 40 is
+    // `history`), and whether each is valid: the anti-lag compares them with `prefiltered`.
+    std::array<Rgb, 81> neighbourHistory{};
+    std::array<bool, 81> neighbourHistoryValid{};
+    double historyLength = 1.0; // reproject's
     double historyClipScale = 0.7;
+    bool antiLag = true;
     double alpha = 1.0;            // the centre's GGX alpha
     double mirrorThreshold = 1e-4; // below it, the output is the centre's prefiltered sample
     // Added to the neighbourhood's sigma (clamped at 0): 0 for the pass itself; a test probes
@@ -110,7 +115,21 @@ struct NeighbourhoodStatistics {
 };
 NeighbourhoodStatistics resolveStatistics(const ResolveInputs& inputs);
 
-// The resolved radiance and the variance the pass stores for next frame.
+// The anti-lag's tolerance constants (docs/reflections_denoiser.md, "Resolve"): what noise
+// explains of a mean luminance difference is kAntiLagNoise luma(sigma) + kAntiLagRelative
+// luma(mean) + kAntiLagFloor, with the neighbourhood statistics of step 1.
+inline constexpr double kAntiLagNoise = 1.0;
+inline constexpr double kAntiLagRelative = 0.1;
+inline constexpr double kAntiLagFloor = 0.001;
+
+// The history length after the anti-lag: reproject's n when the anti-lag is off, the history
+// is not valid or the pixel is a mirror; otherwise n / e^2 (at least 1, at most n), e the mean
+// history-minus-sample luminance difference over the glossy neighbours (0 for those without a
+// valid history) in units of the tolerance. The pass stores it for next frame.
+double resolveHistoryLength(const ResolveInputs& inputs);
+
+// The resolved radiance and the variance the pass stores for next frame (blended with the
+// history length of resolveHistoryLength).
 RadianceVariance resolvePixel(const ResolveInputs& inputs);
 
 double luma(const Rgb& c);

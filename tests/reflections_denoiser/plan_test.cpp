@@ -2,9 +2,12 @@
 // list, history parity, validation messages.
 #include "glint/glint_reflections_denoiser.h"
 #include "glint/glint_sssr.h"
+#include "glint/reflections_denoiser/glint_reflections_denoiser_constants.h"
 
 #include <catch2/catch.hpp>
 
+#include <cstddef>
+#include <cstring>
 #include <limits>
 #include <variant>
 
@@ -23,6 +26,22 @@ bool uses(const Pass& pass, const std::string& binding, const std::string& resou
     for (const ResourceUse& use : pass.uses)
         if (use.binding == binding && use.resource == resource) return true;
     return false;
+}
+
+Access accessOf(const Pass& pass, const std::string& binding) {
+    for (const ResourceUse& use : pass.uses)
+        if (use.binding == binding) return use.access;
+    FAIL("no binding " << binding << " in " << pass.name);
+    return Access::Read;
+}
+
+std::uint32_t flagsOf(const Pass& pass) {
+    using shaders::GLINT_ReflectionsDenoiserConstants;
+    REQUIRE(pass.constants.size() >= sizeof(GLINT_ReflectionsDenoiserConstants));
+    std::uint32_t flags = 0;
+    std::memcpy(&flags, pass.constants.data() + offsetof(GLINT_ReflectionsDenoiserConstants, flags),
+                sizeof flags);
+    return flags;
 }
 
 } // namespace
@@ -56,12 +75,26 @@ TEST_CASE("three passes over SSSR's listed tiles, histories on the frame's parit
         CHECK(plan.passes[0].zeroBuffers == std::vector<std::string>{"rd_tile_mask" + now});
         CHECK(uses(plan.passes[2], "g_glint_radiance_history", "rd_radiance" + now));
         CHECK(uses(plan.passes[2], "g_glint_output", "sssr_radiance"));
+        // The resolve writes this frame's history length back after its anti-lag.
+        CHECK(uses(plan.passes[2], "g_glint_length", "rd_length" + now));
+        CHECK(accessOf(plan.passes[2], "g_glint_length") == Access::ReadWrite);
         CHECK(reflectionsDenoiserVariance(frame) == "rd_variance" + now);
     }
     EffectPlan plan;
     REQUIRE(planReflectionsDenoiser(validDesc(), plan, nullptr) == Result::Ok);
     for (const ImageDesc& image : plan.images)
         if (image.name == "rd_average") CHECK((image.width == 240 && image.height == 136));
+}
+
+TEST_CASE("the anti-lag is on by default and reaches the passes as a flag", "[reflections_denoiser]") {
+    ReflectionsDenoiserDesc desc = validDesc();
+    CHECK(desc.antiLag);
+    EffectPlan plan;
+    REQUIRE(planReflectionsDenoiser(desc, plan, nullptr) == Result::Ok);
+    for (const Pass& pass : plan.passes) CHECK((flagsOf(pass) & GLINT_RD_FLAG_ANTI_LAG) != 0u);
+    desc.antiLag = false;
+    REQUIRE(planReflectionsDenoiser(desc, plan, nullptr) == Result::Ok);
+    for (const Pass& pass : plan.passes) CHECK((flagsOf(pass) & GLINT_RD_FLAG_ANTI_LAG) == 0u);
 }
 
 TEST_CASE("invalid denoiser descs are refused with a message naming the field", "[reflections_denoiser]") {
