@@ -1,7 +1,12 @@
 #include "cli_images.h"
 
+#include "replay/replay_frame.h"
+
+#include <glint/glint_effect.h>
+
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <vector>
 
 namespace glint::cli {
@@ -71,6 +76,21 @@ std::filesystem::path writeImageFiles(const std::filesystem::path& dir, const st
     const std::filesystem::path path = dir / (stem + ".png");
     report::writePng(path.string(), image, previewMapping(name, image));
     return path;
+}
+
+report::Image referenceImage(const capture::Frame& frame, const std::string& effect) {
+    const EffectDescriptor* descriptor = findEffect(effect);
+    const std::string name = "reference." + (descriptor ? std::string(descriptor->reference) : effect);
+    const capture::Layer* layer = capture::findLayer(frame, name);
+    if (!layer) throw std::runtime_error("the second reference has no " + name + " layer");
+    const auto channels = static_cast<std::uint32_t>(std::min<std::size_t>(layer->channels.size(), 3));
+    return {frame.width, frame.height, channels, replay::layerChannels(frame, name, channels)};
+}
+
+report::Image maskImage(const capture::Frame& frame, const std::vector<std::uint8_t>& mask) {
+    report::Image image{frame.width, frame.height, 1, std::vector<float>(mask.size(), 0.0f)};
+    for (std::size_t i = 0; i < mask.size(); ++i) image.pixels[i] = mask[i] ? 1.0f : 0.0f;
+    return image;
 }
 
 } // namespace glint::cli

@@ -2,6 +2,7 @@
 // image holds: tone-mapped colour, grey scalars, heat maps, category colours).
 #pragma once
 
+#include "capture/capture_frame.h"
 #include "replay/replay_session.h"
 #include "report/report_image.h"
 
@@ -20,5 +21,13 @@ std::vector<std::string> exrChannels(const report::Image& image);
 // without one).
 std::filesystem::path writeImageFiles(const std::filesystem::path& dir, const std::string& stem,
                                       const std::string& name, const report::Image& image, bool png);
+
+// The reference layer of `frame` for `effect` ("reference.reflection" for reflections) as an
+// image of at most 3 channels, for writing it out. Throws std::runtime_error naming the layer
+// when the frame lacks it.
+report::Image referenceImage(const capture::Frame& frame, const std::string& effect);
+
+// An error mask (replay::errorMask: 1 inside, 0 outside) as a one-channel image.
+report::Image maskImage(const capture::Frame& frame, const std::vector<std::uint8_t>& mask);
 
 } // namespace glint::cli

@@ -1,7 +1,8 @@
 // glint report: one self-contained HTML page from the folders `glint run` wrote: per run, the
 // metric in words, a plot of the error against frame per effect (noisy input, output and the
-// reference noise floor where the run measured one), the last frame's images side by side
-// (input, noisy, denoised, composite, reference, error), the errors, per-pass GPU times; the
+// reference noise floor where the run measured one) and, where scripts/run_flip.py added it,
+// one of LDR-FLIP beside it, the last frame's images side by side (input, noisy, denoised,
+// composite, reference, error), the errors with their FLIP, per-pass GPU times; the
 // device on top; with --anchors, other implementations' points listed beside the scene they
 // were measured on, with their conditions. The demo's report.
 #include "cli_capture.h"
@@ -137,11 +138,32 @@ std::string referenceSentence(const nlohmann::json& summary) {
     return text + ".";
 }
 
-report::Plot errorPlot(const std::string& effect, const nlohmann::json& frames) {
+// What the FLIP columns and plot are, in words: scripts/run_flip.py's metric (scripts/study.py's
+// LDR-FLIP), or that it was not computed for this run.
+std::string flipSentence(const nlohmann::json& summary) {
+    if (!summary.contains("flip") || !summary.at("flip").is_object())
+        return "FLIP was not computed for this run (\"-\"): scripts/run_flip.py adds it to summary.json.";
+    const nlohmann::json& flip = summary.at("flip");
+    const double clamp = flip.contains("clamp") && flip.at("clamp").is_number()
+                             ? flip.at("clamp").get<double>()
+                             : replay::kMaeClamp;
+    return "FLIP (scripts/run_flip.py) is LDR-FLIP as scripts/study.py defines it: NVIDIA's "
+           "flip-evaluator at 67 pixels per degree, given linear values, of radiance clamped to [0, " +
+           fixed(clamp, 0) +
+           "] and tone-mapped per channel with Reinhard x/(1+x), and of shadow visibility clamped to "
+           "[0, 1]; both images are zeroed outside the error mask above and FLIP is averaged over the "
+           "mask's pixels. 0 is identical; a frame whose mask is empty shows \"no pixels scored\".";
+}
+
+// The series of one per-frame value of errors.<effect> (and referenceNoise.<effect>): the noisy
+// input's, the output's and the reference noise floor's, each left out where no frame has it.
+report::Plot framePlot(const std::string& effect, const nlohmann::json& frames, const std::string& title,
+                       const std::string& yLabel, const char* outputKey, const char* noisyKey,
+                       const char* floorKey) {
     report::Plot plot;
-    plot.title = effect + ": error against the reference";
+    plot.title = effect + ": " + title;
     plot.xLabel = "frame";
-    plot.yLabel = "mean error";
+    plot.yLabel = yLabel;
     report::PlotSeries noisy{"noisy input", {}, "#d62728"};
     report::PlotSeries output{"output (denoised)", {}, "#1f77b4"};
     report::PlotSeries floor{"reference noise floor", {}, "#555", true};
@@ -149,19 +171,39 @@ report::Plot errorPlot(const std::string& effect, const nlohmann::json& frames) 
     for (const auto& frame : frames) {
         const nlohmann::json errors = frame.value("errors", nlohmann::json::object());
         const nlohmann::json error = errors.value(effect, nlohmann::json::object());
-        output.values.push_back(valueOr(error, "mean"));
-        noisy.values.push_back(valueOr(error, "noisyMean"));
-        anyNoisy = anyNoisy || error.contains("noisyMean");
+        output.values.push_back(valueOr(error, outputKey));
+        noisy.values.push_back(valueOr(error, noisyKey));
+        anyNoisy = anyNoisy || error.contains(noisyKey);
         denoised = denoised || error.value("image", std::string{}).ends_with("/denoised");
         const nlohmann::json noise = frame.value("referenceNoise", nlohmann::json::object());
-        floor.values.push_back(valueOr(noise.value(effect, nlohmann::json::object()), "mean"));
-        anyFloor = anyFloor || noise.contains(effect);
+        const nlohmann::json effectNoise = noise.value(effect, nlohmann::json::object());
+        floor.values.push_back(valueOr(effectNoise, floorKey));
+        anyFloor = anyFloor || effectNoise.contains(floorKey);
     }
     if (!denoised) output.label = "output (not denoised)";
     if (anyNoisy) plot.series.push_back(std::move(noisy));
     plot.series.push_back(std::move(output));
     if (anyFloor) plot.series.push_back(std::move(floor));
     return plot;
+}
+
+report::Plot errorPlot(const std::string& effect, const nlohmann::json& frames) {
+    return framePlot(effect, frames, "error against the reference", "mean error", "mean", "noisyMean",
+                     "mean");
+}
+
+// Whether any frame holds errors.<effect>.flip (a number, or null where nothing was scored).
+bool hasFlip(const std::string& effect, const nlohmann::json& frames) {
+    for (const auto& frame : frames) {
+        const nlohmann::json errors = frame.value("errors", nlohmann::json::object());
+        if (errors.value(effect, nlohmann::json::object()).contains("flip")) return true;
+    }
+    return false;
+}
+
+report::Plot flipPlot(const std::string& effect, const nlohmann::json& frames) {
+    return framePlot(effect, frames, "LDR-FLIP against the reference", "mean LDR-FLIP", "flip", "noisyFlip",
+                     "flip");
 }
 
 report::Section runSection(const std::filesystem::path& dir, const nlohmann::json& summary,
@@ -184,7 +226,9 @@ report::Section runSection(const std::filesystem::path& dir, const nlohmann::jso
         for (const auto& [effect, values] : summary.at("error").items()) {
             section.text += "\n" + metricSentence(effect, summary);
             section.plots.push_back(errorPlot(effect, frames));
+            if (hasFlip(effect, frames)) section.plots.push_back(flipPlot(effect, frames));
         }
+        section.text += "\n" + flipSentence(summary);
     }
     // The scene the run was simulated from names the anchors that belong here.
     std::string scene = dir.filename().string();
@@ -230,7 +274,8 @@ report::Section runSection(const std::filesystem::path& dir, const nlohmann::jso
         report::Table errors{{"effect", "error, first frame", "error, last frame",
                               "its noisy input, last frame", "reference noise floor, last frame",
                               "converged (floor below a quarter of |output - noisy|)",
-                              "clamped MAE, last frame", "clamped RMSE, last frame"},
+                              "clamped MAE, last frame", "clamped RMSE, last frame", "FLIP, last frame",
+                              "its noisy input's FLIP, last frame"},
                              {}};
         const nlohmann::json lastErrors = frames.back().value("errors", nlohmann::json::object());
         const nlohmann::json lastNoise = frames.back().value("referenceNoise", nlohmann::json::object());
@@ -245,13 +290,23 @@ report::Section runSection(const std::filesystem::path& dir, const nlohmann::jso
             };
             const nlohmann::json lastError = lastErrors.value(effect, nlohmann::json::object());
             const nlohmann::json noise = lastNoise.value(effect, nlohmann::json::object());
+            // FLIP (scripts/run_flip.py): "-" where it was not computed, "no pixels scored" where
+            // it is null (an empty mask).
+            const auto flip = [&](const nlohmann::json& object, const char* key) {
+                return object.is_object() && object.contains(key) ? scored(object.at(key)) : std::string("-");
+            };
             std::string floor = shown(valueOr(noise, "mean"));
-            if (floor != "-") floor += " (clamped MAE " + shown(valueOr(noise, "maeClamped")) + ")";
+            if (floor != "-") {
+                floor += " (clamped MAE " + shown(valueOr(noise, "maeClamped"));
+                if (noise.contains("flip")) floor += ", FLIP " + flip(noise, "flip");
+                floor += ")";
+            }
             errors.rows.push_back({effect, scored(values.at("first")), scored(values.at("last")),
                                    noisy >= 0.0 ? fixed(noisy, 4) : "-", floor,
                                    convergence(valueOr(noise, "mean"), values.at("last"), noisy),
                                    shown(valueOr(lastError, "maeClamped")),
-                                   shown(valueOr(lastError, "rmseClamped"))});
+                                   shown(valueOr(lastError, "rmseClamped")), flip(lastError, "flip"),
+                                   flip(lastError, "noisyFlip")});
         }
         section.tables.push_back(std::move(errors));
         if (!anchorTable.rows.empty()) section.tables.push_back(std::move(anchorTable)); // beside the errors

@@ -1,8 +1,9 @@
 // glint run: a capture or sequence through the effects it declares (or --effects), histories
 // carried across frames. Writes per frame the outputs as EXR with PNG previews and, where the
-// capture has references, an error heat map; prints a progress bar, then a summary table of
-// per-pass GPU times and errors; writes summary.json (docs/replay.md). With --second-reference,
-// each frame's reference noise floor: the capture's references against another seed's.
+// capture has references, an error heat map and the error mask (EXR); prints a progress bar,
+// then a summary table of per-pass GPU times and errors; writes summary.json (docs/replay.md).
+// With --second-reference, each frame's reference noise floor: the capture's references
+// against another seed's, and that seed's reference images (EXR).
 #include "cli_capture.h"
 #include "cli_commands.h"
 #include "cli_images.h"
@@ -167,18 +168,31 @@ int runRun(const ReplayOptions& options) {
             }
             for (const replay::Counter& counter : result.counters)
                 record["counters"][counter.name] = counter.value;
-            if (second)
+            if (second) {
+                const capture::Frame secondFrame = second->frame(index);
                 for (const replay::ReferenceError& noise :
-                     replay::referenceNoise(frame, result, second->frame(index), roughnessThreshold)) {
+                     replay::referenceNoise(frame, result, secondFrame, roughnessThreshold)) {
                     record["referenceNoise"][noise.effect] = {{"mean", noise.mean},
                                                               {"rmse", noise.rmse},
                                                               {"maeClamped", noise.maeClamped},
                                                               {"rmseClamped", noise.rmseClamped}};
                     noiseFloors[noise.effect] = noise.pixels > 0 ? noise.mean : -1.0;
+                    // The second reference itself, for scores computed outside glint
+                    // (scripts/run_flip.py's FLIP floor): EXR only.
+                    writeImageFiles(dir, noise.effect + "_reference2", noise.effect + "/reference2",
+                                    referenceImage(secondFrame, noise.effect), false);
                 }
+            }
             for (const replay::ReferenceError& error :
                  replay::referenceErrors(frame, result, roughnessThreshold)) {
                 writeImageFiles(dir, error.effect + "_error", error.effect + "/error", error.map, true);
+                // The pixels the error was measured over, for scripts/run_flip.py: EXR only.
+                const std::vector<std::uint8_t> mask =
+                    error.effect == "shadows" && !receivers.empty()
+                        ? receivers
+                        : replay::errorMask(frame, error.effect, roughnessThreshold);
+                writeImageFiles(dir, error.effect + "_mask", error.effect + "/mask", maskImage(frame, mask),
+                                false);
                 errors[error.effect].push_back(error.pixels > 0 ? error.mean
                                                                 : std::numeric_limits<double>::quiet_NaN());
                 noisyErrors[error.effect] = error.noisyMean;

@@ -9,6 +9,7 @@
 #include "cli_study.h"
 
 #include "cli_capture.h"
+#include "cli_images.h"
 
 #include "replay/replay_error.h"
 #include "replay/replay_frame.h"
@@ -154,16 +155,6 @@ struct Row {
     std::string reference2;
     std::optional<replay::ReferenceError> floor;
 };
-
-// The reference layer of `frame` for `effect` as an image, for writing it out.
-report::Image referenceImage(const capture::Frame& frame, const std::string& effect) {
-    const EffectDescriptor* descriptor = findEffect(effect);
-    const std::string name = "reference." + (descriptor ? std::string(descriptor->reference) : effect);
-    const capture::Layer* layer = capture::findLayer(frame, name);
-    if (!layer) throw std::runtime_error("study: the second reference has no " + name + " layer");
-    const auto channels = static_cast<std::uint32_t>(std::min<std::size_t>(layer->channels.size(), 3));
-    return {frame.width, frame.height, channels, replay::layerChannels(frame, name, channels)};
-}
 
 // Runs every frame with readback and measures the last one against its reference.
 replay::ReferenceError lastFrameError(const gpu::Context& context, const SimulatedScene& scene,
