@@ -10,6 +10,7 @@ bool GLINT_RD_TileListed(uint2 tile) { return g_glint_check[tile.y].z > 0.0; }
 float4 GLINT_RD_LoadPrefiltered(int2 pixel) { return g_glint_check[pixel.x + 1]; }
 float4 GLINT_RD_LoadReprojected(int2 pixel) { return g_glint_check[pixel.y + 1]; }
 float GLINT_RD_LoadLength(int2 pixel) { return g_glint_check[pixel.x + 2].x; }
+void GLINT_RD_StoreLength(int2 pixel, float value) { g_glint_check[pixel.x + 2].x = value; }
 float4 GLINT_RD_LoadNoisy(int2 pixel) { return g_glint_check[pixel.x + 3]; }
 void GLINT_RD_StoreOutput(int2 pixel, float4 value) { g_glint_check[pixel.x] = value; }
 void GLINT_RD_StoreRadianceHistory(int2 pixel, float4 value) { g_glint_check[pixel.y] = value; }

@@ -6,7 +6,12 @@
 
 GLINT_BINDING(7, 0) Texture2D<float4> g_glint_prefiltered;
 GLINT_BINDING(8, 0) Texture2D<float4> g_glint_reprojected;
-GLINT_BINDING(9, 0) Texture2D<float> g_glint_length;
+// Read, and written back after the anti-lag.
+#if GLINT_RD_HALF_STORAGE
+GLINT_BINDING(9, 0) GLINT_IMAGE_FORMAT(r16f) RWTexture2D<float> g_glint_length;
+#else
+GLINT_BINDING(9, 0) GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float> g_glint_length;
+#endif
 #if GLINT_RD_HALF_STORAGE
 GLINT_BINDING(10, 0) GLINT_IMAGE_FORMAT(rgba16f) RWTexture2D<float4> g_glint_output;
 #else
@@ -25,7 +30,8 @@ GLINT_BINDING(12, 0) GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float> g_glint_varianc
 
 float4 GLINT_RD_LoadPrefiltered(int2 pixel) { return g_glint_prefiltered.Load(int3(pixel, 0)); }
 float4 GLINT_RD_LoadReprojected(int2 pixel) { return g_glint_reprojected.Load(int3(pixel, 0)); }
-float GLINT_RD_LoadLength(int2 pixel) { return g_glint_length.Load(int3(pixel, 0)); }
+float GLINT_RD_LoadLength(int2 pixel) { return g_glint_length[pixel]; }
+void GLINT_RD_StoreLength(int2 pixel, float value) { g_glint_length[pixel] = value; }
 float4 GLINT_RD_LoadNoisy(int2 pixel) { return g_glint_output[pixel]; }
 void GLINT_RD_StoreOutput(int2 pixel, float4 value) { g_glint_output[pixel] = value; }
 void GLINT_RD_StoreRadianceHistory(int2 pixel, float4 value) { g_glint_radiance_history[pixel] = value; }

@@ -139,12 +139,12 @@ float GLINT_RD_GaussianWeight(int i)
 // reads each: sums and squares) a pixel. About 30 taps of arithmetic a pixel instead of 81.
 // Row r of the span, tile column x: slot r * 8 + x.
 groupshared float4 g_glint_rd_row_sums[GLINT_RD_SPAN * GLINT_RD_TILE];    // (sum w rgb, sum w)
-groupshared float4 g_glint_rd_row_squares[GLINT_RD_SPAN * GLINT_RD_TILE]; // (sum w rgb^2, unused)
+groupshared float4 g_glint_rd_row_squares[GLINT_RD_SPAN * GLINT_RD_TILE]; // (sum w rgb^2, sum w extra)
 
 struct GLINT_RD_RowPair
 {
     float4 sums[2];    // (sum w rgb, sum w) of the two columns
-    float3 squares[2]; // sum w rgb^2
+    float4 squares[2]; // (sum w rgb^2, sum w extra)
 };
 
 // The span row and first tile column of the thread's row pair (localIndex: 0..63).
@@ -159,12 +159,13 @@ uint GLINT_RD_RowPairColumn(uint localIndex)
 }
 
 // Adds span texel `row, column + i` (i = 0..9, a constant: call it from an unrolled loop) to
-// the pair: rgb (0 where not glossy, so that only the weight needs the mask) and the glossy
-// mask, 0 or 1.
-void GLINT_RD_AccumulateRowPair(inout GLINT_RD_RowPair pair, int i, float3 rgb, float glossy)
+// the pair: rgb (0 where not glossy, so that only the weight needs the mask), the glossy mask,
+// 0 or 1, and one more value summed with the same weights (0 where not glossy; the resolve's
+// anti-lag carries its history-minus-sample difference there, reproject passes 0).
+void GLINT_RD_AccumulateRowPair(inout GLINT_RD_RowPair pair, int i, float3 rgb, float glossy, float extra)
 {
     float4 value = float4(rgb, glossy);
-    float3 square = rgb * rgb;
+    float4 square = float4(rgb * rgb, extra);
     if (i < 2 * GLINT_RD_APRON + 1)
     {
         float w = GLINT_RD_GaussianWeight(i - GLINT_RD_APRON);
@@ -179,10 +180,10 @@ void GLINT_RD_AccumulateRowPair(inout GLINT_RD_RowPair pair, int i, float3 rgb, 
     }
 }
 
-void GLINT_RD_StoreRowStatistics(uint row, uint column, float4 sums, float3 squares)
+void GLINT_RD_StoreRowStatistics(uint row, uint column, float4 sums, float4 squares)
 {
     g_glint_rd_row_sums[row * GLINT_RD_TILE + column] = sums;
-    g_glint_rd_row_squares[row * GLINT_RD_TILE + column] = float4(squares, 0.0);
+    g_glint_rd_row_squares[row * GLINT_RD_TILE + column] = squares;
 }
 
 void GLINT_RD_StoreRowPair(uint localIndex, GLINT_RD_RowPair pair)
@@ -194,21 +195,23 @@ void GLINT_RD_StoreRowPair(uint localIndex, GLINT_RD_RowPair pair)
 }
 
 // The 9x9 sums of tile pixel `local` from the row sums (after a barrier that follows their
-// stores): rgb sum, rgb squares and weight.
-void GLINT_RD_ColumnStatistics(uint2 local, out float3 sum, out float3 sumSquares, out float weightSum)
+// stores): rgb sum, rgb squares, weight and the extra value's weighted sum.
+void GLINT_RD_ColumnStatistics(uint2 local, out float3 sum, out float3 sumSquares, out float weightSum,
+                               out float extraSum)
 {
     float4 sums = float4(0.0, 0.0, 0.0, 0.0);
-    float3 squares = float3(0.0, 0.0, 0.0);
+    float4 squares = float4(0.0, 0.0, 0.0, 0.0);
     [unroll] for (int y = -GLINT_RD_APRON; y <= GLINT_RD_APRON; ++y)
     {
         uint slot = (local.y + uint(GLINT_RD_APRON + y)) * GLINT_RD_TILE + local.x;
         float w = GLINT_RD_GaussianWeight(y);
         sums += w * g_glint_rd_row_sums[slot];
-        squares += w * g_glint_rd_row_squares[slot].rgb;
+        squares += w * g_glint_rd_row_squares[slot];
     }
     sum = sums.rgb;
-    sumSquares = squares;
+    sumSquares = squares.rgb;
     weightSum = sums.a;
+    extraSum = squares.a;
 }
 #endif
 

@@ -26,6 +26,22 @@
 
 #define GLINT_RD_FLAG_REVERSED_DEPTH 1u
 #define GLINT_RD_FLAG_RESET 2u // camera cut, resize or first frame: every history is ignored
+#define GLINT_RD_FLAG_ANTI_LAG 4u // the resolve shortens histories this frame's samples contradict
+
+// The resolve's anti-lag (docs/reflections_denoiser.md, "Resolve"): over the 9x9 Gaussian
+// neighbourhood, the mean luminance difference between the reprojected histories and this
+// frame's prefiltered samples is compared with what noise explains,
+//   tolerance = NOISE * luma(sigma) + RELATIVE * luma(mean) + FLOOR,
+// sigma and mean the neighbourhood's statistics of the prefiltered radiance. NOISE stands for
+// k / sqrt(N): k = 3 standard deviations of a mean of about N = 9 independent samples, which is
+// what the correlated neighbourhood holds (one ray per 2x2 quad, spread further by the
+// prefilter's 3-pixel reach); sigma also counts the reflection's own detail, so the test is
+// conservative at edges. RELATIVE and FLOOR keep tiny differences of bright and of black
+// neighbourhoods below it. Beyond the tolerance, by the factor e, the history length n
+// becomes max(1, n / e^2).
+#define GLINT_RD_ANTI_LAG_NOISE 1.0
+#define GLINT_RD_ANTI_LAG_RELATIVE 0.1
+#define GLINT_RD_ANTI_LAG_FLOOR 0.001
 
 #ifdef __cplusplus
 namespace glint::shaders {

@@ -260,7 +260,7 @@ void GLINT_RD_Reproject(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint
         [unroll] for (int i = 0; i < 2 * GLINT_RD_APRON + 2; ++i)
         {
             float4 q = GLINT_RD_UnpackSpanTexel(g_glint_rd_noisy[first + uint(i)]);
-            GLINT_RD_AccumulateRowPair(pair, i, q.rgb, q.a < 0.0 ? 0.0 : 1.0);
+            GLINT_RD_AccumulateRowPair(pair, i, q.rgb, q.a < 0.0 ? 0.0 : 1.0, 0.0);
         }
         GLINT_RD_StoreRowPair(localIndex, pair);
     }
@@ -268,8 +268,9 @@ void GLINT_RD_Reproject(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint
     float3 sum = float3(0.0, 0.0, 0.0);
     float3 sumSquares = float3(0.0, 0.0, 0.0);
     float weightSum = 0.0;
+    float unusedExtra = 0.0;
     if (surface.glossy)
-        GLINT_RD_ColumnStatistics(local, sum, sumSquares, weightSum);
+        GLINT_RD_ColumnStatistics(local, sum, sumSquares, weightSum, unusedExtra);
     float3 mean = weightSum > 0.0 ? sum / weightSum : current;
     float3 variance3 = weightSum > 0.0 ? abs(sumSquares / weightSum - mean * mean) : float3(0.0, 0.0, 0.0);
     float3 sigma = sqrt(variance3);

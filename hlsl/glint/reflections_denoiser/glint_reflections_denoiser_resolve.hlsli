@@ -1,6 +1,8 @@
 // glint reflections denoiser, pass 3: temporal resolve (docs/reflections_denoiser.md).
-// Neighbourhood statistics of the prefiltered radiance, history clipping toward them, and a
-// blend by history length (mirrors: their noise-free sample, no blend). The result is written
+// Neighbourhood statistics of the prefiltered radiance, an anti-lag test that shortens the
+// history length where the neighbourhood's histories disagree with its samples by more than
+// noise explains, history clipping toward the statistics, and a blend by history length
+// (mirrors: their noise-free sample, no blend). The result is written
 // over SSSR's radiance in place (so that the effect's output is defined in every tile: unlisted
 // tiles keep classification's values) and into this frame's radiance history; the variance
 // feeds next frame and SSSR's TVGT.
@@ -12,6 +14,9 @@
 //                                                   defined in tiles listed this frame)
 //   float4 GLINT_RD_LoadReprojected(int2 pixel);    history rgb, a = 1 when valid
 //   float  GLINT_RD_LoadLength(int2 pixel);         this frame's history length (reproject)
+//   void   GLINT_RD_StoreLength(int2 pixel, float length);
+//                                                   the same image, glossy pixels only: the length
+//                                                   after the anti-lag (next frame's reproject reads it)
 //   float4 GLINT_RD_LoadNoisy(int2 pixel);          SSSR radiance (its alpha, the hit distance, is kept)
 //   void   GLINT_RD_StoreOutput(int2 pixel, float4 radianceAndHitDistance);
 //   void   GLINT_RD_StoreRadianceHistory(int2 pixel, float4 radianceAndVariance);
@@ -33,6 +38,7 @@
 float4 GLINT_RD_LoadPrefiltered(int2 pixel);
 float4 GLINT_RD_LoadReprojected(int2 pixel);
 float GLINT_RD_LoadLength(int2 pixel);
+void GLINT_RD_StoreLength(int2 pixel, float length);
 float4 GLINT_RD_LoadNoisy(int2 pixel);
 void GLINT_RD_StoreOutput(int2 pixel, float4 radianceAndHitDistance);
 void GLINT_RD_StoreRadianceHistory(int2 pixel, float4 radianceAndVariance);
@@ -41,6 +47,10 @@ void GLINT_RD_StoreVariance(int2 pixel, float variance);
 // Prefiltered rgb of the span; a = 1 for glossy pixels, 0 otherwise (GLINT_RD_SpanTexel). The
 // pixel's own value is its thread's 32-bit load in either span format.
 groupshared GLINT_RD_SpanTexel g_glint_rd_resolve_radiance[GLINT_RD_SPAN * GLINT_RD_SPAN];
+// The anti-lag's difference of the span: luma(reprojected history) - luma(prefiltered sample) for
+// glossy pixels with a valid history, 0 otherwise (and everywhere with the anti-lag off). 32-bit
+// in both permutations.
+groupshared float g_glint_rd_resolve_lag[GLINT_RD_SPAN * GLINT_RD_SPAN];
 
 void GLINT_RD_Resolve(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint2 local)
 {
@@ -61,6 +71,7 @@ void GLINT_RD_Resolve(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint2 
     float storedLength = GLINT_RD_LoadLength(ipixel);
     float hitDistance = GLINT_RD_LoadNoisy(ipixel).a;
     float alpha = GLINT_FiniteOr(GLINT_RD_LoadRoughness(ipixel), 1.0);
+    bool antiLag = (c.flags & GLINT_RD_FLAG_ANTI_LAG) != 0;
     // Unrolled (exactly 4 span slots a thread) so that the loads of all four are in flight
     // together instead of one slot's round trip after the other.
     //
@@ -68,28 +79,36 @@ void GLINT_RD_Resolve(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint2 
     // wave), instead of the surface's depth, normal and roughness as well: the prefilter (or the
     // reconstruction) marks pixels that are not glossy with GLINT_RD_NOT_GLOSSY in alpha, and
     // glossy pixels hold their variance there, never negative. Only listed tiles hold this
-    // frame's values; in the others no pixel is glossy (GLINT_RD_PixelListed).
+    // frame's values; in the others no pixel is glossy (GLINT_RD_PixelListed). With the anti-lag,
+    // a slot also fetches its reprojected history (reproject wrote it in every listed tile).
     [unroll] for (uint k = 0; k < GLINT_RD_SPAN * GLINT_RD_SPAN / (GLINT_RD_TILE * GLINT_RD_TILE); ++k)
     {
         uint i = localIndex + k * GLINT_RD_TILE * GLINT_RD_TILE;
         int2 spanPixel = GLINT_RD_SpanPixel(c, tileOrigin, i);
         bool listed = GLINT_RD_PixelListed(spanPixel);
         float4 spanPrefiltered = GLINT_RD_LoadPrefiltered(spanPixel);
+        float4 spanHistory = float4(0.0, 0.0, 0.0, 0.0);
+        if (antiLag)
+            spanHistory = GLINT_RD_LoadReprojected(spanPixel);
         bool glossy = listed && spanPrefiltered.a >= 0.0;
-        g_glint_rd_resolve_radiance[i] = GLINT_RD_PackSpanTexel(
-            glossy ? float4(GLINT_RD_SanitizeRadiance(spanPrefiltered.rgb), 1.0) : float4(0.0, 0.0, 0.0, 0.0));
+        float3 spanSample = GLINT_RD_SanitizeRadiance(spanPrefiltered.rgb);
+        g_glint_rd_resolve_radiance[i] =
+            GLINT_RD_PackSpanTexel(glossy ? float4(spanSample, 1.0) : float4(0.0, 0.0, 0.0, 0.0));
+        float lag = GLINT_RD_Luma(GLINT_RD_SanitizeRadiance(spanHistory.rgb)) - GLINT_RD_Luma(spanSample);
+        g_glint_rd_resolve_lag[i] = glossy && spanHistory.a > 0.5 ? lag : 0.0;
     }
     GroupMemoryBarrierWithGroupSync();
 
     // 9x9 Gaussian statistics, separably (GLINT_RD_AccumulateRowPair), the column sums after
-    // the barrier. A neighbour that is not glossy holds (0, 0, 0, 0): its a is the mask.
+    // the barrier. A neighbour that is not glossy holds (0, 0, 0, 0): its a is the mask. The
+    // anti-lag's differences are summed with the same weights.
     {
         GLINT_RD_RowPair pair = (GLINT_RD_RowPair)0;
         uint first = GLINT_RD_RowPairRow(localIndex) * GLINT_RD_SPAN + GLINT_RD_RowPairColumn(localIndex);
         [unroll] for (int i = 0; i < 2 * GLINT_RD_APRON + 2; ++i)
         {
             float4 q = GLINT_RD_UnpackSpanTexel(g_glint_rd_resolve_radiance[first + uint(i)]);
-            GLINT_RD_AccumulateRowPair(pair, i, q.rgb, q.a);
+            GLINT_RD_AccumulateRowPair(pair, i, q.rgb, q.a, g_glint_rd_resolve_lag[first + uint(i)]);
         }
         GLINT_RD_StoreRowPair(localIndex, pair);
     }
@@ -107,14 +126,28 @@ void GLINT_RD_Resolve(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint2 
     }
     float3 average = GLINT_RD_AverageAt(uint2(ipixel), tile);
     float3 sum, sumSquares;
-    float weightSum;
-    GLINT_RD_ColumnStatistics(local, sum, sumSquares, weightSum);
+    float weightSum, lagSum;
+    GLINT_RD_ColumnStatistics(local, sum, sumSquares, weightSum, lagSum);
     float3 mean = sum / weightSum;
     float3 sigma = sqrt(abs(sumSquares / weightSum - mean * mean));
     float3 current = GLINT_RD_SanitizeRadiance(prefiltered.rgb);
     float variance = clamp(GLINT_FiniteOr(prefiltered.a, 1.0), 0.0, 65504.0);
     bool valid = reprojected.a > 0.5;
+    bool mirror = alpha < c.mirrorThreshold;
     float historyLength = max(GLINT_FiniteOr(storedLength, 1.0), 1.0);
+
+    // Anti-lag: the neighbourhood's histories against its samples, both over the same glossy
+    // pixels with the same weights (those without a history add 0), so that the reflection's
+    // own detail cancels and only change and noise remain. A mean difference beyond what noise
+    // explains (GLINT_RD_ANTI_LAG_*) by the factor e shortens the history to n / e^2 frames, at
+    // least 1; it is stored for next frame. Mirrors keep theirs (their output is their sample).
+    if (antiLag && valid && !mirror)
+    {
+        float tolerance = GLINT_RD_ANTI_LAG_NOISE * GLINT_RD_Luma(sigma) +
+                          GLINT_RD_ANTI_LAG_RELATIVE * GLINT_RD_Luma(mean) + GLINT_RD_ANTI_LAG_FLOOR;
+        float excess = abs(lagSum / weightSum) / tolerance;
+        historyLength = max(historyLength / max(excess * excess, 1.0), 1.0);
+    }
 
     // The clip box: the neighbourhood's spread plus its distance from the tile average, scaled.
     float3 extent = (sigma + abs(mean - average)) * c.historyClipScale * 1.4;
@@ -128,7 +161,6 @@ void GLINT_RD_Resolve(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint2 
     // it with a history removes no noise and can only lag a moving reflection; the output is
     // the sample. Reproject still follows the reflected point for the history's length and
     // temporal variance (a history that left the band around the sample restarts them).
-    bool mirror = alpha < c.mirrorThreshold;
     float historyWeight = valid && !mirror ? 1.0 - 1.0 / historyLength : 0.0;
     float3 result = GLINT_RD_SanitizeRadiance(lerp(current, history, historyWeight));
     float lumaResult = max(GLINT_RD_Luma(result), 0.001);
@@ -140,6 +172,7 @@ void GLINT_RD_Resolve(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint2 
     float storedVariance = clamp(GLINT_FiniteOr(resultVariance, 1.0), 0.0, 65504.0);
     GLINT_RD_StoreRadianceHistory(ipixel, float4(result, storedVariance));
     GLINT_RD_StoreVariance(ipixel, storedVariance);
+    GLINT_RD_StoreLength(ipixel, historyLength);
 }
 
 #endif // GLINT_REFLECTIONS_DENOISER_RESOLVE_HLSLI

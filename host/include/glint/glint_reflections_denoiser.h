@@ -47,6 +47,9 @@ struct ReflectionsDenoiserDesc {
     float mirrorThreshold = 1e-4f;   // alpha: no spatial filter below
     float historyClipScale = 0.7f;   // scale of the resolve's clip box (FidelityFX's "temporal stability")
     std::uint32_t maxHistoryLength = 32;
+    // The resolve shortens a history that this frame's samples around the pixel contradict by
+    // more than their noise explains (docs/reflections_denoiser.md, "Resolve"); mirrors excepted.
+    bool antiLag = true;
     bool halfPrecisionStorage = true; // 16-bit radiance, variance and length; must match SSSR's
     bool resetHistory = false;        // first frame, camera cut or resize: every history is ignored
     std::uint32_t frameIndex = 0;     // histories ping-pong on its parity
@@ -66,7 +69,8 @@ struct ReflectionsDenoiserDesc {
 // (R32F), "rd_guides0/1" (RGBA32F: octahedral normal, view depth, alpha), "rd_average"
 // (RGBA32F, one texel per tile) and
 // "rd_tile_mask0/1" (4 bytes per tile). Parity p = frameIndex & 1 is written, 1 - p read.
-// Every owned resource must start zeroed (a zero mask means "no history").
+// Every owned resource must start zeroed (a zero mask means "no history"). Reproject writes
+// "rd_length", and the resolve writes it back after its anti-lag.
 // RatioEstimator: the passes are reproject, reconstruct, resolve and cleanup; the same owned
 // resources ("rd_prefiltered" holds the reconstruction) plus the input "sssr_rays" (SSSR's
 // storeRays), and the camera's viewFromWorld rotation.

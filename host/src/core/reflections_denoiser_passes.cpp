@@ -90,7 +90,8 @@ Result planReflectionsDenoiser(const ReflectionsDenoiserDesc& desc, EffectPlan& 
     c.viewDepth = core::viewDepthCoefficients(reversed, desc.nearPlane, desc.farPlane);
     c.normalUnpack = {desc.normalUnpackMul, desc.normalUnpackAdd};
     c.ndcYSign = desc.vulkanNdc ? 1.0f : -1.0f;
-    c.flags = (reversed ? GLINT_RD_FLAG_REVERSED_DEPTH : 0u) | (desc.resetHistory ? GLINT_RD_FLAG_RESET : 0u);
+    c.flags = (reversed ? GLINT_RD_FLAG_REVERSED_DEPTH : 0u) |
+              (desc.resetHistory ? GLINT_RD_FLAG_RESET : 0u) | (desc.antiLag ? GLINT_RD_FLAG_ANTI_LAG : 0u);
     c.motionScale = {desc.motionScaleX, desc.motionScaleY};
     const std::uint32_t tilesX = core::divideRoundUp(desc.size.width, GLINT_RD_TILE);
     const std::uint32_t tilesY = core::divideRoundUp(desc.size.height, GLINT_RD_TILE);
@@ -149,7 +150,8 @@ Result planReflectionsDenoiser(const ReflectionsDenoiserDesc& desc, EffectPlan& 
                                              {"g_glint_tile_mask", "rd_tile_mask" + now, Access::Read},
                                              {"g_glint_prefiltered", "rd_prefiltered", Access::Read},
                                              {"g_glint_reprojected", "rd_reprojected", Access::Read},
-                                             {"g_glint_length", "rd_length" + now, Access::Read},
+                                             // Read, and written back shortened by the anti-lag.
+                                             {"g_glint_length", "rd_length" + now, Access::ReadWrite},
                                              {"g_glint_output", "sssr_radiance", Access::ReadWrite},
                                              {"g_glint_radiance_history", "rd_radiance" + now, Access::Write},
                                              {"g_glint_variance", "rd_variance" + now, Access::ReadWrite}});

@@ -69,6 +69,9 @@ std::vector<SettingDesc> reflectionsSettings() {
                      "scale of the resolve's history clip box", "ReflectionsDenoiserDesc::historyClipScale"),
         uintSetting("denoiser.maxHistoryLength", d.maxHistoryLength, 8, 1024, "frames a history may average",
                     "ReflectionsDenoiserDesc::maxHistoryLength"),
+        boolSetting("denoiser.antiLag", d.antiLag,
+                    "shortens histories the neighbourhood's samples contradict beyond their noise",
+                    "ReflectionsDenoiserDesc::antiLag"),
         core::choiceSetting("denoiser.spatialPath", 0, {"prefilter", "ratio"},
                             "spatial filter: edge-aware prefilter or ratio-estimator reuse of rays",
                             "ReflectionsDenoiserDesc::spatialPath"),
@@ -147,6 +150,7 @@ ReflectionsDenoiserDesc reflectionsDenoiserDesc(const FrameInfo& frame, const Se
     desc.halfPrecisionStorage = sssr.halfPrecisionStorage;
     desc.historyClipScale = settings.real("denoiser.historyClipScale");
     desc.maxHistoryLength = settings.count("denoiser.maxHistoryLength");
+    desc.antiLag = settings.flag("denoiser.antiLag");
     desc.spatialPath = static_cast<SpatialPath>(settings.choice("denoiser.spatialPath"));
     desc.reconstructionRadius = settings.real("denoiser.reconstructionRadius");
     desc.cleanupSigma = settings.real("denoiser.cleanupSigma");
