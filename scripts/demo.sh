@@ -5,8 +5,9 @@
 #   - simulates every bundled scene (harness/scenes) into a capture sequence under
 #     out/demo/captures at GLINT_DEMO_SIZE (default 160x90) for GLINT_DEMO_FRAMES frames
 #     (default 16, so the temporal denoisers converge), the reference at GLINT_DEMO_SPP samples
-#     per pixel (default 2: lavapipe's reference tracing bounds the demo's time on a machine
-#     without a GPU; docs/performance.md, "The demo's simulations on a 2-core machine"; set
+#     per pixel (default 8: lavapipe's reference tracing bounds the demo's time on a machine
+#     without a GPU, and at 2 spp the references' own noise hid differences the report shows;
+#     docs/performance.md, "The demo's simulations on a 2-core machine"; set
 #     GLINT_DEMO_SIZE=480x270 GLINT_DEMO_SPP=64 on a GPU for converged references), and again with an independent seed (2) for the
 #     reference noise floor; a capture is simulated again only when its scene file, size, frame
 #     count or sample count changed (demo_key in its folder),
@@ -31,7 +32,7 @@ glint="$bin/cli/glint"
 out=${GLINT_OUT:-out}
 size=${GLINT_DEMO_SIZE:-160x90}
 frames=${GLINT_DEMO_FRAMES:-16}
-spp=${GLINT_DEMO_SPP:-2}
+spp=${GLINT_DEMO_SPP:-8}
 mkdir -p "$out/demo/captures" "$out/demo/runs"
 scenes=()
 for scene in harness/scenes/*.toml; do
