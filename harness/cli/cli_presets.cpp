@@ -82,25 +82,6 @@ PresetEntry parseEntry(const toml::node& node, const EffectDescriptor& effect, c
     return entry;
 }
 
-std::string quoted(const std::string& text) {
-    std::string out = "\"";
-    for (char c : text) {
-        if (c == '"' || c == '\\') out += '\\';
-        out += c;
-    }
-    return out + "\"";
-}
-
-std::string number(double value) {
-    std::ostringstream text;
-    text.precision(6);
-    text << value;
-    std::string out = text.str();
-    // TOML tells floats from integers by the point; time_us and error are floats.
-    if (out.find_first_of(".eE") == std::string::npos) out += ".0";
-    return out;
-}
-
 } // namespace
 
 PresetTable parsePresets(std::string_view text, const std::string& source) {
@@ -162,26 +143,26 @@ std::string formatPresets(const PresetTable& table, const std::string& header) {
     std::ostringstream out;
     std::istringstream lines(header);
     for (std::string line; std::getline(lines, line);) out << (line.empty() ? "#" : "# " + line) << "\n";
-    out << "presets = [";
-    for (std::size_t i = 0; i < table.names.size(); ++i) out << (i ? ", " : "") << quoted(table.names[i]);
-    out << "]\n";
+    toml::table root;
+    toml::array names;
+    for (const std::string& name : table.names) names.push_back(name);
+    root.insert("presets", std::move(names));
     for (const std::string& name : table.names) {
-        const auto found = table.presets.find(name);
-        if (found == table.presets.end() || found->second.empty()) {
-            out << "\n[" << name << "]\n";
-            continue;
-        }
-        for (const auto& [effect, entry] : found->second) {
-            out << "\n[" << name << "." << effect << "]\n";
-            if (!entry.point.empty()) out << "point = " << quoted(entry.point) << "\n";
-            out << "settings = [";
-            for (std::size_t i = 0; i < entry.settings.size(); ++i)
-                out << (i ? ", " : "") << quoted(entry.settings[i]);
-            out << "]\n";
-            if (entry.timeUs) out << "time_us = " << number(*entry.timeUs) << "\n";
-            if (entry.error) out << "error = " << number(*entry.error) << "\n";
-        }
+        toml::table effects; // a preset may list no effect
+        if (const auto found = table.presets.find(name); found != table.presets.end())
+            for (const auto& [effect, entry] : found->second) {
+                toml::table bundle;
+                if (!entry.point.empty()) bundle.insert("point", entry.point);
+                toml::array settings;
+                for (const std::string& setting : entry.settings) settings.push_back(setting);
+                bundle.insert("settings", std::move(settings));
+                if (entry.timeUs) bundle.insert("time_us", *entry.timeUs);
+                if (entry.error) bundle.insert("error", *entry.error);
+                effects.insert(effect, std::move(bundle));
+            }
+        root.insert(name, std::move(effects));
     }
+    out << root << "\n";
     return out.str();
 }
 
