@@ -620,8 +620,8 @@ if __name__ == "__main__":
                  "(folders written by glint study --out DIR)")
     # --flip-only: FLIP, Pareto and tables without matplotlib (the GPU machine); study.json keeps
     # the FLIP values, so a later run elsewhere draws the plots without the images.
-    # --hdr-flip: HDR-FLIP too, which evaluates FLIP at several exposures per image: the 48 reflection
-    # images of a 1080p study did not finish inside 10 minutes on the GPU machine's CPU.
+    # --hdr-flip: HDR-FLIP too; it evaluates FLIP at several exposures over the whole image, so it
+    # is opt-in (docs/accuracy-vs-time.md says where it did not finish).
     # --times-from TIMED_DIR: plot each point at the time of the same point in TIMED_DIR's study
     # (borrow_times), so that anchors timed there are drawn beside points scored here.
     main(arguments, plots="--flip-only" not in sys.argv, hdr="--hdr-flip" in sys.argv, times_from=times_from)
