@@ -69,4 +69,53 @@ capture::Environment bakeEnvironment(const Scene& scene) {
     return env;
 }
 
+std::vector<shaders::SceneEnvironmentSample> environmentSamplingTable(const capture::Environment& env) {
+    const std::size_t width = env.width, height = env.height, count = width * height;
+    if (count == 0 || env.rgb.size() < count * 3) return {};
+    std::vector<double> luminance(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        const float* c = &env.rgb[i * 3];
+        const double y = 0.2126 * double{c[0]} + 0.7152 * double{c[1]} + 0.0722 * double{c[2]};
+        luminance[i] = std::isfinite(y) ? std::max(y, 0.0) : 0.0;
+    }
+    std::vector<double> weight(count);
+    double total = 0.0;
+    for (std::size_t y = 0; y < height; ++y) {
+        const double latitude =
+            std::numbers::pi * (0.5 - (static_cast<double>(y) + 0.5) / static_cast<double>(height));
+        for (std::size_t x = 0; x < width; ++x) {
+            const double l = luminance[y * width + x];
+            weight[y * width + x] = l * l * std::cos(latitude);
+            total += weight[y * width + x];
+        }
+    }
+    if (!(total > 0.0) || !std::isfinite(total)) return {};
+
+    // Vose's construction: slots scaled to a mean of 1; each underfull slot is topped up by one
+    // overfull texel, which moves to the underfull list once it drops below 1.
+    std::vector<shaders::SceneEnvironmentSample> table(count);
+    std::vector<double> scaled(count);
+    std::vector<std::uint32_t> small, large;
+    for (std::size_t i = 0; i < count; ++i) {
+        table[i] = {1.0f, static_cast<std::uint32_t>(i), static_cast<float>(weight[i] / total), 0u};
+        scaled[i] = weight[i] / total * static_cast<double>(count);
+        (scaled[i] < 1.0 ? small : large).push_back(static_cast<std::uint32_t>(i));
+    }
+    while (!small.empty() && !large.empty()) {
+        const std::uint32_t s = small.back(), l = large.back();
+        small.pop_back();
+        table[s].keep = static_cast<float>(scaled[s]);
+        table[s].alias = l;
+        scaled[l] -= 1.0 - scaled[s];
+        if (scaled[l] < 1.0) {
+            large.pop_back();
+            small.push_back(l);
+        }
+    }
+    // Left over from rounding: slots that keep their own texel always.
+    for (std::uint32_t i : small) table[i].keep = 1.0f;
+    for (std::uint32_t i : large) table[i].keep = 1.0f;
+    return table;
+}
+
 } // namespace glint::scene

@@ -530,10 +530,12 @@ Scene parseScene(const std::string& text, const std::filesystem::path& file) {
                "effect 'shadows' needs a light: " + std::to_string(scene.lights.size()) +
                    " light(s) declared");
     if (const toml::table* t = r.table(root, "", "reference")) {
-        r.onlyKeys(*t, "reference", {"reflections", "shadows", "spp"});
+        r.onlyKeys(*t, "reference", {"reflections", "shadows", "spp", "environment_sampling"});
         scene.reference.reflections = r.flag(*t, "reference", "reflections", false);
         scene.reference.shadows = r.flag(*t, "reference", "shadows", false);
         scene.reference.samplesPerPixel = r.count(*t, "reference", "spp", 64, 1, 1 << 20);
+        scene.reference.environmentSampling =
+            r.flag(*t, "reference", "environment_sampling", scene.reference.environmentSampling);
         if (scene.reference.reflections && !needsReflections(scene))
             r.fail(t->get("reflections"), "reference.reflections", "needs effect 'reflections' or 'hybrid'");
         if (scene.reference.shadows && !needsShadows(scene))

@@ -121,6 +121,7 @@ EffectPlan planFrame(const Scene& scene, const GLINT_SceneConstants& base,
             GLINT_SceneConstants c = base;
             c.passSalt = 0x52454631u;
             uses = shading;
+            uses.push_back(read("g_scene_environment_sampling"));
             uses.push_back(write("g_reflection", "reference.reflection"));
             addChunkedPasses(plan, "reference.reflection", "scene_reflection", uses, c,
                              scene.reference.samplesPerPixel, kReflectionChunk, w, h);
@@ -286,7 +287,13 @@ Simulation simulate(const gpu::Context& context, const Scene& scene) {
                                         VK_FORMAT_R32G32B32A32_SFLOAT);
     gpu::uploadImage(context, res.environment, environment.rgb, 3);
     const vk::Buffer materials = uploadStorage(context, packMaterials(scene));
-    res.buffers = {materials};
+    std::vector<shaders::SceneEnvironmentSample> sampling;
+    if (reflections && scene.reference.reflections && scene.reference.environmentSampling)
+        sampling = environmentSamplingTable(environment);
+    const bool environmentSampling = !sampling.empty();
+    if (!environmentSampling) sampling.resize(1); // never read, but a binding needs a buffer
+    const vk::Buffer environmentTexels = uploadStorage(context, sampling);
+    res.buffers = {materials, environmentTexels};
 
     std::vector<OutputImage> outputs;
     std::vector<std::size_t> passSlot; // plan pass -> sim.passes entry (chunks share one)
@@ -315,6 +322,7 @@ Simulation simulate(const gpu::Context& context, const Scene& scene) {
         c.backgroundDepth = scene.camera.depth == capture::DepthConvention::Standard ? 1.0f : 0.0f;
         c.ndcYDown = scene.camera.ndcYDown ? 1u : 0u;
         c.environmentIntensity = 1.0f;
+        c.environmentSampling = environmentSampling ? 1u : 0u;
         const EffectPlan plan = planFrame(scene, c, outputs);
         if (frame == 0) {
             res.owned = gpu::createPlanResources(context, plan);
@@ -348,6 +356,7 @@ Simulation simulate(const gpu::Context& context, const Scene& scene) {
         table.buffers["g_scene_objects"] = &objects;
         table.buffers["g_scene_materials"] = &materials;
         table.buffers["g_scene_lights"] = &lights;
+        table.buffers["g_scene_environment_sampling"] = &environmentTexels;
 
         const gpu::PlanTimings timings = gpu::executePlan(context, res.executor, plan, table, 1);
         for (std::size_t p = 0; p < passSlot.size(); ++p) {

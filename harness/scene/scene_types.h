@@ -113,6 +113,9 @@ struct ReferenceDesc {
     bool reflections = false;
     bool shadows = false;
     std::uint32_t samplesPerPixel = 64;
+    // Reflection references pair each GGX sample with a sample of the environment map's
+    // brightness, combined by multiple importance sampling (docs/scenes.md).
+    bool environmentSampling = true;
 };
 
 struct Scene {

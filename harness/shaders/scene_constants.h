@@ -79,6 +79,16 @@ struct SceneLight {
     float size;    // directional: angular radius in radians; sphere: radius
 };
 
+// One texel of the environment map's sampling table (alias method, Walker/Vose): slot i keeps
+// texel i when a uniform u < keep and takes texel `alias` otherwise. `probability` is texel i's
+// own probability (the table's probabilities sum to 1), which gives the density of a direction.
+struct SceneEnvironmentSample {
+    float keep;
+    uint alias;
+    float probability;
+    uint padding;
+};
+
 GLINT_CONSTANTS_BEGIN(GLINT_SceneConstants)
     GLINT_SCENE_MATRIX(viewProjection);     // world -> clip (unjittered), row-major
     GLINT_SCENE_MATRIX(invViewProjection);  // clip -> world, computed in double
@@ -100,7 +110,8 @@ GLINT_CONSTANTS_BEGIN(GLINT_SceneConstants)
     // samples [sampleStart, sampleStart + samples) of sampleTotal and accumulates into the image.
     uint sampleStart;
     uint sampleTotal;
-    uint2 padding;
+    uint environmentSampling; // 1: reflection references also sample the environment map (MIS)
+    uint padding;
 GLINT_CONSTANTS_END(GLINT_SceneConstants);
 
 #ifdef __cplusplus
@@ -109,6 +120,7 @@ static_assert(sizeof(ScenePrimitive) == 48);
 static_assert(sizeof(SceneMaterial) == 64);
 static_assert(sizeof(SceneObject) == 48);
 static_assert(sizeof(SceneLight) == 32);
+static_assert(sizeof(SceneEnvironmentSample) == 16);
 static_assert(offsetof(GLINT_SceneConstants, eye) == 192);
 static_assert(offsetof(GLINT_SceneConstants, size) == 208);
 static_assert(sizeof(GLINT_SceneConstants) == 272);

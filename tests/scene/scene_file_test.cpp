@@ -65,6 +65,7 @@ position = [1, 0, 0]
 [reference]
 shadows = true
 spp = 16
+environment_sampling = false
 )",
                                "good.toml");
     CHECK(s.width == 64);
@@ -85,6 +86,8 @@ spp = 16
     CHECK(needsShadows(s));
     CHECK(s.reference.shadows);
     CHECK(s.reference.samplesPerPixel == 16);
+    CHECK_FALSE(s.reference.environmentSampling);
+    CHECK(parseScene(kMinimal, "minimal.toml").reference.environmentSampling);
 }
 
 TEST_CASE("Malformed scene files name the file, line, key and problem", "[scene][file]") {

@@ -14,4 +14,5 @@ glint_add_test_suite(NAME scene LABELS gpu
     scene/gbuffer_test.cpp
     scene/effects_test.cpp
     scene/convergence_test.cpp
+    scene/environment_sampling_test.cpp
   LIBS glint_scene glint_gpu_test_support)
