@@ -57,7 +57,7 @@ progress() {
 simulate() {
   local scene=$1 seed=$2 dir=$3
   local key
-  key="$(sha1sum <"$scene" | cut -d' ' -f1) size=$size frames=$frames spp=${spp:-scene} seed=$seed"
+  key="$(sha1sum <"$scene" | cut -d' ' -f1) glint=$glint_id size=$size frames=$frames spp=${spp:-scene} seed=$seed"
   if [ -f "$dir/manifest.json" ] && [ "$(cat "$dir/demo_key" 2>/dev/null)" = "$key" ]; then
     progress "$(basename "$scene" .toml): capture with seed $seed is up to date"
     return
@@ -67,6 +67,8 @@ simulate() {
   "$glint" simulate "$scene" --out "$dir" --size "$size" --frame-count "$frames" --seed "$seed" ${spp:+--spp "$spp"}
   echo "$key" >"$dir/demo_key"
 }
+# A capture is reused only when the scene, the settings and the simulator that made it are the same.
+glint_id=$(sha1sum <"$glint" | cut -d' ' -f1)
 "$bin/capture/glint_make_sample" "$out"
 {
   echo "# glint demo report"

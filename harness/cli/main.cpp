@@ -253,6 +253,10 @@ int main(int argc, char** argv) {
                     "bench: --preset applies to sssr, captures and scene files, not to "
                     "the synthetic effect '" +
                     bench.effect + "'");
+            if (!bench.settings.empty() && bench.effect != "sssr")
+                throw std::invalid_argument("bench: --set applies to sssr, captures and scene files, not to "
+                                            "the synthetic effect '" +
+                                            bench.effect + "' (its options are bench's own flags)");
             if (!bench.geometry.empty())
                 throw std::invalid_argument("bench: --geometry is for captures and scene files, not the "
                                             "synthetic effect '" +

@@ -23,3 +23,6 @@ glint_cli_test(NAME "a preset file without a preset is a usage error" LABELS uni
 glint_cli_test(NAME "a preset on a synthetic bench that takes no settings is a usage error" LABELS unit EXIT 2
   STDERR_ONE_LINE "^glint: bench: --preset applies to sssr, captures and scene files, not to the synthetic effect 'depth_pyramid'$"
   COMMAND bench depth_pyramid --size 16x16 --runs 1 --preset low)
+glint_cli_test(NAME "a setting on a synthetic bench that takes no settings is a usage error" LABELS unit EXIT 2
+  STDERR_ONE_LINE "^glint: bench: --set applies to sssr, captures and scene files, not to the synthetic effect 'shadow_denoiser' \\(its options are bench's own flags\\)$"
+  COMMAND bench shadow_denoiser --size 16x16 --runs 1 --set denoise=true)
