@@ -140,18 +140,14 @@ TEST_CASE("static glossy room: the ratio path's error falls over frames, next to
                              << "\nagainst SSSR's converged mean,    prefilter: " << traceOf(noise[0])
                              << "\n                                  ratio:     " << traceOf(noise[1]));
     REQUIRE(rawError > 0.0);
-    // Measured on lavapipe (docs/reflections_denoiser.md): against the reference the ratio path
-    // goes 0.437 -> 0.373 (the default path 0.358 -> 0.318), against SSSR's converged mean
-    // 0.148 -> 0.080 (default 0.140 -> 0.089). What is left against the reference is SSSR's own
-    // bias: its 256-frame mean is 0.424 away. The ratio path ends below that mean, and closer to
-    // it than the default path does; the default path's pull toward the tile average happens to
-    // cancel part of SSSR's bias on this metric.
+    // The figures are in docs/reflections_denoiser.md ("Tests"); the warnings print them. What is
+    // left against the reference is SSSR's own bias (its 256-frame mean's distance from the
+    // reference): the ratio path must end below that mean.
     const std::vector<double>& ratioErrors = errors[1];
     const std::vector<double>& ratioNoise = noise[1];
     CHECK(ratioErrors.back() < ratioErrors.front());
     CHECK(ratioErrors.back() < 0.7 * rawError);
     CHECK(ratioErrors.back() < convergedError);
-    CHECK(ratioErrors.back() < 0.40);
     CHECK(ratioNoise.back() < 0.75 * ratioNoise.front());
     CHECK(ratioNoise.back() < 0.10);
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();

@@ -62,10 +62,9 @@ TEST_CASE("static glossy room: the denoised error falls over frames and ends far
     WARN("raw single frame " << rawError << ", plain average of " << kFrames << " frames " << averageError
                              << "; denoised per frame: " << trace);
     REQUIRE(rawError > 0.0);
-    // Measured on lavapipe, 2026-11-22: raw 0.572, plain 24-frame average 0.422, denoised
-    // 0.358 at frame 0 and 0.318 at frame 23 against the reference (see the warnings for
-    // SSSR's own converged mean). The error left against the reference is SSSR's bias
-    // (off-screen geometry, the box-filtered environment), which no denoiser can remove.
+    // The figures are in docs/reflections_denoiser.md ("Tests"); the warnings print them. The
+    // error left against the reference is SSSR's bias (off-screen geometry, the box-filtered
+    // environment), which no denoiser can remove.
     CHECK(errors.back() < 0.6 * rawError);
     CHECK(errors.back() < averageError);
     CHECK(noise.back() < 0.75 * noise.front());
