@@ -7,6 +7,24 @@
 # malformed anchors file is one line naming it.
 file(REMOVE_RECURSE "${OUT}")
 include("${CMAKE_CURRENT_LIST_DIR}/run_glint.cmake")
+
+# Fails unless the page `text` (read from `name`) matches every pattern after the first two.
+function(expect_all text name)
+  foreach(expected IN LISTS ARGN)
+    if(NOT text MATCHES "${expected}")
+      message(FATAL_ERROR "${name} lacks '${expected}'")
+    endif()
+  endforeach()
+endfunction()
+
+# Fails unless the page draws exactly `expected` polylines (`what` names them).
+function(expect_polylines text expected what)
+  string(REGEX MATCHALL "<polyline" lines "${text}")
+  list(LENGTH lines count)
+  if(NOT count EQUAL expected)
+    message(FATAL_ERROR "expected ${expected} plotted lines (${what}), found ${count}")
+  endif()
+endfunction()
 file(MAKE_DIRECTORY "${OUT}/glossy_room/frame_0000" "${OUT}/glossy_room/frame_0001")
 file(WRITE "${OUT}/glossy_room/summary.json" [=[
 {
@@ -46,7 +64,7 @@ file(READ "${OUT}/report_noisy.html" noisy_html)
 if(NOT noisy_html MATCHES "<td>no: floor 0.2000 is not below a quarter of 0.5000</td>")
   message(FATAL_ERROR "report_noisy.html does not say the references are not converged")
 endif()
-foreach(expected
+expect_all("${html}" report.html
     "GGX alpha below roughnessThreshold = 0.30"
     "radiance clamped to \\[0, 16\\]"
     "48 samples per pixel \\(seed 1\\)"
@@ -59,16 +77,8 @@ foreach(expected
     "<td>0.0625 \\(clamped MAE 0.0200\\)</td><td>yes</td><td>0.1250</td><td>0.3500</td>"
     "FidelityFX SDK 1.1.4, denoised"
     "640x360, frame 15 of a 16-frame sequence")
-  if(NOT html MATCHES "${expected}")
-    message(FATAL_ERROR "report.html lacks '${expected}'")
-  endif()
-endforeach()
 # Three series, each one unbroken line over both frames; no anchor marker on the axis.
-string(REGEX MATCHALL "<polyline" lines "${html}")
-list(LENGTH lines count)
-if(NOT count EQUAL 3)
-  message(FATAL_ERROR "expected 3 plotted lines (noisy, output, noise floor), found ${count}")
-endif()
+expect_polylines("${html}" 3 "noisy, output, noise floor")
 if(html MATCHES "<circle")
   message(FATAL_ERROR "an anchor was drawn on a plot it was not measured on")
 endif()
@@ -98,7 +108,7 @@ file(MAKE_DIRECTORY "${OUT}/with_flip/frame_0000" "${OUT}/with_flip/frame_0001")
 file(WRITE "${OUT}/with_flip/summary.json" "${flip_summary}")
 run_glint(0 report "${OUT}/with_flip" --out "${OUT}/report_flip.html")
 file(READ "${OUT}/report_flip.html" flip_html)
-foreach(expected
+expect_all("${flip_html}" report_flip.html
     "<th>FLIP, last frame</th><th>its noisy input&#39;s FLIP, last frame</th>"
     "<td>0.0625 \\(clamped MAE 0.0200, FLIP 0.0625\\)</td><td>yes</td><td>0.1250</td><td>0.3500</td><td>0.1250</td><td>0.3750</td></tr>"
     "LDR-FLIP as scripts/study.py defines it"
@@ -106,15 +116,7 @@ foreach(expected
     "shadow visibility clamped to \\[0, 1\\]"
     "reflections: LDR-FLIP against the reference"
     "mean LDR-FLIP")
-  if(NOT flip_html MATCHES "${expected}")
-    message(FATAL_ERROR "report_flip.html lacks '${expected}'")
-  endif()
-endforeach()
-string(REGEX MATCHALL "<polyline" lines "${flip_html}")
-list(LENGTH lines count)
-if(NOT count EQUAL 6)
-  message(FATAL_ERROR "expected 6 plotted lines (error and FLIP: noisy, output, noise floor), found ${count}")
-endif()
+expect_polylines("${flip_html}" 6 "error and FLIP: noisy, output, noise floor")
 # A null FLIP (the frame's mask held no pixel) is "no pixels scored", never a number.
 string(REPLACE "\"noisyFlip\": 0.375" "\"noisyFlip\": null" null_summary "${flip_summary}")
 file(MAKE_DIRECTORY "${OUT}/null_flip/frame_0000" "${OUT}/null_flip/frame_0001")
