@@ -22,7 +22,6 @@ scored in parallel, one process per CPU. Needs numpy and flip-evaluator (scripts
 makes build/venv with them).
 """
 import json
-import os
 import pathlib
 import struct
 import sys
@@ -236,17 +235,8 @@ def add_flips(runs, workers=None, clamp=study.RADIANCE_CLAMP):
         if not (folder / f"{effect}_mask.exr").exists():
             raise FileNotFoundError(f"{folder / (effect + '_mask.exr')} is missing: glint run writes the error "
                                     f"mask since run_flip.py exists; run glint run again")
-    arguments = [(folder, effect, images, clamp) for _, effect, folder, images in jobs]
-    if workers == 1 or len(jobs) < 2:
-        results = [frame_flips(*a) for a in arguments]
-    else:
-        import multiprocessing
-        from concurrent.futures import ProcessPoolExecutor
-
-        # spawn, not fork: a forked child can inherit a lock held by another thread of this one.
-        with ProcessPoolExecutor(max_workers=workers or os.cpu_count(),
-                                 mp_context=multiprocessing.get_context("spawn")) as pool:
-            results = list(pool.map(frame_flips, *zip(*arguments)))
+    results = study.parallel_map(frame_flips, [(folder, effect, images, clamp)
+                                               for _, effect, folder, images in jobs], workers)
     for (record, effect, _, _), values in zip(jobs, results):
         store(record, effect, values)
     for run, summary in zip(runs, summaries):

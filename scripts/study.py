@@ -138,6 +138,19 @@ def forget_stale_flips(study, metric):
     study["flip_metric"] = metric
 
 
+def parallel_map(function, arguments, workers=None):
+    """[function(*a) for a in arguments], in `workers` processes (None: one per CPU; 1, or fewer
+    than two calls: in this process). `function` must be importable by name (a module's own)."""
+    if workers == 1 or len(arguments) < 2:
+        return [function(*a) for a in arguments]
+    import multiprocessing
+    from concurrent.futures import ProcessPoolExecutor
+
+    # spawn, not fork: a forked child can inherit a lock held by another thread of this one.
+    with ProcessPoolExecutor(max_workers=workers, mp_context=multiprocessing.get_context("spawn")) as pool:
+        return list(pool.map(function, *zip(*arguments)))
+
+
 def add_flips(directory, study, hdr=False, workers=None):
     """flip (and flip_hdr with hdr) of every row of one folder's study.json, and the noise floors
     floor_flip (floor_flip_hdr) of the rows with a second reference, each floor computed once per
@@ -164,19 +177,9 @@ def add_flips(directory, study, hdr=False, workers=None):
             key = (row[test], row["reference"], row["mask"], dynamic_range)
             jobs.setdefault(key, (row, test, dynamic_range))
             wanted.append((row, field, key))
-    results = {}
-    if workers == 1 or len(jobs) < 2:
-        for key, (row, test, dynamic_range) in jobs.items():
-            results[key] = mean_flip(directory, row, test, dynamic_range, clamp)
-    else:
-        import multiprocessing
-        from concurrent.futures import ProcessPoolExecutor
-
-        # spawn, not fork: a forked child can inherit a lock held by another thread of this one.
-        with ProcessPoolExecutor(max_workers=workers, mp_context=multiprocessing.get_context("spawn")) as pool:
-            futures = {key: pool.submit(mean_flip, directory, row, test, dynamic_range, clamp)
-                       for key, (row, test, dynamic_range) in jobs.items()}
-            results = {key: future.result() for key, future in futures.items()}
+    values = parallel_map(mean_flip, [(directory, row, test, dynamic_range, clamp)
+                                      for row, test, dynamic_range in jobs.values()], workers)
+    results = dict(zip(jobs, values))
     for row, field, key in wanted:
         row[field] = results[key]
 

@@ -187,11 +187,8 @@ int runRun(const ReplayOptions& options) {
                  replay::referenceErrors(frame, result, roughnessThreshold)) {
                 writeImageFiles(dir, error.effect + "_error", error.effect + "/error", error.map, true);
                 // The pixels the error was measured over, for scripts/run_flip.py: EXR only.
-                const std::vector<std::uint8_t> mask =
-                    error.effect == "shadows" && !receivers.empty()
-                        ? receivers
-                        : replay::errorMask(frame, error.effect, roughnessThreshold);
-                writeImageFiles(dir, error.effect + "_mask", error.effect + "/mask", maskImage(frame, mask),
+                writeImageFiles(dir, error.effect + "_mask", error.effect + "/mask",
+                                maskImage(frame, replay::errorMask(frame, error.effect, roughnessThreshold)),
                                 false);
                 errors[error.effect].push_back(error.pixels > 0 ? error.mean
                                                                 : std::numeric_limits<double>::quiet_NaN());
