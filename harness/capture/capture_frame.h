@@ -85,8 +85,9 @@ struct FrameHeader {
     MotionConvention motion;
     RoughnessSource roughness;
     // tan of the angular radius of the light the `shadow` layer samples (a directional light);
-    // 0 when unknown (attribute glint.shadowLightTanHalfAngle absent).
-    double shadowLightTanHalfAngle = 0.0;
+    // 0 for a light of angular radius 0 (hard shadows); negative when unknown (attribute
+    // glint.shadowLightTanHalfAngle absent).
+    double shadowLightTanHalfAngle = -1.0;
     std::vector<std::string> effects; // "reflections", "shadows", "depth_pyramid"
     std::vector<LayerInfo> layers;
 };
@@ -99,7 +100,7 @@ struct Frame {
     NormalEncoding normalEncoding = NormalEncoding::WorldUnit;
     MotionConvention motion;
     RoughnessSource roughness;
-    double shadowLightTanHalfAngle = 0.0; // as FrameHeader's
+    double shadowLightTanHalfAngle = -1.0; // as FrameHeader's
     std::vector<std::string> effects;
     std::vector<Layer> layers;
 };

@@ -126,7 +126,7 @@ void writeFrameAttributes(Imf::Header& header, const FrameHeader& f) {
     header.insert(kRoughnessSource, Imf::StringAttribute(source));
     header.insert(kRoughnessPerceptual, Imf::IntAttribute(f.roughness.perceptual ? 1 : 0));
     header.insert(kEffects, Imf::StringVectorAttribute(f.effects));
-    if (f.shadowLightTanHalfAngle > 0.0)
+    if (f.shadowLightTanHalfAngle >= 0.0)
         header.insert(kShadowLightTanHalfAngle, Imf::DoubleAttribute(f.shadowLightTanHalfAngle));
     Imf::addWorldToCamera(header, worldToCameraOf(c));
     Imf::addWorldToNDC(header, worldToNdcOf(c));
@@ -169,7 +169,7 @@ void readFrameAttributes(const Imf::Header& header, const std::filesystem::path&
     f.roughness.channel = source.empty() ? "" : source.substr(dot + 1);
     f.roughness.perceptual = requiredFlag(header, kRoughnessPerceptual, file);
     f.effects = required<Imf::StringVectorAttribute>(header, kEffects, file);
-    f.shadowLightTanHalfAngle = 0.0;
+    f.shadowLightTanHalfAngle = -1.0;
     if (header.find(kShadowLightTanHalfAngle) != header.end()) {
         const double t = required<Imf::DoubleAttribute>(header, kShadowLightTanHalfAngle, file);
         if (!(std::isfinite(t) && t >= 0.0))

@@ -376,9 +376,10 @@ Simulation simulate(const gpu::Context& context, const Scene& scene) {
         f.effects = captureEffects(scene);
         if (needsShadows(scene)) {
             // The light the shadow layers sample: its angular radius for the denoiser's
-            // penumbra estimate (directional lights only; a sphere light's varies with distance).
+            // penumbra estimate (directional lights only, 0 included: hard shadows; a sphere
+            // light's varies with distance, so it stays unknown).
             const LightDesc light = lightsAt(scene, frame).at(scene.shadowLight);
-            if (light.kind == LightKind::Directional && light.angularRadiusDegrees > 0.0f)
+            if (light.kind == LightKind::Directional && light.angularRadiusDegrees >= 0.0f)
                 f.shadowLightTanHalfAngle =
                     std::tan(static_cast<double>(light.angularRadiusDegrees) * std::numbers::pi / 180.0);
         }

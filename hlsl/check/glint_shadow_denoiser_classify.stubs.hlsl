@@ -57,6 +57,11 @@ void GLINT_SHADOW_DENOISER_StoreMoments(int2 pixel, float4 moments)
     g_glint_check[pixel.y] = moments;
 }
 
+float GLINT_SHADOW_DENOISER_LoadBlockerDistance(int2 pixel)
+{
+    return g_glint_check[pixel.x + 6].w;
+}
+
 [numthreads(8, 8, GLINT_SHADOW_DENOISER_CLASSIFY_BLOCKS)] void main(uint3 groupId : SV_GroupID,
                                                                    uint3 groupThreadId : SV_GroupThreadID)
 {
@@ -72,5 +77,6 @@ void GLINT_SHADOW_DENOISER_StoreMoments(int2 pixel, float4 moments)
     c.ndcYSign = g_glint_check_constants.ndcYSign;
     c.flags = g_glint_check_constants.flags;
     c.storedVarianceScale = g_glint_check_constants.storedVarianceScale;
+    c.penumbraScale = g_glint_check_constants.penumbraScale;
     GLINT_SHADOW_DENOISER_Classify(groupId.xy, groupThreadId, c);
 }

@@ -92,11 +92,14 @@ TEST_CASE("camera matrices and every header attribute read back bit-exact", "[ca
     CHECK(read.effects == written.effects);
 }
 
-// glint.shadowLightTanHalfAngle is optional: written only when known (> 0), read back bit-exact,
-// and 0 (unknown) when absent (docs/capture-format.md).
-TEST_CASE("the optional shadow light angle reads back bit-exact, and as 0 when absent", "[capture]") {
+// glint.shadowLightTanHalfAngle is optional: written only when known (>= 0; 0 is a light of size
+// 0), read back bit-exact, and negative (unknown) when absent (docs/capture-format.md).
+TEST_CASE("the optional shadow light angle reads back bit-exact, and as unknown when absent", "[capture]") {
     Frame written = test::makeFullFrame(5, 3);
-    CHECK(writeAndRead("round_trip_no_light_angle", written).shadowLightTanHalfAngle == 0.0);
+    written.shadowLightTanHalfAngle = -1.0;
+    CHECK(writeAndRead("round_trip_no_light_angle", written).shadowLightTanHalfAngle < 0.0);
+    written.shadowLightTanHalfAngle = 0.0; // a light of angular radius 0
+    CHECK(writeAndRead("round_trip_point_light_angle", written).shadowLightTanHalfAngle == 0.0);
     written.shadowLightTanHalfAngle = 0.017455064928217585; // tan(1 degree)
     const Frame read = writeAndRead("round_trip_light_angle", written);
     CHECK(bits(read.shadowLightTanHalfAngle) == bits(written.shadowLightTanHalfAngle));

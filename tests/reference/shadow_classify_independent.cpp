@@ -30,6 +30,12 @@ constexpr double kHistorySlack = 5e-5;
 // The device's float error on the anti-lag scores: sums of up to 25 terms below 25, each add
 // rounding by half an ulp of 25 (1e-6), in each of the two sums, divided by at least 1.
 constexpr double kScoreSlack = 1e-4;
+// Hard shadows (docs/shadow_denoiser.md, "Hard shadows pass through"): a receiver whose 9 x 9
+// neighbourhood holds no penumbra wider than 1 pixel passes through. The device computes the
+// widths in float (relative error a few 1e-7): a widest width this close to 1 is ambiguous.
+constexpr int kHardRadius = 4;
+constexpr double kUnknownPenumbra = 64.0; // an unknown blocker: a wide penumbra
+constexpr double kPenumbraMargin = 1e-5;
 
 struct Image {
     int w = 0, h = 0;
@@ -148,6 +154,21 @@ ShadowClassifyRanges shadowClassifyIndependent(const ShadowClassifyInputs& in,
 
     auto z = [&](int x, int y) { return viewDepth(in.depth[img.at(x, y)], in.viewDepth); };
     auto zPrevious = [&](int x, int y) { return viewDepth(in.previousDepth[img.at(x, y)], in.viewDepth); };
+    // The widest penumbra W = scale * blocker / z over the 9 x 9 neighbourhood, coordinates
+    // clamped to the image; non-receivers, lit samples and a light of size 0 imply none.
+    auto widestPenumbra = [&](int x, int y) {
+        double widest = 0.0;
+        for (int dy = -kHardRadius; dy <= kHardRadius; ++dy)
+            for (int dx = -kHardRadius; dx <= kHardRadius; ++dx) {
+                const int qx = std::clamp(x + dx, 0, w - 1), qy = std::clamp(y + dy, 0, h - 1);
+                const double zq = z(qx, qy);
+                if (!(zq > 0.0) || in.penumbraScale == 0.0f) continue;
+                const double b = in.blockerDistance[img.at(qx, qy)];
+                const double width = std::isfinite(b) && b >= 0.0 ? double(in.penumbraScale) * b / zq : kUnknownPenumbra;
+                widest = std::max(widest, width);
+            }
+        return widest;
+    };
 
     ShadowClassifyRanges out;
     const int groupsX = (w + 7) / 8, groupsY = (h + 7) / 8;
@@ -200,6 +221,20 @@ ShadowClassifyRanges shadowClassifyIndependent(const ShadowClassifyInputs& in,
                         const double moments[4] = {0.0, 0.0, 0.0, 0.0};
                         store(p, sv, moments);
                         continue;
+                    }
+                    if (in.penumbraScale >= 0.0f) {
+                        const double widest = widestPenumbra(x, y);
+                        if (std::abs(widest - 1.0) <= kPenumbraMargin) {
+                            out.ambiguous[p] = 1u;
+                            continue;
+                        }
+                        if (widest < 1.0) { // its sample, and a one-sample history
+                            const double sample = lit(x, y);
+                            const double sv[2] = {sample, 0.0};
+                            const double moments[4] = {sample, 0.0, 1.0, sample};
+                            store(p, sv, moments);
+                            continue;
+                        }
                     }
 
                     // The 17x17 Gaussian mean, in double with the exact weights.

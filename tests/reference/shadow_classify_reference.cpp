@@ -52,6 +52,23 @@ ShadowClassifyOutputs shadowClassify(const ShadowClassifyInputs& in) {
                        std::size_t(std::clamp(tx, 0, tilesX - 1))];
     };
     auto z = [&](int x, int y) { return viewDepthOf(in.depth[idx(x, y)], in.viewDepth); };
+    // The shader's penumbra width (glint_shadow_denoiser_penumbra.hlsli) and its 9 x 9 maximum.
+    auto penumbraWidth = [&](int x, int y) {
+        const float zq = z(x, y);
+        if (!(zq > 0.0f) || !(in.penumbraScale > 0.0f)) return 0.0f;
+        const float b = in.blockerDistance[idx(x, y)];
+        if (!finite(b) || b < 0.0f) return 64.0f;
+        const float width = in.penumbraScale * b / zq;
+        return finite(width) ? std::min(width, 64.0f) : 64.0f;
+    };
+    auto hard = [&](int x, int y) {
+        if (!(in.penumbraScale >= 0.0f)) return false;
+        float widest = 0.0f;
+        for (int dy = -4; dy <= 4; ++dy)
+            for (int dx = -4; dx <= 4; ++dx)
+                widest = std::max(widest, penumbraWidth(std::clamp(x + dx, 0, w - 1), std::clamp(y + dy, 0, h - 1)));
+        return widest <= 1.0f;
+    };
     auto rowSum = [&](int x, int y) {
         const int row = std::clamp(y, 0, h - 1);
         const std::uint32_t shift = shared::GLINT_WIRE_ShadowMaskBit(0u, static_cast<std::uint32_t>(row));
@@ -155,6 +172,14 @@ ShadowClassifyOutputs shadowClassify(const ShadowClassifyInputs& in) {
                     }
                     if (!receiver) {
                         out.shadowVariance[2 * p] = 1.0f; // (1, 0), moments zeros
+                        continue;
+                    }
+                    if (hard(x, y)) {
+                        const float sample = ((word(x >> 3, y >> 2) >> maskBit(x, y)) & 1u) ? 1.0f : 0.0f;
+                        out.shadowVariance[2 * p] = sample;
+                        out.moments[4 * p] = sample;
+                        out.moments[4 * p + 2] = 1.0f;
+                        out.moments[4 * p + 3] = sample;
                         continue;
                     }
                     float lit = 0.0f, shadowed = 0.0f;

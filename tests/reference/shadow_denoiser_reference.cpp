@@ -76,7 +76,8 @@ std::vector<float> shadowFilterPass(const ShadowFilterInputs& inputs, const std:
         return std::size_t(std::clamp(y, 0, h - 1)) * std::size_t(w) + std::size_t(std::clamp(x, 0, w - 1));
     };
 
-    // Penumbra width in pixels each receiver's blocker implies (0 for lit or non-receivers).
+    // Penumbra width in pixels each receiver's blocker implies (0 for lit or non-receivers, and
+    // for every pixel under a light of size 0).
     std::vector<double> width(count, 0.0);
     if (inputs.penumbraScale > 0.0f)
         for (std::size_t i = 0; i < count; ++i) {
@@ -93,7 +94,7 @@ std::vector<float> shadowFilterPass(const ShadowFilterInputs& inputs, const std:
         for (int x = 0; x < w; ++x) {
             const std::size_t c = at(x, y);
             double footprint = 1.0;
-            if (inputs.penumbraScale > 0.0f) {
+            if (inputs.penumbraScale >= 0.0f) {
                 double widest = 0.0;
                 for (int j = -2; j <= 2; ++j)
                     for (int i = -2; i <= 2; ++i) widest = std::max(widest, width[at(x + i, y + j)]);

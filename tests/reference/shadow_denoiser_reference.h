@@ -22,9 +22,10 @@ struct ShadowFilterInputs {
     float normalPower = 32.0f;
     bool contrastRemap = false; // the last pass applies mean^max(1.2 - variance, 1)
     // Penumbra footprint (docs/shadow_denoiser.md, "Penumbra-aware filtering"): with
-    // penumbraScale > 0, a pass of step s weighs every neighbour by clamp((W - 1) / s, 0, 1), W the
-    // widest penumbraScale * blocker / z over the pixel's 5 x 5 (unknown blockers: 64 pixels).
-    float penumbraScale = 0.0f;
+    // penumbraScale >= 0, a pass of step s weighs every neighbour by clamp((W - 1) / s, 0, 1), W the
+    // widest penumbraScale * blocker / z over the pixel's 5 x 5 (unknown blockers: 64 pixels; a
+    // light of size 0, penumbraScale 0: W = 0, no taps). Negative: no estimate, the full filter.
+    float penumbraScale = -1.0f;
     std::vector<float> blockerDistance; // per pixel; read only with penumbraScale > 0
 };
 

@@ -64,7 +64,29 @@ reference::ShadowClassifyInputs referenceInputs(const ShadowDenoiserDesc& desc,
     ref.reset = desc.resetHistory;
     ref.antiLag = desc.antiLag;
     if (desc.storedVarianceScale > 0.0f) ref.storedVarianceScale = desc.storedVarianceScale;
+    // The penumbra estimate, as docs/shadow_denoiser.md defines it: 2 tan(light radius) / pixel
+    // angle when both are known (the light's >= 0, the pixel's > 0), else none.
+    if (desc.penumbraAware && desc.lightTanHalfAngle >= 0.0f && desc.pixelAngularSize > 0.0f)
+        ref.penumbraScale = 2.0f * desc.lightTanHalfAngle / desc.pixelAngularSize;
+    ref.blockerDistance = inputs.blockerDistance;
     return ref;
+}
+
+// Blocker distances for the hard-shadow cases: shadowed samples of the top half have a blocker
+// at 0.005 (a penumbra of 0.01 / z pixels with penumbraScale 2: hard), of the bottom half at 40
+// (16-80 pixels at view depths 1-5: soft), a few unknown (-1, NaN) there; lit samples 0.
+test::ShadowInputs withBlockers(test::ShadowInputs inputs, std::uint32_t width, std::uint32_t height) {
+    inputs.blockerDistance.assign(std::size_t{width} * height, 0.0f);
+    for (std::uint32_t y = 0; y < height; ++y)
+        for (std::uint32_t x = 0; x < width; ++x) {
+            const std::size_t i = std::size_t{y} * width + x;
+            if (inputs.visibility[i] >= 0.5f) continue;
+            float& b = inputs.blockerDistance[i];
+            b = 2 * y < height ? 0.005f : 40.0f;
+            if (2 * y >= height && i % 37 == 0) b = -1.0f;
+            if (2 * y >= height && i % 41 == 0) b = std::numeric_limits<float>::quiet_NaN();
+        }
+    return inputs;
 }
 
 // Random finite histories: moments (mean, M2, n, shadow history); `shadow` fills scratch 1, which
@@ -226,6 +248,80 @@ TEST_CASE("classify: within the independent double reference's ranges", "[classi
     desc = classifyDesc(64, 48);
     desc.resetHistory = true;
     checkIndependent(desc, test::movingShadowInputs(64, 48, 16), 6);
+}
+
+// Hard shadows pass through (docs/shadow_denoiser.md): receivers whose 9 x 9 neighbourhood
+// implies no penumbra wider than a pixel store their sample and a one-sample history; the rest
+// is the temporal stage as without the estimate. Against both references, with the tile list's
+// split classification (the default) and the single dispatch.
+TEST_CASE("classify: hard shadows pass through, soft ones accumulate", "[classify][hard]") {
+    ShadowDenoiserDesc desc = classifyDesc(64, 48);
+    desc.lightTanHalfAngle = 0.01f;
+    desc.pixelAngularSize = 0.01f;
+    const test::ShadowInputs inputs = withBlockers(test::movingShadowInputs(64, 48, 31), 64, 48);
+    checkIndependent(desc, inputs, 7);
+    checkClassify(desc, inputs, 7);
+    std::vector<float> moments, shadow;
+    randomHistory(std::size_t{64} * 48, 7, moments, shadow);
+    const reference::ShadowClassifyOutputs expected =
+        reference::shadowClassify(referenceInputs(desc, inputs, moments));
+    // Not vacuous: the hard half's receivers in listed tiles hold their samples with n = 1,
+    // while some of the soft half's accumulate (n > 1).
+    std::size_t passed = 0, accumulated = 0;
+    for (std::size_t i = 0; i < std::size_t{64} * 48; ++i) {
+        if (expected.metadata[(i / 64 / 8) * 8 + (i % 64) / 8] != 0u) continue;
+        const bool top = i / 64 < 20;
+        passed += top && expected.moments[4 * i + 2] == 1.0f ? 1u : 0u;
+        accumulated += !top && expected.moments[4 * i + 2] > 1.5f ? 1u : 0u;
+    }
+    CHECK(passed > 20u);
+    CHECK(accumulated > 20u);
+    // The default plan's split classification: its "temporal" part takes the same decisions.
+    desc.filter = true;
+    REQUIRE(desc.splitClassify);
+    test::ShadowRunner runner(desc);
+    runner.setHistory(desc.frameIndex, moments, shadow);
+    const test::ShadowOutputs actual = runner.run(desc, inputs);
+    CHECK(actual.metadata == expected.metadata);
+    CHECK(countMismatches(storedMoments(desc, actual), storedMoments(desc, expected.moments, expected.metadata)) ==
+          0u);
+    GLINT_REQUIRE_NO_VALIDATION_ERRORS();
+}
+
+// A light of angular radius 0 casts only hard shadows: over frames with motion and histories,
+// the shipped default plan's R8 output is the visibility input, thresholded at 0.5, bit for bit
+// (non-receivers 1). Without the estimate (an unknown light) the same frames differ.
+TEST_CASE("a light of angular radius 0: the denoised output equals the input exactly", "[classify][hard]") {
+    for (float light : {0.0f, -1.0f}) {
+        ShadowDenoiserDesc desc;
+        desc.size = {64, 48};
+        desc.inverseViewProjection = kInverseViewProjection;
+        desc.eyePosition = {0.0f, 0.5f, 1.0f};
+        desc.lightTanHalfAngle = light;
+        desc.pixelAngularSize = 0.01f;
+        test::ShadowRunner runner(desc);
+        std::size_t differing = 0, receivers = 0;
+        for (std::uint32_t frame = 0; frame < 4; ++frame) {
+            desc.frameIndex = frame;
+            desc.resetHistory = frame == 0;
+            const test::ShadowInputs inputs = test::movingShadowInputs(64, 48, 40 + frame);
+            const test::ShadowOutputs outputs = runner.run(desc, inputs);
+            for (std::size_t i = 0; i < inputs.visibility.size(); ++i) {
+                const float d = inputs.depth[i];
+                const bool receiver = d > 1e-6f && d < 1.0f - 1e-6f;
+                const float expected = receiver && !(inputs.visibility[i] >= 0.5f) ? 0.0f : 1.0f;
+                receivers += receiver ? 1u : 0u;
+                differing += outputs.filtered[2 * i] != expected ? 1u : 0u;
+            }
+        }
+        INFO("light tan " << light << ": " << differing << " of the outputs differ from the input");
+        CHECK(receivers > 4000u);
+        if (light == 0.0f)
+            CHECK(differing == 0u);
+        else
+            CHECK(differing > 100u);
+        GLINT_REQUIRE_NO_VALIDATION_ERRORS();
+    }
 }
 
 // The cases below compare with reference::shadowClassify, which mirrors the shader's float

@@ -153,7 +153,7 @@ TEST_CASE("penumbra-aware filter: hard shadows keep their input, wide penumbrae 
         ref.penumbraScale = 2.0f * desc.lightTanHalfAngle / desc.pixelAngularSize;
         ref.blockerDistance = inputs.blockerDistance;
         const std::vector<float> expected = reference::shadowFilter(ref);
-        ref.penumbraScale = 0.0f;
+        ref.penumbraScale = -1.0f; // no estimate
         const std::vector<float> full = reference::shadowFilter(ref);
         REQUIRE(outputs.filtered.size() == expected.size());
         float worst = 0.0f, hardWorst = 0.0f, wideWorst = 0.0f;

@@ -307,38 +307,56 @@ TEST_CASE("shadow plan: invalid descriptions are refused", "[plan]") {
     CHECK(planShadowDenoiser(desc, plan, &error) == Result::InvalidArgument);
 }
 
-// The penumbra estimate (docs/shadow_denoiser.md, "Penumbra-aware filtering"): only with
-// penumbraAware and both sizes known do the filter passes read "shadow_blocker_distance", with
-// penumbraScale = 2 tan / pixel angle; otherwise 0 (the full filter) and the depth bound there.
+// The penumbra estimate (docs/shadow_denoiser.md, "Penumbra-aware filtering", "Hard shadows
+// pass through"): with penumbraAware and both sizes known, classification and the filter get
+// penumbraScale = 2 tan / pixel angle (0 for a light of size 0), otherwise -1 (no estimate); they
+// read "shadow_blocker_distance" only for a light of positive size, the depth stands in otherwise.
 TEST_CASE("shadow plan: the penumbra estimate needs the light's and a pixel's angular size", "[plan]") {
     ShadowDenoiserDesc desc;
     desc.size = {64, 48};
-    const auto filterPasses = [&](float expectedScale, const char* expectedImage) {
+    const auto estimate = [&](float expectedScale, const char* expectedImage) {
         EffectPlan plan;
         std::string error;
         REQUIRE(planShadowDenoiser(desc, plan, &error) == Result::Ok);
-        std::size_t filters = 0;
+        std::size_t filters = 0, temporal = 0;
         for (const Pass& pass : plan.passes) {
-            if (pass.name.rfind("filter", 0) != 0) continue;
-            ++filters;
-            shaders::GLINT_ShadowDenoiserFilterConstants constants{};
-            REQUIRE(pass.constants.size() == sizeof(constants));
-            std::memcpy(&constants, pass.constants.data(), sizeof(constants));
-            CHECK(constants.penumbraScale == Approx(expectedScale).epsilon(1e-6));
             std::string bound;
             for (const ResourceUse& use : pass.uses)
                 if (use.binding == "g_glint_blocker_distance") bound = use.resource;
-            CHECK(bound == expectedImage);
+            INFO(pass.name);
+            if (pass.name.rfind("filter", 0) == 0) {
+                ++filters;
+                shaders::GLINT_ShadowDenoiserFilterConstants constants{};
+                REQUIRE(pass.constants.size() == sizeof(constants));
+                std::memcpy(&constants, pass.constants.data(), sizeof(constants));
+                CHECK(constants.penumbraScale == Approx(expectedScale).epsilon(1e-6));
+                CHECK(bound == expectedImage);
+            } else if (pass.name == "temporal") {
+                ++temporal;
+                shaders::GLINT_ShadowDenoiserClassifyConstants constants{};
+                REQUIRE(pass.constants.size() == sizeof(constants));
+                std::memcpy(&constants, pass.constants.data(), sizeof(constants));
+                CHECK(constants.penumbraScale == Approx(expectedScale).epsilon(1e-6));
+                CHECK(bound == expectedImage);
+            } else {
+                CHECK(bound.empty()); // prepare and the tile test read no blocker
+            }
         }
         CHECK(filters == 2u);
+        CHECK(temporal == 1u);
     };
-    filterPasses(0.0f, "shadow_depth"); // both sizes unknown
+    estimate(-1.0f, "shadow_depth"); // both sizes unknown
     desc.lightTanHalfAngle = 0.05f;
-    filterPasses(0.0f, "shadow_depth"); // the pixel's unknown
+    estimate(-1.0f, "shadow_depth"); // the pixel's unknown
     desc.pixelAngularSize = 0.01f;
-    filterPasses(10.0f, "shadow_blocker_distance"); // 2 * 0.05 / 0.01
+    estimate(10.0f, "shadow_blocker_distance"); // 2 * 0.05 / 0.01
+    desc.lightTanHalfAngle = 0.0f;
+    estimate(0.0f, "shadow_depth"); // a light of size 0: every shadow hard, no blocker read
+    desc.lightTanHalfAngle = -0.5f;
+    estimate(-1.0f, "shadow_depth"); // negative: unknown
+    desc.lightTanHalfAngle = 0.05f;
     desc.penumbraAware = false;
-    filterPasses(0.0f, "shadow_depth");
+    estimate(-1.0f, "shadow_depth");
     desc.penumbraAware = true;
     desc.pixelAngularSize = -1.0f;
     EffectPlan plan;
@@ -348,6 +366,7 @@ TEST_CASE("shadow plan: the penumbra estimate needs the light's and a pixel's an
     desc.pixelAngularSize = 0.01f;
     desc.lightTanHalfAngle = std::numeric_limits<float>::quiet_NaN();
     CHECK(planShadowDenoiser(desc, plan, &error) == Result::InvalidArgument);
+    CHECK(error.find("lightTanHalfAngle") != std::string::npos);
 }
 
 // The automatic stored variance scale: 1/16 up to 360 rows, (rows / 360)^2 / 16 above; an

@@ -17,6 +17,9 @@ GLINT_BINDING(7, 0) StructuredBuffer<uint> g_glint_previous_metadata;
 GLINT_BINDING(8, 0) RWStructuredBuffer<uint> g_glint_tile_metadata;
 GLINT_BINDING(9, 0) GLINT_IMAGE_FORMAT(rg32f) RWTexture2D<float2> g_glint_shadow_variance;
 GLINT_BINDING(10, 0) GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_moments;
+// Blocker distance of the visibility sample (< 0: unknown); read only with penumbraScale > 0
+// (the host binds the depth in its place otherwise).
+GLINT_BINDING(14, 0) Texture2D<float> g_glint_blocker_distance;
 
 #if GLINT_SHADOW_DENOISER_TILE_LIST
 // Permutations "list", "tiles" and "listed": the filter's tile list (indirect arguments first
@@ -102,6 +105,11 @@ void GLINT_SHADOW_DENOISER_StoreMoments(int2 pixel, float4 moments)
     g_glint_moments[pixel] = moments;
 }
 
+float GLINT_SHADOW_DENOISER_LoadBlockerDistance(int2 pixel)
+{
+    return g_glint_blocker_distance.Load(int3(pixel, 0));
+}
+
 [numthreads(8, 8, GLINT_SHADOW_DENOISER_CLASSIFY_BLOCKS)] void main(uint3 groupId : SV_GroupID,
                                                                    uint3 groupThreadId : SV_GroupThreadID)
 {
@@ -117,5 +125,6 @@ void GLINT_SHADOW_DENOISER_StoreMoments(int2 pixel, float4 moments)
     c.ndcYSign = g_glint_constants.ndcYSign;
     c.flags = g_glint_constants.flags;
     c.storedVarianceScale = g_glint_constants.storedVarianceScale;
+    c.penumbraScale = g_glint_constants.penumbraScale;
     GLINT_SHADOW_DENOISER_Classify(groupId.xy, groupThreadId, c);
 }

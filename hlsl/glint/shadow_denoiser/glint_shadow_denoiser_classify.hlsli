@@ -19,6 +19,9 @@
 //   void   GLINT_SHADOW_DENOISER_StoreMetadata(uint tileIndex, uint metadata);
 //   void   GLINT_SHADOW_DENOISER_StoreShadowVariance(int2 pixel, float2 value);
 //   void   GLINT_SHADOW_DENOISER_StoreMoments(int2 pixel, float4 moments);  (mean, M2, n, shadow)
+//   float  GLINT_SHADOW_DENOISER_LoadBlockerDistance(int2 pixel);
+//          distance along this frame's shadow ray to its closest blocker, as the filter's
+//          (glint_shadow_denoiser_filter.hlsli); read only with penumbraScale > 0
 // With GLINT_SHADOW_DENOISER_TILE_LIST=1 (for the filter's tile list):
 //   void   GLINT_SHADOW_DENOISER_AppendFilterTile(uint2 tile);   once per tile that is not clear
 //   void   GLINT_SHADOW_DENOISER_StoreClearOutput(int2 pixel, float2 value);
@@ -26,6 +29,10 @@
 //          may keep .x only); its StoreShadowVariance is then skipped (the filter rebuilds clear
 //          tiles from the metadata).
 // Every loaded value may be non-finite: such histories count as missing, such depths as sky.
+// Hard shadows (penumbraScale >= 0, glint_shadow_denoiser_penumbra.hlsli): a receiver whose
+// (2 HARD_RADIUS + 1)^2 neighbourhood implies no penumbra wider than a pixel stores its own
+// sample, (x, 0), and the moments of a one-sample history, (x, 0, 1, x); with the filter's
+// footprint (which takes no tap there) the output is the input (docs/shadow_denoiser.md).
 // The (shadow, variance) stored for a non-receiver is (1, 0): lit, as the visibility input marks
 // it (docs/shadow_denoiser.md, "Non-receivers"); its moments are zeros (no history).
 //
@@ -56,6 +63,7 @@
 #include "glint/common/glint_math.hlsli"
 #include "glint/common/glint_wire_formats.h"
 #include "glint/shadow_denoiser/glint_shadow_denoiser_constants.h"
+#include "glint/shadow_denoiser/glint_shadow_denoiser_penumbra.hlsli"
 
 uint GLINT_SHADOW_DENOISER_LoadMask(int2 tile);
 float GLINT_SHADOW_DENOISER_LoadDepth(int2 pixel);
@@ -68,6 +76,7 @@ uint GLINT_SHADOW_DENOISER_LoadPreviousMetadata(uint tileIndex);
 void GLINT_SHADOW_DENOISER_StoreMetadata(uint tileIndex, uint metadata);
 void GLINT_SHADOW_DENOISER_StoreShadowVariance(int2 pixel, float2 value);
 void GLINT_SHADOW_DENOISER_StoreMoments(int2 pixel, float4 moments);
+float GLINT_SHADOW_DENOISER_LoadBlockerDistance(int2 pixel);
 #if GLINT_SHADOW_DENOISER_TILE_LIST
 void GLINT_SHADOW_DENOISER_AppendFilterTile(uint2 tile);
 void GLINT_SHADOW_DENOISER_StoreClearOutput(int2 pixel, float2 value);
@@ -113,6 +122,12 @@ groupshared uint g_glint_shadow_denoiser_classify_offset_max[GLINT_SHADOW_DENOIS
 #define GLINT_SHADOW_DENOISER_ANTILAG_SLOTS (GLINT_SHADOW_DENOISER_ANTILAG_SPAN * GLINT_SHADOW_DENOISER_ANTILAG_SPAN)
 groupshared float4 g_glint_shadow_denoiser_classify_window[GLINT_SHADOW_DENOISER_CLASSIFY_BLOCKS *
                                                           GLINT_SHADOW_DENOISER_ANTILAG_SLOTS];
+// The hard-shadow test of a block that is not clear (one block a group in the parts that run it):
+// the penumbra width of every pixel of the block plus a HARD_RADIUS apron (coordinates clamped to
+// the image), then their maxima along each row's 2 HARD_RADIUS + 1 columns around the block's.
+#define GLINT_SHADOW_DENOISER_HARD_SPAN (8 + 2 * GLINT_SHADOW_DENOISER_HARD_RADIUS)
+groupshared float g_glint_shadow_denoiser_classify_penumbra[GLINT_SHADOW_DENOISER_HARD_SPAN * GLINT_SHADOW_DENOISER_HARD_SPAN];
+groupshared float g_glint_shadow_denoiser_classify_penumbra_rows[GLINT_SHADOW_DENOISER_HARD_SPAN * 8];
 
 // View depth of a receiver (finite depth strictly inside (1e-6, 1 - 1e-6)), or -1.
 float GLINT_SHADOW_DENOISER_ClassifyViewDepth(float depth, float4 viewDepth)
@@ -384,6 +399,9 @@ struct GLINT_ShadowDenoiserClassifyParams
     // Times the variance of the accumulated mean, stored for the filter's edge stop: larger
     // values filter settled penumbrae more (docs/shadow_denoiser.md).
     float storedVarianceScale;
+    // Penumbra width per blocker distance / view depth (glint_shadow_denoiser_penumbra.hlsli);
+    // negative: no estimate, no pixel passes through.
+    float penumbraScale;
 };
 
 // Motion of the closest receiver of the pixel's 2x2 quad (z: the pixel's own view depth).
@@ -487,9 +505,24 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint3 groupThreadId, GLINT_Sh
 #endif
     }
 #endif
+    bool readsBlockers = GLINT_SHADOW_DENOISER_PenumbraReadsBlockers(c.penumbraScale);
 #if GLINT_SHADOW_DENOISER_CLASSIFY_PART != GLINT_SHADOW_DENOISER_CLASSIFY_PART_TILES
     if (!clear)
     {
+        // Penumbra widths of the span, 4 slots a thread, their loads in flight with the row sums'.
+        if (readsBlockers)
+        {
+            int2 spanOrigin = int2(tile * 8u) - GLINT_SHADOW_DENOISER_HARD_RADIUS;
+            [unroll] for (uint k = 0; k < 4u; ++k)
+            {
+                uint slot = localIndex + k * 64u;
+                int2 spanPixel = clamp(spanOrigin + int2(slot % GLINT_SHADOW_DENOISER_HARD_SPAN, slot / GLINT_SHADOW_DENOISER_HARD_SPAN),
+                                       int2(0, 0), int2(c.inputSize) - 1);
+                float spanZ = GLINT_SHADOW_DENOISER_ClassifyViewDepth(GLINT_SHADOW_DENOISER_LoadDepth(spanPixel), c.viewDepth);
+                g_glint_shadow_denoiser_classify_penumbra[slot] = GLINT_SHADOW_DENOISER_PenumbraWidth(
+                    GLINT_SHADOW_DENOISER_LoadBlockerDistance(spanPixel), spanZ, c.penumbraScale);
+            }
+        }
         // Horizontal 17-tap sums of the 24 rows the block's vertical taps reach, once per
         // (row, column) instead of once per tap: 3 per thread, from the 18 words in groupshared
         // memory. One block a group here, so `clear` is uniform and the barrier too. Columns
@@ -502,6 +535,18 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint3 groupThreadId, GLINT_Sh
                 GLINT_SHADOW_DENOISER_RowSum(q, tile, column, int(tile.y * 8u + row) - 8, c.inputSize);
         }
         GroupMemoryBarrierWithGroupSync();
+        if (readsBlockers)
+        {
+            [unroll] for (uint part = 0; part < 2u; ++part)
+            {
+                uint row = local.y + part * 8u;
+                float widest = 0.0;
+                [unroll] for (uint dx = 0; dx <= 2u * GLINT_SHADOW_DENOISER_HARD_RADIUS; ++dx)
+                    widest = max(widest, g_glint_shadow_denoiser_classify_penumbra[row * GLINT_SHADOW_DENOISER_HARD_SPAN + local.x + dx]);
+                g_glint_shadow_denoiser_classify_penumbra_rows[row * 8u + local.x] = widest;
+            }
+            GroupMemoryBarrierWithGroupSync();
+        }
     }
 #endif
 #if GLINT_SHADOW_DENOISER_CLASSIFY_PART != GLINT_SHADOW_DENOISER_CLASSIFY_PART_LISTED
@@ -542,13 +587,23 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint3 groupThreadId, GLINT_Sh
     float spatialSigma = sqrt(spatialVariance);
     uint ownWord = GLINT_SHADOW_DENOISER_BlockWord(q, tile, 0, loadPixel.y >> 2);
     float x = ((ownWord >> GLINT_WIRE_ShadowMaskBit(uint(loadPixel.x), uint(loadPixel.y))) & 1u) != 0u ? 1.0 : 0.0;
+    // A hard shadow: no penumbra wider than a pixel around the receiver, so its sample is the
+    // answer (a light of size 0 makes every receiver hard without loading a blocker).
+    float widestPenumbra = 0.0;
+    if (readsBlockers)
+        [unroll] for (uint dy = 0; dy <= 2u * GLINT_SHADOW_DENOISER_HARD_RADIUS; ++dy)
+            widestPenumbra = max(widestPenumbra, g_glint_shadow_denoiser_classify_penumbra_rows[(local.y + dy) * 8u + local.x]);
+    bool hard = active && GLINT_SHADOW_DENOISER_PenumbraKnown(c.penumbraScale) && widestPenumbra <= 1.0;
 
     // Loaded after the barriers: loading it before them in the listed part does not pay
     // (docs/performance.md).
-    float2 motion = GLINT_SHADOW_DENOISER_QuadMotion(pixel, loadPixel, z, c.inputSize, c.viewDepth);
+    float2 motion = float2(0.0, 0.0);
+    if (!hard)
+        motion = GLINT_SHADOW_DENOISER_QuadMotion(pixel, loadPixel, z, c.inputSize, c.viewDepth);
     float2 uv = (float2(pixel) + 0.5) / float2(c.inputSize);
     float2 uvPrevious = uv + motion;
-    bool disoccluded = !active || (c.flags & GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_RESET) != 0u ||
+    // A hard pixel needs no history: it takes no part in the anti-lag window either.
+    bool disoccluded = !active || hard || (c.flags & GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_RESET) != 0u ||
                        !GLINT_IsFinite(uvPrevious.x) || !GLINT_IsFinite(uvPrevious.y) || any(uvPrevious < 0.0) ||
                        any(uvPrevious > 1.0);
     int2 previousPixel = disoccluded ? int2(0, 0) : min(int2(uvPrevious * float2(c.inputSize)), int2(c.inputSize) - 1);
@@ -609,6 +664,12 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint3 groupThreadId, GLINT_Sh
             GLINT_SHADOW_DENOISER_StoreShadowVariance(pixel, float2(1.0, 0.0));
             GLINT_SHADOW_DENOISER_StoreMoments(pixel, float4(0.0, 0.0, 0.0, 0.0));
         }
+        return;
+    }
+    if (hard)
+    {
+        GLINT_SHADOW_DENOISER_StoreShadowVariance(pixel, float2(x, 0.0));
+        GLINT_SHADOW_DENOISER_StoreMoments(pixel, float4(x, 0.0, 1.0, x));
         return;
     }
 

@@ -26,6 +26,12 @@
 // The penumbra width (pixels) an unknown blocker stands for: beyond the largest step + 1, so
 // the filter's full footprint.
 #define GLINT_SHADOW_DENOISER_FULL_PENUMBRA 64.0
+// Classification's hard-shadow test (docs/shadow_denoiser.md, "Hard shadows pass through"): a
+// receiver whose (2 HARD_RADIUS + 1)^2 neighbourhood implies no penumbra wider than one pixel
+// outputs its own sample. Wider than the filter's 5 x 5, so that the lit pixels at the edge of a
+// wide penumbra are rarely taken for hard (every pixel within the radius must be lit), and so
+// that a pixel classification passes through takes no filter tap either.
+#define GLINT_SHADOW_DENOISER_HARD_RADIUS 4
 
 #ifdef __cplusplus
 namespace glint::shaders {
@@ -51,8 +57,9 @@ GLINT_CONSTANTS_BEGIN(GLINT_ShadowDenoiserFilterConstants)
     float depthSigma;        // relative depth edge stop: exp(-|z_c - z_q| / (depthSigma z_c))
     float normalPower;       // normal edge stop: max(0, N_c . N_q)^normalPower
     // Penumbra width in pixels per unit of blocker distance / receiver view depth:
-    // 2 tan(light angular radius) / (pixel angular size); 0 turns the penumbra estimate off
-    // (every pixel takes the full filter). See GLINT_SHADOW_DENOISER_PenumbraFootprint.
+    // 2 tan(light angular radius) / (pixel angular size); negative: no estimate (every pixel
+    // takes the full filter); 0: a light of size 0 (no pixel takes a tap). See
+    // glint_shadow_denoiser_penumbra.hlsli.
     float penumbraScale;
     uint padding0;           // the struct is whole 16-byte registers
     uint padding1;
@@ -104,8 +111,8 @@ GLINT_CONSTANTS_BEGIN(GLINT_ShadowDenoiserClassifyConstants)
     float ndcYSign;             // y_n = ndcYSign (2 v - 1): +1 Vulkan-style, -1 D3D-style
     uint flags;                 // GLINT_SHADOW_DENOISER_CLASSIFY_FLAG_*
     float storedVarianceScale;  // times the variance of the accumulated mean, stored for the filter
-    uint padding0;              // the struct is whole 16-byte registers
-    uint padding1;
+    float penumbraScale;        // as the filter's: < 0 no estimate; hard pixels pass through
+    uint padding1;              // the struct is whole 16-byte registers
     uint padding2;
 GLINT_CONSTANTS_END(GLINT_ShadowDenoiserClassifyConstants);
 
@@ -116,6 +123,7 @@ static_assert(offsetof(GLINT_ShadowDenoiserClassifyConstants, eyePosition) == 14
 static_assert(offsetof(GLINT_ShadowDenoiserClassifyConstants, normalUnpack) == 176);
 static_assert(offsetof(GLINT_ShadowDenoiserClassifyConstants, flags) == 188);
 static_assert(offsetof(GLINT_ShadowDenoiserClassifyConstants, storedVarianceScale) == 192);
+static_assert(offsetof(GLINT_ShadowDenoiserClassifyConstants, penumbraScale) == 196);
 static_assert(sizeof(GLINT_ShadowDenoiserPrepareConstants) == 16);
 static_assert(sizeof(GLINT_ShadowDenoiserFilterConstants) == 64);
 static_assert(offsetof(GLINT_ShadowDenoiserFilterConstants, penumbraScale) == 48);

@@ -21,7 +21,7 @@
 //       the units of the view depth: > 0 for a shadowed sample, 0 when the ray reached the
 //       light (or the sample lay below the surface); negative or non-finite when unknown.
 //       Read only when penumbraScale > 0; an integration without the data returns -1 (or
-//       passes penumbraScale 0): every pixel then takes the full filter.
+//       passes a negative penumbraScale): every pixel then takes the full filter.
 //
 // Tile skipping, GLINT_SHADOW_DENOISER_TILE_LIST=1 (tile metadata and the tile list from the
 // classification pass): the dispatch is indirect, one group per tile classification listed
@@ -41,7 +41,9 @@
 // Final pass: mean^max(1.2 - variance, 1). Non-receivers write (1, 0): lit, as the visibility
 // input marks them (docs/shadow_denoiser.md, "Non-receivers").
 //
-// Penumbra footprint (penumbraScale > 0): the penumbra width in pixels at a receiver is about
+// Penumbra footprint (penumbraScale >= 0; glint_shadow_denoiser_penumbra.hlsli: negative is no
+// estimate, 0 a light of size 0 whose shadows are all hard): the penumbra width in pixels at a
+// receiver is about
 // W = penumbraScale * b / z, b the blocker distance, z the view depth; per pixel, W is the
 // largest over its 5 x 5 neighbourhood (one shadow ray a pixel, and a lit one carries no
 // distance). A pass of step s scales every neighbour's weight by saturate((W - 1) / s): no taps
@@ -71,6 +73,7 @@
 
 #include "glint/common/glint_math.hlsli"
 #include "glint/shadow_denoiser/glint_shadow_denoiser_constants.h"
+#include "glint/shadow_denoiser/glint_shadow_denoiser_penumbra.hlsli"
 
 float2 GLINT_SHADOW_DENOISER_LoadMeanVariance(int2 pixel);
 float GLINT_SHADOW_DENOISER_LoadDepth(int2 pixel);
@@ -99,20 +102,8 @@ void GLINT_SHADOW_DENOISER_CountFilteredTile();
 groupshared float2 g_glint_shadow_denoiser_filter_values[GLINT_SHADOW_DENOISER_FILTER_BUFFERS * GLINT_SHADOW_DENOISER_FILTER_SLOTS];
 groupshared float4 g_glint_shadow_denoiser_filter_geometry[GLINT_SHADOW_DENOISER_FILTER_SLOTS];
 // Penumbra width in pixels each slot's shadow ray implies (0: lit or not a receiver); only with
-// penumbraScale > 0.
+// penumbraScale >= 0.
 groupshared float g_glint_shadow_denoiser_filter_penumbra[GLINT_SHADOW_DENOISER_FILTER_SLOTS];
-
-// Penumbra width in pixels a sample implies: penumbraScale * blocker / z. Unknown blockers
-// (negative, non-finite) give a width large enough for the full filter; lit samples 0.
-float GLINT_SHADOW_DENOISER_PenumbraWidth(float blocker, float z, float penumbraScale)
-{
-    if (!(z > 0.0))
-        return 0.0;
-    if (!GLINT_IsFinite(blocker) || blocker < 0.0)
-        return GLINT_SHADOW_DENOISER_FULL_PENUMBRA;
-    float width = penumbraScale * blocker / z;
-    return GLINT_IsFinite(width) ? min(width, GLINT_SHADOW_DENOISER_FULL_PENUMBRA) : GLINT_SHADOW_DENOISER_FULL_PENUMBRA;
-}
 
 float2 GLINT_SHADOW_DENOISER_SanitizeMeanVariance(float2 value)
 {
@@ -189,9 +180,13 @@ void GLINT_SHADOW_DENOISER_LoadSpan(uint groupIndex, uint groupThreads, int2 spa
 #endif
         g_glint_shadow_denoiser_filter_values[slot] = value;
         g_glint_shadow_denoiser_filter_geometry[slot] = float4(z, n);
-        if (penumbraScale > 0.0)
-            g_glint_shadow_denoiser_filter_penumbra[slot] = GLINT_SHADOW_DENOISER_PenumbraWidth(
-                GLINT_SHADOW_DENOISER_LoadBlockerDistance(pixel), z, penumbraScale);
+        if (GLINT_SHADOW_DENOISER_PenumbraKnown(penumbraScale))
+        {
+            float blocker = 0.0;
+            if (GLINT_SHADOW_DENOISER_PenumbraReadsBlockers(penumbraScale))
+                blocker = GLINT_SHADOW_DENOISER_LoadBlockerDistance(pixel);
+            g_glint_shadow_denoiser_filter_penumbra[slot] = GLINT_SHADOW_DENOISER_PenumbraWidth(blocker, z, penumbraScale);
+        }
     }
 }
 
@@ -200,7 +195,7 @@ void GLINT_SHADOW_DENOISER_LoadSpan(uint groupIndex, uint groupThreads, int2 spa
 float GLINT_SHADOW_DENOISER_PenumbraFootprint(int2 pixel, int2 spanOrigin, uint2 inputSize, uint step,
                                               float penumbraScale)
 {
-    if (!(penumbraScale > 0.0))
+    if (!GLINT_SHADOW_DENOISER_PenumbraKnown(penumbraScale))
         return 1.0;
     float width = 0.0;
     [unroll] for (int y = -2; y <= 2; ++y)

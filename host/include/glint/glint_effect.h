@@ -44,8 +44,9 @@ struct FrameInfo {
     float environmentMaxLod = 7.0f;
     std::uint32_t frameIndex = 0; // histories ping-pong on its parity
     bool resetHistory = false;    // first frame, camera cut or resize
-    // tan of the angular radius of the light ShadowVisibility samples; 0: unknown.
-    float shadowLightTanHalfAngle = 0.0f;
+    // tan of the angular radius of the light ShadowVisibility samples; 0: a light of size 0 (hard
+    // shadows); negative: unknown.
+    float shadowLightTanHalfAngle = -1.0f;
 };
 
 // What an application image holds. A tool fills each input from its own data by this kind.

@@ -68,15 +68,18 @@ struct ShadowDenoiserDesc {
     // own permutation of the passes that write the output (docs/shadow_denoiser.md, "Output
     // format").
     Format outputFormat = Format::R8Unorm;
-    // Penumbra-aware filtering (docs/shadow_denoiser.md, "Penumbra-aware filtering"): each
-    // filter pass's footprint follows the penumbra width in pixels, about
-    // blocker distance x 2 lightTanHalfAngle / (view depth x pixelAngularSize), so a hard
-    // shadow keeps its (temporally accumulated) input and a wide penumbra gets the full filter.
-    // Needs "shadow_blocker_distance" and both values below; with either at 0 (unknown), or
-    // penumbraAware false, every pixel gets the full filter (the behaviour before the estimate).
+    // The penumbra estimate (docs/shadow_denoiser.md, "Penumbra-aware filtering" and "Hard
+    // shadows pass through"): a receiver's penumbra is about
+    // W = blocker distance x 2 lightTanHalfAngle / (view depth x pixelAngularSize) pixels wide.
+    // Classification passes a receiver whose 9 x 9 neighbourhood has no W above 1 pixel straight
+    // through (its one sample is the answer: the output equals the input there), and each filter
+    // pass's footprint follows W. Needs "shadow_blocker_distance" when lightTanHalfAngle > 0;
+    // lightTanHalfAngle 0 (a light of angular radius 0) makes every shadow hard, so the output
+    // equals the input everywhere. With lightTanHalfAngle < 0 or pixelAngularSize 0 (unknown), or
+    // penumbraAware false, there is no estimate: the full temporal stage and filter everywhere.
     bool penumbraAware = true;
-    float lightTanHalfAngle = 0.0f; // tan of the light's angular radius (half-angle); 0: unknown
-    float pixelAngularSize = 0.0f;  // radians per pixel at the image centre, 2 tan(fovY / 2) / H; 0: unknown
+    float lightTanHalfAngle = -1.0f; // tan of the light's angular radius (half-angle); 0: size 0; < 0: unknown
+    float pixelAngularSize = 0.0f;   // radians per pixel at the image centre, 2 tan(fovY / 2) / H; 0: unknown
 
     // Classification (temporal) inputs. Matrices are row-major 4x4 with column vectors (q = M p).
     std::array<double, 16> reprojection{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}; // VP_prev VP^-1
@@ -91,8 +94,12 @@ struct ShadowDenoiserDesc {
 // value for the size): the factor classification applies to the variance it stores.
 float shadowStoredVarianceScale(const ShadowDenoiserDesc& desc);
 
-// Whether the plan reads "shadow_blocker_distance" and sizes the filter by the penumbra:
-// penumbraAware with a known light angle and pixel angular size.
+// Whether the passes use the penumbra estimate: penumbraAware with a known light angle (>= 0)
+// and pixel angular size (> 0).
+bool shadowPenumbraKnown(const ShadowDenoiserDesc& desc);
+
+// Whether the plan reads "shadow_blocker_distance": the estimate is known and the light has a
+// size (lightTanHalfAngle > 0).
 bool shadowPenumbraActive(const ShadowDenoiserDesc& desc);
 
 // Words of the visibility mask: ceil(W / 8) x ceil(H / 4).
@@ -110,7 +117,8 @@ std::string shadowTileMetadataName(std::uint32_t frameIndex);
 //   "shadow_filter_input"   RG32F W x H (mean, variance), only when classify is false
 //   "shadow_blocker_distance" R32F (or R16F) W x H, sampled, only when shadowPenumbraActive:
 //                           distance along the visibility sample's ray to its closest blocker
-//                           (view-depth units), 0 when lit, < 0 when unknown (full filter there)
+//                           (view-depth units), 0 when lit, < 0 when unknown (full filter there);
+//                           read by classification and the filter
 //   "shadow_mask"           buffer, 4 bytes per mask word, written by "prepare"
 //   "shadow_tile_metadata0/1" buffer, 4 bytes per 8x8 tile: bit 0 CLEAR, bit 1 LIGHT; written on
 //                           frame parity, the other read back as last frame's (rebuildClearHistory)

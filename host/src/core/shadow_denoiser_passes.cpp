@@ -46,6 +46,19 @@ shared::float4 viewDepthCoefficients(const ShadowDenoiserDesc& desc) {
                                        desc.farPlane);
 }
 
+// The constants' penumbraScale: 2 tan(light radius) / pixel angle, or -1 without an estimate
+// (glint_shadow_denoiser_penumbra.hlsli).
+float penumbraScale(const ShadowDenoiserDesc& desc) {
+    return shadowPenumbraKnown(desc) ? 2.0f * desc.lightTanHalfAngle / desc.pixelAngularSize : -1.0f;
+}
+
+// The blocker distance binding of classification and the filter: the shaders read it only with
+// a light of positive size; otherwise the depth stands in.
+ResourceUse blockerDistanceUse(const ShadowDenoiserDesc& desc) {
+    return {"g_glint_blocker_distance", shadowPenumbraActive(desc) ? "shadow_blocker_distance" : "shadow_depth",
+            Access::Read};
+}
+
 Pass preparePass(const ShadowDenoiserDesc& desc, Extent2D tiles) {
     Pass pass;
     pass.name = "prepare";
@@ -87,8 +100,7 @@ Pass filterPass(const ShadowDenoiserDesc& desc, std::uint32_t index, const char*
     constants.normalUnpack = {desc.normalUnpackMul, desc.normalUnpackAdd};
     constants.depthSigma = desc.depthSigma;
     constants.normalPower = desc.normalPower;
-    const bool penumbra = shadowPenumbraActive(desc);
-    constants.penumbraScale = penumbra ? 2.0f * desc.lightTanHalfAngle / desc.pixelAngularSize : 0.0f;
+    constants.penumbraScale = penumbraScale(desc);
     pass.constantsBinding = "g_glint_constants";
     pass.constants = core::packConstants(constants);
     pass.uses = {{"g_glint_filter_input", input, Access::Read},
@@ -108,9 +120,7 @@ Pass filterPass(const ShadowDenoiserDesc& desc, std::uint32_t index, const char*
         // Classification wrote the clear tiles of the output; this pass adds the listed ones.
         if (index == 2) pass.uses[3].access = Access::ReadWrite;
     }
-    // Without the estimate the shader never reads it: the depth stands in.
-    pass.uses.push_back(
-        {"g_glint_blocker_distance", penumbra ? "shadow_blocker_distance" : "shadow_depth", Access::Read});
+    pass.uses.push_back(blockerDistanceUse(desc));
     if (std::string_view(output) == "shadow_output") pass.pipeline = outputPipeline(desc, pass.pipeline);
     return pass;
 }
@@ -127,6 +137,7 @@ Pass classifyPass(const ShadowDenoiserDesc& desc, Extent2D tiles) {
     core::storeRows(desc.inverseViewProjection, constants.inverseViewProj);
     constants.eyePosition = {desc.eyePosition[0], desc.eyePosition[1], desc.eyePosition[2], 0.0f};
     constants.storedVarianceScale = shadowStoredVarianceScale(desc);
+    constants.penumbraScale = penumbraScale(desc);
     constants.viewDepth = viewDepthCoefficients(desc);
     constants.normalUnpack = {desc.normalUnpackMul, desc.normalUnpackAdd};
     constants.ndcYSign = desc.vulkanNdc ? 1.0f : -1.0f;
@@ -145,7 +156,8 @@ Pass classifyPass(const ShadowDenoiserDesc& desc, Extent2D tiles) {
                  {"g_glint_previous_metadata", shadowTileMetadataName(desc.frameIndex + 1), Access::Read},
                  {"g_glint_tile_metadata", shadowTileMetadataName(desc.frameIndex), Access::Write},
                  {"g_glint_shadow_variance", "shadow_scratch0", Access::Write},
-                 {"g_glint_moments", odd ? "shadow_moments1" : "shadow_moments0", Access::Write}};
+                 {"g_glint_moments", odd ? "shadow_moments1" : "shadow_moments0", Access::Write},
+                 blockerDistanceUse(desc)};
     if (usesTileList(desc)) {
         // It writes the clear tiles' final output.
         pass.pipeline = outputPipeline(desc, "shadow_denoiser_classify.list");
@@ -185,7 +197,8 @@ void pushSplitClassify(const ShadowDenoiserDesc& desc, Extent2D tiles, EffectPla
     keepBindings(temporal,
                  {"g_glint_shadow_mask", "g_glint_depth", "g_glint_previous_depth", "g_glint_normals",
                   "g_glint_motion", "g_glint_moments_history", "g_glint_previous_metadata",
-                  "g_glint_shadow_variance", "g_glint_moments", "g_glint_filter_tiles"});
+                  "g_glint_shadow_variance", "g_glint_moments", "g_glint_filter_tiles",
+                  "g_glint_blocker_distance"});
     for (ResourceUse& use : temporal.uses)
         if (use.binding == "g_glint_filter_tiles") use.access = Access::Read;
     plan.passes.push_back(std::move(classify));
@@ -203,10 +216,13 @@ Extent2D shadowMaskTiles(Extent2D size) {
             core::divideRoundUp(size.height, GLINT_SHADOW_DENOISER_MASK_TILE_HEIGHT)};
 }
 
-bool shadowPenumbraActive(const ShadowDenoiserDesc& desc) {
-    return desc.filter && desc.penumbraAware && desc.lightTanHalfAngle > 0.0f &&
-           desc.pixelAngularSize > 0.0f &&
+bool shadowPenumbraKnown(const ShadowDenoiserDesc& desc) {
+    return desc.penumbraAware && desc.lightTanHalfAngle >= 0.0f && desc.pixelAngularSize > 0.0f &&
            std::isfinite(2.0f * desc.lightTanHalfAngle / desc.pixelAngularSize);
+}
+
+bool shadowPenumbraActive(const ShadowDenoiserDesc& desc) {
+    return shadowPenumbraKnown(desc) && desc.lightTanHalfAngle > 0.0f;
 }
 
 float shadowStoredVarianceScale(const ShadowDenoiserDesc& desc) {
@@ -230,9 +246,10 @@ Result planShadowDenoiser(const ShadowDenoiserDesc& desc, EffectPlan& plan, std:
         return invalid(error, "normalPower must be 1..256");
     if (!(desc.storedVarianceScale >= 0.0f && std::isfinite(desc.storedVarianceScale)))
         return invalid(error, "storedVarianceScale must be finite and >= 0 (0: automatic)");
-    if (!(desc.lightTanHalfAngle >= 0.0f && std::isfinite(desc.lightTanHalfAngle)) ||
-        !(desc.pixelAngularSize >= 0.0f && std::isfinite(desc.pixelAngularSize)))
-        return invalid(error, "lightTanHalfAngle and pixelAngularSize must be finite and >= 0 (0: unknown)");
+    if (!std::isfinite(desc.lightTanHalfAngle))
+        return invalid(error, "lightTanHalfAngle must be finite (< 0: unknown)");
+    if (!(desc.pixelAngularSize >= 0.0f && std::isfinite(desc.pixelAngularSize)))
+        return invalid(error, "pixelAngularSize must be finite and >= 0 (0: unknown)");
     if (!std::isfinite(desc.normalUnpackMul) || !std::isfinite(desc.normalUnpackAdd))
         return invalid(error, "normal unpack factors must be finite");
 

@@ -100,11 +100,12 @@ Result planShadows(const FrameInfo& frame, const SettingValues& settings, Effect
     desc.depthSigma = settings.real("shadows.depthSigma");
     desc.normalPower = settings.real("shadows.normalPower");
     desc.penumbraAware = settings.flag("shadows.penumbraAware");
-    // The penumbra estimate's light and pixel sizes; either unknown (0) keeps the full filter.
+    // The penumbra estimate's light and pixel sizes; either unknown (light < 0, pixel 0) keeps
+    // the full temporal stage and filter; a light of size 0 passes every receiver through.
     desc.lightTanHalfAngle =
-        std::isfinite(frame.shadowLightTanHalfAngle) && frame.shadowLightTanHalfAngle > 0.0f
+        std::isfinite(frame.shadowLightTanHalfAngle) && frame.shadowLightTanHalfAngle >= 0.0f
             ? frame.shadowLightTanHalfAngle
-            : 0.0f;
+            : -1.0f;
     const double focalY = std::abs(frame.projection[5]); // 1 / tan(fovY / 2)
     const double pixelAngle = 2.0 / (focalY * static_cast<double>(frame.size.height));
     desc.pixelAngularSize =
