@@ -56,11 +56,15 @@ float SceneVisibilityAlong(float3 position, float3 normal, float3 dir, float max
 }
 
 // The same test, also giving the distance to the blocker along `dir`: 0 when the direction
-// reaches the light or lies below the surface (a blocker at the surface itself).
+// reaches the light; -1 (unknown) when it lies below the surface: the terminator's penumbra
+// follows the surface's curvature, not a blocker distance, so none can be given.
 float SceneVisibilityAndBlocker(float3 position, float3 normal, float3 dir, float maxT, out float blocker)
 {
     blocker = 0.0;
-    if (dot(normal, dir) <= 0.0) return 0.0;
+    if (dot(normal, dir) <= 0.0) {
+        blocker = -1.0;
+        return 0.0;
+    }
     SceneHit h = SceneTrace(SceneOffsetOrigin(position, normal), dir, maxT, false); // the closest blocker
     if (h.t > 0.0) {
         blocker = h.t;

@@ -36,6 +36,13 @@ GLINT_BINDING(5, 0) GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float> g_blocker;
 #if SCENE_WRITE_BLOCKER
         visibility = SceneVisibilityOneSample(position, normal, SceneLightConeAt(g_scene.shadowLight, position), rng,
                                               blocker);
+        // Below the surface there is no blocker (-1, unknown). On a sphere the terminator's
+        // penumbra is the band where the light's cone crosses the horizon, 2 r tan(angular
+        // radius) wide, as a blocker at distance r would cast: its radius stands in. Flat faces
+        // keep it unknown.
+        ScenePrimitive surface = g_scene_primitives[hit.prim];
+        if (blocker < 0.0 && surface.kind == GLINT_SCENE_PRIM_SPHERE)
+            blocker = surface.p1.x;
 #else
         float sum = SceneVisibilitySum(position, normal, SceneLightConeAt(g_scene.shadowLight, position),
                                        g_scene.sampleStart, g_scene.samples, g_scene.sampleTotal, rng);

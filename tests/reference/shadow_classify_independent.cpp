@@ -31,9 +31,10 @@ constexpr double kHistorySlack = 5e-5;
 // rounding by half an ulp of 25 (1e-6), in each of the two sums, divided by at least 1.
 constexpr double kScoreSlack = 1e-4;
 // Hard shadows (docs/shadow_denoiser.md, "Hard shadows pass through"): a receiver whose 9 x 9
-// neighbourhood holds no penumbra wider than 1 pixel passes through. The device computes the
-// widths in float (relative error a few 1e-7): a widest width this close to 1 is ambiguous.
+// neighbourhood holds no penumbra wider than half a pixel passes through. The device computes
+// the widths in float (relative error a few 1e-7): a widest width this close to 1/2 is ambiguous.
 constexpr int kHardRadius = 4;
+constexpr double kHardWidth = 0.5;
 constexpr double kUnknownPenumbra = 64.0; // an unknown blocker: a wide penumbra
 constexpr double kPenumbraMargin = 1e-5;
 
@@ -224,11 +225,11 @@ ShadowClassifyRanges shadowClassifyIndependent(const ShadowClassifyInputs& in,
                     }
                     if (in.penumbraScale >= 0.0f) {
                         const double widest = widestPenumbra(x, y);
-                        if (std::abs(widest - 1.0) <= kPenumbraMargin) {
+                        if (std::abs(widest - kHardWidth) <= kPenumbraMargin) {
                             out.ambiguous[p] = 1u;
                             continue;
                         }
-                        if (widest < 1.0) { // its sample, and a one-sample history
+                        if (widest < kHardWidth) { // its sample, and a one-sample history
                             const double sample = lit(x, y);
                             const double sv[2] = {sample, 0.0};
                             const double moments[4] = {sample, 0.0, 1.0, sample};

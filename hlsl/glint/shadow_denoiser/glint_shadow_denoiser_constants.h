@@ -27,11 +27,15 @@
 // the filter's full footprint.
 #define GLINT_SHADOW_DENOISER_FULL_PENUMBRA 64.0
 // Classification's hard-shadow test (docs/shadow_denoiser.md, "Hard shadows pass through"): a
-// receiver whose (2 HARD_RADIUS + 1)^2 neighbourhood implies no penumbra wider than one pixel
-// outputs its own sample. Wider than the filter's 5 x 5, so that the lit pixels at the edge of a
+// receiver whose (2 HARD_RADIUS + 1)^2 neighbourhood implies no penumbra wider than HARD_WIDTH
+// pixels outputs its own sample. Wider than the filter's 5 x 5, so that the lit pixels at the edge of a
 // wide penumbra are rarely taken for hard (every pixel within the radius must be lit), and so
 // that a pixel classification passes through takes no filter tap either.
 #define GLINT_SHADOW_DENOISER_HARD_RADIUS 4
+// The widest penumbra (pixels) a hard pixel's neighbourhood may imply. Below a pixel, not at
+// one: pixel centres inside a penumbra of 0.5-1 pixels still see intermediate values that one
+// sample cannot give (docs/shadow_denoiser.md, "Hard shadows pass through").
+#define GLINT_SHADOW_DENOISER_HARD_WIDTH 0.5
 
 #ifdef __cplusplus
 namespace glint::shaders {

@@ -19,7 +19,8 @@
 //   float  GLINT_SHADOW_DENOISER_LoadBlockerDistance(int2 pixel);
 //       Distance along this frame's shadow ray of an in-image pixel to its closest blocker, in
 //       the units of the view depth: > 0 for a shadowed sample, 0 when the ray reached the
-//       light (or the sample lay below the surface); negative or non-finite when unknown.
+//       light; negative or non-finite when unknown (a sample below the surface: the terminator's
+//       penumbra follows the curvature, not a blocker distance).
 //       Read only when penumbraScale > 0; an integration without the data returns -1 (or
 //       passes a negative penumbraScale): every pixel then takes the full filter.
 //

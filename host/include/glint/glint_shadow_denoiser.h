@@ -71,7 +71,7 @@ struct ShadowDenoiserDesc {
     // The penumbra estimate (docs/shadow_denoiser.md, "Penumbra-aware filtering" and "Hard
     // shadows pass through"): a receiver's penumbra is about
     // W = blocker distance x 2 lightTanHalfAngle / (view depth x pixelAngularSize) pixels wide.
-    // Classification passes a receiver whose 9 x 9 neighbourhood has no W above 1 pixel straight
+    // Classification passes a receiver whose 9 x 9 neighbourhood has no W above 0.5 pixel straight
     // through (its one sample is the answer: the output equals the input there), and each filter
     // pass's footprint follows W. Needs "shadow_blocker_distance" when lightTanHalfAngle > 0;
     // lightTanHalfAngle 0 (a light of angular radius 0) makes every shadow hard, so the output
