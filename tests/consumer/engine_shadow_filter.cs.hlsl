@@ -22,7 +22,7 @@ float3 GLINT_SHADOW_DENOISER_LoadNormal(int2 pixel)
 {
     return EngineSceneNormals.Load(int3(pixel, 0)).xyz * 2.0 - 1.0; // the engine's UNORM normals
 }
-// This engine has no blocker distances: unknown everywhere (and it passes penumbraScale 0).
+// This engine has no blocker distances: unknown everywhere (and it passes penumbraScale -1: no estimate).
 float GLINT_SHADOW_DENOISER_LoadBlockerDistance(int2 pixel) { return -1.0; }
 void GLINT_SHADOW_DENOISER_StoreFiltered(int2 pixel, float2 meanVariance)
 {
@@ -35,5 +35,5 @@ void GLINT_SHADOW_DENOISER_StoreFiltered(int2 pixel, float2 meanVariance)
     GLINT_SHADOW_DENOISER_Filter(groupId.xy, groupThreadId.xy, groupIndex, EngineShadowConstants.inputSize,
                                  EngineShadowConstants.step, EngineShadowConstants.finalPass != 0,
                                  EngineShadowConstants.viewDepth, EngineShadowConstants.depthSigma,
-                                 EngineShadowConstants.normalPower, 0.0);
+                                 EngineShadowConstants.normalPower, -1.0);
 }
