@@ -404,12 +404,14 @@ def study_tables(rows):
         lines += [f"### {effect}", "",
                   "| scene | point | settings | time (µs) |" + (" RT rays |" if hybrid else "")
                   + " FLIP |" + ("" if shadows else " HDR-FLIP |") + " MAE | RMSE | mean error |"
-                  + (" penumbra |" if shadows else "") + " non-finite | Pareto |",
+                  + (" penumbra | moving edge |" if shadows else "") + " non-finite | Pareto |",
                   "|---|---|---|---|" + ("---|" if hybrid else "") + "---|" + ("" if shadows else "---|")
-                  + "---|---|---|" + ("---|" if shadows else "") + "---|---|"]
+                  + "---|---|---|" + ("---|---|" if shadows else "") + "---|---|"]
         for r in (r for r in rows if r["effect"] == effect):
             # glint writes -1 where no pixel of the mask is in penumbra
-            penumbra = f" {scored(r['penumbra'] if r['penumbra'] >= 0 else None)} |" if shadows else ""
+            # moving edge: null where no receiver moved, absent in a study from before it
+            penumbra = (f" {scored(r['penumbra'] if r['penumbra'] >= 0 else None)} | {metric(r, 'moving_edge')} |"
+                        if shadows else "")
             fraction = r.get("traced_fraction", "")  # the share of rays ray traced
             traced = (f" {100 * float(fraction):.1f} % |" if fraction != "" else " - |") if hybrid else ""
             hdr = "" if shadows else f" {metric(r, 'flip_hdr')} |"

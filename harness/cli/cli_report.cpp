@@ -1,10 +1,11 @@
 // glint report: one self-contained HTML page from the folders `glint run` wrote: per run, the
 // metric in words, a plot of the error against frame per effect (noisy input, output and the
-// reference noise floor where the run measured one) and, where scripts/run_flip.py added it,
-// one of LDR-FLIP beside it, the last frame's images side by side (input, noisy, denoised,
-// composite, reference, error), the errors with their FLIP, per-pass GPU times; the
-// device on top; with --anchors, other implementations' points listed beside the scene they
-// were measured on, with their conditions. The demo's report.
+// reference noise floor where the run measured one), for visibility effects one of the error
+// over moving edges, and, where scripts/run_flip.py added it, one of LDR-FLIP, the last frame's
+// images side by side (input, noisy, denoised, composite, reference, error), the errors with
+// their moving edges and FLIP, per-pass GPU times; the device on top; with --anchors, other
+// implementations' points listed beside the scene they were measured on, with their
+// conditions. The demo's report.
 #include "cli_capture.h"
 #include "cli_commands.h"
 
@@ -110,7 +111,11 @@ std::string metricSentence(const std::string& effect, const nlohmann::json& summ
     if (effect == "shadows")
         return "Error of shadows: the mean of |visibility - reference visibility| (both in [0, 1], "
                "so no clamp is needed) over every pixel with a surface; the sky, where nothing "
-               "receives a shadow, is left out and drawn lit in the shadow images.";
+               "receives a shadow, is left out and drawn lit in the shadow images. The error over "
+               "moving edges is the same mean over the pixels with a surface whose reference changed "
+               "by more than " +
+               fixed(replay::kMovingEdgeChange, 2) +
+               " since the previous frame at the same pixel (none on the first frame).";
     return "Error of " + effect +
            ": per pixel, the luminance of |output - reference| (per RGB channel, radiance not "
            "clamped) divided by max(luminance(reference), 0.05), averaged over the glossy pixels "
@@ -160,6 +165,7 @@ std::string flipSentence(const nlohmann::json& summary) {
 report::Plot framePlot(const std::string& effect, const nlohmann::json& frames, const std::string& title,
                        const std::string& yLabel, const char* outputKey, const char* noisyKey,
                        const char* floorKey) {
+    // floorKey null: the value has no reference noise floor.
     report::Plot plot;
     plot.title = effect + ": " + title;
     plot.xLabel = "frame";
@@ -177,8 +183,8 @@ report::Plot framePlot(const std::string& effect, const nlohmann::json& frames, 
         denoised = denoised || error.value("image", std::string{}).ends_with("/denoised");
         const nlohmann::json noise = frame.value("referenceNoise", nlohmann::json::object());
         const nlohmann::json effectNoise = noise.value(effect, nlohmann::json::object());
-        floor.values.push_back(valueOr(effectNoise, floorKey));
-        anyFloor = anyFloor || effectNoise.contains(floorKey);
+        floor.values.push_back(floorKey ? valueOr(effectNoise, floorKey) : std::nan(""));
+        anyFloor = anyFloor || (floorKey && effectNoise.contains(floorKey));
     }
     if (!denoised) output.label = "output (not denoised)";
     if (anyNoisy) plot.series.push_back(std::move(noisy));
@@ -192,11 +198,11 @@ report::Plot errorPlot(const std::string& effect, const nlohmann::json& frames) 
                      "mean");
 }
 
-// Whether any frame holds errors.<effect>.flip (a number, or null where nothing was scored).
-bool hasFlip(const std::string& effect, const nlohmann::json& frames) {
+// Whether any frame holds errors.<effect>.<key> (a number, or null where nothing was scored).
+bool anyFrameHas(const std::string& effect, const nlohmann::json& frames, const char* key) {
     for (const auto& frame : frames) {
         const nlohmann::json errors = frame.value("errors", nlohmann::json::object());
-        if (errors.value(effect, nlohmann::json::object()).contains("flip")) return true;
+        if (errors.value(effect, nlohmann::json::object()).contains(key)) return true;
     }
     return false;
 }
@@ -204,6 +210,15 @@ bool hasFlip(const std::string& effect, const nlohmann::json& frames) {
 report::Plot flipPlot(const std::string& effect, const nlohmann::json& frames) {
     return framePlot(effect, frames, "LDR-FLIP against the reference", "mean LDR-FLIP", "flip", "noisyFlip",
                      "flip");
+}
+
+// Moving edges come and go from frame to frame, so each value is marked: a frame alone between
+// frames without moving edges has no line to sit on.
+report::Plot movingEdgePlot(const std::string& effect, const nlohmann::json& frames) {
+    report::Plot plot = framePlot(effect, frames, "error over moving edges", "mean error over moving edges",
+                                  "movingEdge", "noisyMovingEdge", nullptr);
+    for (report::PlotSeries& series : plot.series) series.markers = true;
+    return plot;
 }
 
 report::Section runSection(const std::filesystem::path& dir, const nlohmann::json& summary,
@@ -226,7 +241,9 @@ report::Section runSection(const std::filesystem::path& dir, const nlohmann::jso
         for (const auto& [effect, values] : summary.at("error").items()) {
             section.text += "\n" + metricSentence(effect, summary);
             section.plots.push_back(errorPlot(effect, frames));
-            if (hasFlip(effect, frames)) section.plots.push_back(flipPlot(effect, frames));
+            if (anyFrameHas(effect, frames, "movingEdge"))
+                section.plots.push_back(movingEdgePlot(effect, frames));
+            if (anyFrameHas(effect, frames, "flip")) section.plots.push_back(flipPlot(effect, frames));
         }
         section.text += "\n" + flipSentence(summary);
     }
@@ -271,12 +288,13 @@ report::Section runSection(const std::filesystem::path& dir, const nlohmann::jso
         }
     }
     if (summary.contains("error")) {
-        report::Table errors{{"effect", "error, first frame", "error, last frame",
-                              "its noisy input, last frame", "reference noise floor, last frame",
-                              "converged (floor below a quarter of |output - noisy|)",
-                              "clamped MAE, last frame", "clamped RMSE, last frame", "FLIP, last frame",
-                              "its noisy input's FLIP, last frame"},
-                             {}};
+        report::Table errors{
+            {"effect", "error, first frame", "error, last frame", "its noisy input, last frame",
+             "error over moving edges, last frame", "its noisy input's, over the same moving edges",
+             "reference noise floor, last frame", "converged (floor below a quarter of |output - noisy|)",
+             "clamped MAE, last frame", "clamped RMSE, last frame", "FLIP, last frame",
+             "its noisy input's FLIP, last frame"},
+            {}};
         const nlohmann::json lastErrors = frames.back().value("errors", nlohmann::json::object());
         const nlohmann::json lastNoise = frames.back().value("referenceNoise", nlohmann::json::object());
         for (const auto& [effect, values] : summary.at("error").items()) {
@@ -295,6 +313,15 @@ report::Section runSection(const std::filesystem::path& dir, const nlohmann::jso
             const auto flip = [&](const nlohmann::json& object, const char* key) {
                 return object.is_object() && object.contains(key) ? scored(object.at(key)) : std::string("-");
             };
+            // "-" for an effect without moving edges; "no pixels scored" where none moved.
+            const auto movingEdge = [&](const char* key) {
+                if (!lastError.is_object() || !lastError.contains(key)) return std::string("-");
+                std::string text = scored(lastError.at(key));
+                if (lastError.at(key).is_number() && lastError.contains("movingEdgePixels"))
+                    text += " (" + std::to_string(lastError.at("movingEdgePixels").get<std::size_t>()) +
+                            " pixels)";
+                return text;
+            };
             std::string floor = shown(valueOr(noise, "mean"));
             if (floor != "-") {
                 floor += " (clamped MAE " + shown(valueOr(noise, "maeClamped"));
@@ -302,7 +329,8 @@ report::Section runSection(const std::filesystem::path& dir, const nlohmann::jso
                 floor += ")";
             }
             errors.rows.push_back({effect, scored(values.at("first")), scored(values.at("last")),
-                                   noisy >= 0.0 ? fixed(noisy, 4) : "-", floor,
+                                   noisy >= 0.0 ? fixed(noisy, 4) : "-", movingEdge("movingEdge"),
+                                   movingEdge("noisyMovingEdge"), floor,
                                    convergence(valueOr(noise, "mean"), values.at("last"), noisy),
                                    shown(valueOr(lastError, "maeClamped")),
                                    shown(valueOr(lastError, "rmseClamped")), flip(lastError, "flip"),

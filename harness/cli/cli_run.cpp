@@ -22,6 +22,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <optional>
 #include <unistd.h>
 
 namespace glint::cli {
@@ -95,6 +96,10 @@ int runRun(const ReplayOptions& options) {
     source.checkFrames(range.first, range.last, sessionOptions);
     const capture::Frame first = source.frame(range.first);
     source.checkEffects(first, range.first, sessionOptions);
+    // The frame before each replayed one, whose reference gives the moving edges
+    // (replay::referenceErrors): before the first, the capture's frame before the range, if any.
+    std::optional<capture::Frame> previous;
+    if (range.first > 0) previous = source.frame(range.first - 1);
     std::unique_ptr<CaptureSource> second;
     if (!options.secondReference.empty()) {
         second = std::make_unique<CaptureSource>(options.secondReference);
@@ -139,7 +144,7 @@ int runRun(const ReplayOptions& options) {
             }
         } endProgressLine{false};
         for (std::size_t index = range.first; index <= range.last; ++index) {
-            const capture::Frame frame = index == range.first ? first : source.frame(index);
+            capture::Frame frame = index == range.first ? first : source.frame(index);
             const replay::FrameResult result = session.run(frame);
             // Named by the input's own frame number (Blender's 0001.exr -> frame_0001).
             const std::string folder = frameFolderName(source.frameNumber(index));
@@ -183,8 +188,8 @@ int runRun(const ReplayOptions& options) {
                                     referenceImage(secondFrame, noise.effect), false);
                 }
             }
-            for (const replay::ReferenceError& error :
-                 replay::referenceErrors(frame, result, roughnessThreshold)) {
+            for (const replay::ReferenceError& error : replay::referenceErrors(
+                     frame, result, roughnessThreshold, previous ? &*previous : nullptr)) {
                 writeImageFiles(dir, error.effect + "_error", error.effect + "/error", error.map, true);
                 // The pixels the error was measured over, for scripts/run_flip.py: EXR only.
                 writeImageFiles(dir, error.effect + "_mask", error.effect + "/mask",
@@ -202,9 +207,20 @@ int runRun(const ReplayOptions& options) {
                                                   {"maeClamped", error.maeClamped},
                                                   {"rmseClamped", error.rmseClamped}};
                 if (error.noisyMean >= 0.0) record["errors"][error.effect]["noisyMean"] = error.noisyMean;
+                if (error.visibility) {
+                    // null where no receiver is a moving edge (the first frame, or nothing moved).
+                    const auto orNull = [](const std::optional<double>& value) {
+                        return value ? nlohmann::json(*value) : nlohmann::json(nullptr);
+                    };
+                    record["errors"][error.effect]["movingEdgePixels"] = error.movingEdgePixels;
+                    record["errors"][error.effect]["movingEdge"] = orNull(error.movingEdge);
+                    if (result.find(error.effect + "/noisy"))
+                        record["errors"][error.effect]["noisyMovingEdge"] = orNull(error.noisyMovingEdge);
+                }
                 if (error.nonFinite > 0.0) ++nonFiniteFrames;
             }
             summary["frames"].push_back(record);
+            previous = std::move(frame);
             progress(index - range.first + 1, total);
             endProgressLine.shown = total >= 2 && index < range.last; // the last one ends its line
         }

@@ -156,13 +156,17 @@ struct Row {
     std::optional<replay::ReferenceError> floor;
 };
 
-// Runs every frame with readback and measures the last one against its reference.
+// Runs every frame with readback and measures the last one against its reference (its moving
+// edges against the frame before it).
 replay::ReferenceError lastFrameError(const gpu::Context& context, const SimulatedScene& scene,
                                       const replay::SessionOptions& options, float maskThreshold,
                                       replay::FrameResult& result) {
     replay::Session session(context, scene.frames.front(), scene.environment, options);
     for (const capture::Frame& frame : scene.frames) result = session.run(frame);
-    for (replay::ReferenceError& error : replay::referenceErrors(scene.frames.back(), result, maskThreshold))
+    const capture::Frame* previous =
+        scene.frames.size() > 1 ? &scene.frames[scene.frames.size() - 2] : nullptr;
+    for (replay::ReferenceError& error :
+         replay::referenceErrors(scene.frames.back(), result, maskThreshold, previous))
         if (error.effect == options.effects.front()) return error;
     throw std::runtime_error("study: scene " + scene.name + " has no " + options.effects.front() +
                              " reference");
@@ -236,6 +240,11 @@ std::string rayTracedShare(const Measurement& measurement) {
     return formatNumber(*traced + *answered > 0.0 ? *traced / (*traced + *answered) : 0.0);
 }
 
+// A CSV field of a value that may be missing: "" then.
+std::string optionalField(const std::optional<double>& value) {
+    return value ? formatNumber(*value) : "";
+}
+
 // `choices`: the presets and the budget choice (choosePresetsAndBudget), kept in study.json.
 void writeResults(const Plan& plan, const gpu::Context& context, const std::vector<Row>& rows,
                   const nlohmann::json& choices) {
@@ -251,7 +260,9 @@ void writeResults(const Plan& plan, const gpu::Context& context, const std::vect
     std::ostringstream csv;
     csv << "scene,effect,label,settings,time_us,time_min_us,time_max_us,passes,error_mean,rmse,mae,rmse_"
            "clamped,"
-           "penumbra,non_finite,traced_fraction,reference_spp,floor_error_mean,floor_mae,floor_rmse_clamped,"
+           "penumbra,moving_edge,noisy_moving_edge,moving_edge_pixels,non_finite,traced_fraction,reference_"
+           "spp,"
+           "floor_error_mean,floor_mae,floor_rmse_clamped,"
            "output,"
            "reference,reference2,mask,device\n";
     for (const Row& row : rows) {
@@ -262,8 +273,11 @@ void writeResults(const Plan& plan, const gpu::Context& context, const std::vect
             << row.measurement.total.medianUs << "," << row.measurement.total.minUs << ","
             << row.measurement.total.maxUs << "," << passesField(row.measurement) << "," << row.error.mean
             << "," << row.error.rmse << "," << row.error.maeClamped << "," << row.error.rmseClamped << ","
-            << row.error.penumbra << "," << row.error.nonFinite << "," << traced << "," << row.referenceSpp
-            << "," << (row.floor ? formatNumber(row.floor->mean) : "") << ","
+            << row.error.penumbra << "," << optionalField(row.error.movingEdge) << ","
+            << optionalField(row.error.noisyMovingEdge) << ","
+            << (row.error.visibility ? std::to_string(row.error.movingEdgePixels) : "") << ","
+            << row.error.nonFinite << "," << traced << "," << row.referenceSpp << ","
+            << (row.floor ? formatNumber(row.floor->mean) : "") << ","
             << (row.floor ? formatNumber(row.floor->maeClamped) : "") << ","
             << (row.floor ? formatNumber(row.floor->rmseClamped) : "") << "," << row.output << ","
             << row.reference << "," << row.reference2 << "," << row.mask << ","
@@ -286,6 +300,15 @@ void writeResults(const Plan& plan, const gpu::Context& context, const std::vect
                       {"output", row.output},
                       {"reference", row.reference},
                       {"mask", row.mask}});
+        if (row.error.visibility) {
+            // null where no receiver of the last frame is a moving edge.
+            const auto orNull = [](const std::optional<double>& value) {
+                return value ? nlohmann::json(*value) : nlohmann::json(nullptr);
+            };
+            entry["moving_edge"] = orNull(row.error.movingEdge);
+            entry["noisy_moving_edge"] = orNull(row.error.noisyMovingEdge);
+            entry["moving_edge_pixels"] = row.error.movingEdgePixels;
+        }
         if (row.floor) {
             entry["reference2"] = row.reference2;
             entry["floor"] = {{"error_mean", row.floor->mean},

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 namespace glint::replay {
@@ -54,6 +55,7 @@ ReferenceError compare(const std::string& effect, const NamedImage& output, cons
     ReferenceError error;
     error.effect = effect;
     error.image = output.name;
+    error.visibility = !relative;
     const report::Image& out = output.image;
     const std::uint32_t channels = std::min(out.channels, reference.channels);
     error.map = report::Image{out.width, out.height, 1,
@@ -104,6 +106,34 @@ ReferenceError compare(const std::string& effect, const NamedImage& output, cons
     return error;
 }
 
+// `previous`'s reference layer for `effect`, one channel (what the moving edges compare), or
+// none when it has no such layer.
+std::optional<report::Image> previousReference(const capture::Frame& previous, const capture::Frame& frame,
+                                               const std::string& effect) {
+    if (previous.width != frame.width || previous.height != frame.height)
+        throw std::invalid_argument("previous frame: it is " + std::to_string(previous.width) + "x" +
+                                    std::to_string(previous.height) + ", the frame " +
+                                    std::to_string(frame.width) + "x" + std::to_string(frame.height));
+    const EffectDescriptor* descriptor = findEffect(effect);
+    if (!descriptor || descriptor->reference.empty()) return std::nullopt;
+    const std::string name = "reference." + descriptor->reference;
+    if (!capture::findLayer(previous, name)) return std::nullopt;
+    return report::Image{previous.width, previous.height, 1, layerChannels(previous, name, 1)};
+}
+
+// The moving edges of `error` (an absolute, visibility error): the output's and the noisy
+// input's mean over the mask's pixels whose reference moved since `previous`.
+void scoreMovingEdges(ReferenceError& error, const NamedImage& output, const NamedImage* noisy,
+                      const report::Image& reference, const report::Image& previous,
+                      const std::vector<std::uint8_t>& mask) {
+    const std::vector<std::uint8_t> moving = movingEdgeMask(reference, previous, mask);
+    const ReferenceError edges = compare(error.effect, output, reference, moving, false);
+    error.movingEdgePixels = edges.pixels;
+    if (edges.pixels == 0) return;
+    error.movingEdge = edges.mean;
+    if (noisy) error.noisyMovingEdge = compare(error.effect, *noisy, reference, moving, false).mean;
+}
+
 // The effects whose outputs are reflections, scored on the glossy mask.
 bool isReflectionEffect(const std::string& effect) {
     return effect == "reflections" || effect == "hybrid";
@@ -116,8 +146,27 @@ std::vector<std::uint8_t> errorMask(const capture::Frame& frame, const std::stri
     return isReflectionEffect(effect) ? glossyMask(frame, roughnessThreshold) : surfaceMask(frame);
 }
 
+std::vector<std::uint8_t> movingEdgeMask(const report::Image& reference,
+                                         const report::Image& previousReference,
+                                         const std::vector<std::uint8_t>& mask, float change) {
+    const std::size_t count = mask.size();
+    if (std::size_t{reference.width} * reference.height != count ||
+        std::size_t{previousReference.width} * previousReference.height != count)
+        throw std::invalid_argument(
+            "moving edges: references of " + std::to_string(reference.width) + "x" +
+            std::to_string(reference.height) + " and " + std::to_string(previousReference.width) + "x" +
+            std::to_string(previousReference.height) + " for a mask of " + std::to_string(count) + " pixels");
+    std::vector<std::uint8_t> moving(count, 0);
+    for (std::size_t i = 0; i < count; ++i) {
+        const float now = reference.pixels[i * reference.channels];
+        const float before = previousReference.pixels[i * previousReference.channels];
+        moving[i] = mask[i] && std::isfinite(now) && std::isfinite(before) && std::abs(now - before) > change;
+    }
+    return moving;
+}
+
 std::vector<ReferenceError> referenceErrors(const capture::Frame& frame, const FrameResult& result,
-                                            float roughnessThreshold) {
+                                            float roughnessThreshold, const capture::Frame* previous) {
     std::vector<ReferenceError> errors;
     for (const std::string effect : {"reflections", "hybrid"}) {
         const NamedImage* reference = result.find(effect + "/reference");
@@ -136,8 +185,13 @@ std::vector<ReferenceError> referenceErrors(const capture::Frame& frame, const F
         if (const NamedImage* output = result.find("shadows/denoised")) {
             const std::vector<std::uint8_t> mask = surfaceMask(frame);
             errors.push_back(compare("shadows", *output, reference->image, mask, false));
-            if (const NamedImage* noisy = result.find("shadows/noisy"))
+            const NamedImage* noisy = result.find("shadows/noisy");
+            if (noisy)
                 errors.back().noisyMean = compare("shadows", *noisy, reference->image, mask, false).mean;
+            if (previous)
+                if (const std::optional<report::Image> before =
+                        previousReference(*previous, frame, "shadows"))
+                    scoreMovingEdges(errors.back(), *output, noisy, reference->image, *before, mask);
         }
     return errors;
 }

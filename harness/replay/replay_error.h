@@ -6,6 +6,9 @@
 //                max(luminance(ref), 0.05), the metric the denoiser tests use
 //   shadows      "denoised" against reference.shadow over receivers (depth not background);
 //                per-pixel |out - ref|; `penumbra` is the mean over reference in (0.05, 0.95)
+// Moving edges (effects scored by |out - ref|, i.e. visibility): the mask's pixels where the
+// reference changed by more than kMovingEdgeChange since the previous frame of the sequence, at
+// the same pixel; the error of the output and of its noisy input over them.
 // Non-finite output pixels count in `nonFinite` and as error 1 in the map, never as NaN.
 // `maeClamped`: radiance (or visibility) clamped to [0, kMaeClamp] per channel, then the mean of
 // |out - ref| over the colour channels and the mask's pixels; bounded, so a few fireflies in
@@ -17,6 +20,7 @@
 #include "replay/replay_session.h"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,6 +28,9 @@ namespace glint::replay {
 
 // The upper end of the range `maeClamped` clamps radiance to (the lower end is 0).
 inline constexpr double kMaeClamp = 16.0;
+
+// The change of the reference since the previous frame above which a pixel is a moving edge.
+inline constexpr float kMovingEdgeChange = 0.25f;
 
 struct ReferenceError {
     std::string effect;       // "reflections"
@@ -36,7 +43,14 @@ struct ReferenceError {
     double penumbra = -1.0;   // shadows: mean |error| over penumbra pixels (-1 when there are none)
     double noisyMean = -1.0;  // the same mean for the effect's noisy input, when the output is denoised
     double nonFinite = 0.0;   // fraction of output pixels (all, not only the mask) that are not finite
-    report::Image map;        // per-pixel error, 0 outside the mask
+    bool visibility = false;  // scored by |out - ref| (penumbra and moving edges apply)
+    // Visibility effects: the moving-edge pixels (movingEdgeMask) and the mean |out - ref| over
+    // them of the output and of its noisy input; 0 and empty without a previous frame or when no
+    // pixel moved.
+    std::size_t movingEdgePixels = 0;
+    std::optional<double> movingEdge;
+    std::optional<double> noisyMovingEdge;
+    report::Image map; // per-pixel error, 0 outside the mask
 };
 
 // The pixels the error of `effect` ("reflections" or "shadows") is measured over, as above:
@@ -44,9 +58,21 @@ struct ReferenceError {
 std::vector<std::uint8_t> errorMask(const capture::Frame& frame, const std::string& effect,
                                     float roughnessThreshold);
 
-// One entry per effect whose output and reference are both in `result`.
+// The pixels of `mask` where the reference's first channel differs from the previous frame's
+// at the same pixel by more than `change`: 1 there, 0 elsewhere and where either is not finite.
+// Both references must have the mask's pixel count (std::invalid_argument otherwise).
+std::vector<std::uint8_t> movingEdgeMask(const report::Image& reference,
+                                         const report::Image& previousReference,
+                                         const std::vector<std::uint8_t>& mask,
+                                         float change = kMovingEdgeChange);
+
+// One entry per effect whose output and reference are both in `result`. `previous`, the
+// sequence's frame before `frame` (none on its first frame), gives the visibility effects their
+// moving edges from its reference layer; a `previous` of another size throws
+// std::invalid_argument naming both sizes.
 std::vector<ReferenceError> referenceErrors(const capture::Frame& frame, const FrameResult& result,
-                                            float roughnessThreshold);
+                                            float roughnessThreshold,
+                                            const capture::Frame* previous = nullptr);
 
 // The noise of the capture's own references: for every effect referenceErrors scores, the
 // reference in `result` against `second`'s reference layer (the same frame rendered again with

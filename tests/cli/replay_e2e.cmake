@@ -4,7 +4,12 @@
 #                a bound, with no non-finite pixel, and the error mask written (EXR)
 #   shadows:     the courtyard through run; the denoised error over receivers against
 #                reference.shadow must be below the noisy input's and under a bound, the
-#                penumbra's under a bound, with no non-finite pixel
+#                penumbra's under a bound, with no non-finite pixel; every frame has the
+#                moving-edge fields, and frame 0 (no previous frame) no moving edge (null)
+#   movingedges: a box still on frames 0-1 and moved on frame 2 under a sun of no size (hard
+#                shadows, the noisy input exact): frame 1 has no moving edge (0 pixels,
+#                null), frame 2 some, where the noisy input's error is exactly 0; a run of
+#                frame 2 alone takes frame 1 of the capture as its previous frame
 #   roundtrip:   dump a frame, check it against itself (exit 0), then against a dump made with
 #                a different traversal budget (exit 1, the intersection differs), then report
 #   noisefloor:  --second-reference: a capture against itself has a noise floor of exactly 0
@@ -37,6 +42,20 @@ function(require_less name value bound)
     message(FATAL_ERROR "${name} = ${value}, not below ${bound}")
   endif()
   message(STATUS "${name} = ${value} (bound ${bound})")
+endfunction()
+
+# Frame `frame` of summary `json` has no moving edge (`expect` none: 0 pixels, null errors) or
+# some (pixels above 0, both errors numbers).
+function(require_moving_edges json frame expect)
+  string(JSON pixels GET "${json}" frames ${frame} errors shadows movingEdgePixels)
+  string(JSON output TYPE "${json}" frames ${frame} errors shadows movingEdge)
+  string(JSON noisy TYPE "${json}" frames ${frame} errors shadows noisyMovingEdge)
+  if(expect STREQUAL "none" AND NOT (pixels EQUAL 0 AND output STREQUAL "NULL" AND noisy STREQUAL "NULL"))
+    message(FATAL_ERROR "frame ${frame} should have no moving edge: ${pixels} pixels, errors ${output}, ${noisy}")
+  elseif(expect STREQUAL "some" AND NOT (pixels GREATER 0 AND output STREQUAL "NUMBER" AND noisy STREQUAL "NUMBER"))
+    message(FATAL_ERROR "frame ${frame} should have moving edges: ${pixels} pixels, errors ${output}, ${noisy}")
+  endif()
+  message(STATUS "frame ${frame}: ${pixels} moving-edge pixels")
 endfunction()
 
 if(CASE STREQUAL "reflections")
@@ -80,6 +99,32 @@ elseif(CASE STREQUAL "shadows")
   endif()
   if(NOT EXISTS "${OUT}/run/frame_0005/shadows_mask.exr")
     message(FATAL_ERROR "run wrote no shadows_mask.exr")
+  endif()
+  foreach(frame RANGE ${lastFrame})
+    foreach(key movingEdgePixels movingEdge noisyMovingEdge)
+      string(JSON kind ERROR_VARIABLE missing TYPE "${json}" frames ${frame} errors shadows ${key})
+      if(missing)
+        message(FATAL_ERROR "summary.json frame ${frame} has no errors.shadows.${key}")
+      endif()
+    endforeach()
+  endforeach()
+  require_moving_edges("${json}" 0 none)
+elseif(CASE STREQUAL "movingedges")
+  glint_expect(0 --validate simulate "${CASES}/box_moves_on_frame_2.toml" --out "${OUT}/capture")
+  glint_expect(0 --validate run "${OUT}/capture" --out "${OUT}/run")
+  file(READ "${OUT}/run/summary.json" json)
+  require_moving_edges("${json}" 1 none)
+  require_moving_edges("${json}" 2 some)
+  string(JSON pixels GET "${json}" frames 2 errors shadows movingEdgePixels)
+  string(JSON noisy GET "${json}" frames 2 errors shadows noisyMovingEdge)
+  if(NOT noisy EQUAL 0)
+    message(FATAL_ERROR "the noisy input of a sun of no size differs from its reference on moving edges: ${noisy}")
+  endif()
+  glint_expect(0 run "${OUT}/capture" --frames 2 --out "${OUT}/run_frame_2")
+  file(READ "${OUT}/run_frame_2/summary.json" alone)
+  string(JSON alonePixels GET "${alone}" frames 0 errors shadows movingEdgePixels)
+  if(NOT alonePixels EQUAL pixels)
+    message(FATAL_ERROR "frame 2 replayed alone has ${alonePixels} moving-edge pixels, ${pixels} in the whole run")
   endif()
 elseif(CASE STREQUAL "noisefloor")
   glint_expect(0 --validate simulate "${SCENES}/glossy_room.toml" --size 32x18 --frame-count 2 --spp 4 --out "${OUT}/capture")

@@ -43,10 +43,11 @@ glint_cli_test(NAME "report without summary.json names the file" LABELS unit EXI
   COMMAND report "${GLINT_CLI_SAMPLE_DIR}" --out "${PROJECT_BINARY_DIR}/test-output/cli/report_bad.html")
 
 # Simulated scenes with references through run (bounds in replay_e2e.cmake), then dump/check.
-foreach(case IN ITEMS reflections shadows roundtrip unscored noisefloor)
+foreach(case IN ITEMS reflections shadows movingedges roundtrip unscored noisefloor)
   add_test(NAME "cli: replay end to end: ${case}"
     COMMAND "${CMAKE_COMMAND}" "-DGLINT=$<TARGET_FILE:glint>" "-DCASE=${case}"
-            "-DSCENES=${PROJECT_SOURCE_DIR}/harness/scenes" "-DOUT=${PROJECT_BINARY_DIR}/test-output/cli/replay_${case}"
+            "-DSCENES=${PROJECT_SOURCE_DIR}/harness/scenes" "-DCASES=${CMAKE_CURRENT_SOURCE_DIR}/cli/scenes"
+            "-DOUT=${PROJECT_BINARY_DIR}/test-output/cli/replay_${case}"
             -P "${CMAKE_CURRENT_SOURCE_DIR}/cli/replay_e2e.cmake")
   set_tests_properties("cli: replay end to end: ${case}" PROPERTIES LABELS gpu)
 endforeach()

@@ -3,8 +3,8 @@
 # clamp range, reference samples and seeds), draws one error-against-frame plot with the noisy
 # input, the output and the reference noise floor, and lists the glossy room's anchor points
 # with their conditions in a table, never on the plot; its FLIP columns show "-" without FLIP
-# values, and the values scripts/run_flip.py adds (with a FLIP plot) when the summary has them. A
-# malformed anchors file is one line naming it.
+# values, and the values scripts/run_flip.py adds (with a FLIP plot) when the summary has them;
+# a shadows run's moving-edge columns and plot. A malformed anchors file is one line naming it.
 file(REMOVE_RECURSE "${OUT}")
 include("${CMAKE_CURRENT_LIST_DIR}/run_glint.cmake")
 
@@ -125,6 +125,62 @@ run_glint(0 report "${OUT}/null_flip" --out "${OUT}/report_null_flip.html")
 file(READ "${OUT}/report_null_flip.html" null_html)
 if(NOT null_html MATCHES "<td>0.1250</td><td>no pixels scored</td></tr>")
   message(FATAL_ERROR "report_null_flip.html does not show a null FLIP as \"no pixels scored\"")
+endif()
+
+# A reflections run has no moving edges: "-" in both of their columns.
+if(NOT html MATCHES "<td>0.8000</td><td>-</td><td>-</td><td>0.0625 ")
+  message(FATAL_ERROR "report.html of a reflections run does not show \"-\" for the moving edges")
+endif()
+
+# A shadows run with moving edges (docs/replay.md): none on frame 0 (null), then 12 and 8
+# pixels. The table shows the last frame's with its pixel count, the metric sentence says what
+# they are, and a plot draws them against frame with a marker on every value: the error plot's
+# two lines over the three frames, the moving-edge plot's two over frames 1-2 and four markers.
+file(MAKE_DIRECTORY "${OUT}/walker/frame_0002")
+file(WRITE "${OUT}/walker/summary.json" [=[
+{
+  "capture": "captures/walker",
+  "device": {"name": "test device", "driver": "test driver", "subgroupSize": 8},
+  "effects": ["shadows"],
+  "settings": [],
+  "width": 160, "height": 90,
+  "frames": [
+    {"frame": 0, "folder": "frame_0000", "images": [],
+     "errors": {"shadows": {"image": "shadows/denoised", "pixels": 100, "mean": 0.01, "penumbra": 0.1,
+                            "noisyMean": 0.02, "movingEdgePixels": 0, "movingEdge": null, "noisyMovingEdge": null}}},
+    {"frame": 1, "folder": "frame_0001", "images": [],
+     "errors": {"shadows": {"image": "shadows/denoised", "pixels": 100, "mean": 0.01, "penumbra": 0.1,
+                            "noisyMean": 0.02, "movingEdgePixels": 12, "movingEdge": 0.25, "noisyMovingEdge": 0.5}}},
+    {"frame": 2, "folder": "frame_0002", "images": [],
+     "errors": {"shadows": {"image": "shadows/denoised", "pixels": 100, "mean": 0.01, "penumbra": 0.1,
+                            "noisyMean": 0.02, "movingEdgePixels": 8, "movingEdge": 0.125, "noisyMovingEdge": 0.375}}}
+  ],
+  "error": {"shadows": {"first": 0.01, "last": 0.01, "noisyLast": 0.02}}
+}
+]=])
+run_glint(0 report "${OUT}/walker" --out "${OUT}/report_walker.html")
+file(READ "${OUT}/report_walker.html" walker_html)
+expect_all("${walker_html}" report_walker.html
+    "<th>error over moving edges, last frame</th><th>its noisy input&#39;s, over the same moving edges</th>"
+    "<td>0.0200</td><td>0.1250 \\(8 pixels\\)</td><td>0.3750 \\(8 pixels\\)</td>"
+    "changed by more than 0.25 since the previous frame at the same pixel"
+    "shadows: error over moving edges")
+expect_polylines("${walker_html}" 4 "error: noisy, output; moving edges: noisy, output")
+string(REGEX MATCHALL "<circle" markers "${walker_html}")
+list(LENGTH markers marker_count)
+if(NOT marker_count EQUAL 4)
+  message(FATAL_ERROR "expected a marker on each of the 4 moving-edge values, found ${marker_count}")
+endif()
+# No receiver moved on the last frame: "no pixels scored", never 0.
+file(READ "${OUT}/walker/summary.json" still_summary)
+string(REPLACE "\"movingEdgePixels\": 8, \"movingEdge\": 0.125, \"noisyMovingEdge\": 0.375"
+       "\"movingEdgePixels\": 0, \"movingEdge\": null, \"noisyMovingEdge\": null" still_summary "${still_summary}")
+file(MAKE_DIRECTORY "${OUT}/still/frame_0002")
+file(WRITE "${OUT}/still/summary.json" "${still_summary}")
+run_glint(0 report "${OUT}/still" --out "${OUT}/report_still.html")
+file(READ "${OUT}/report_still.html" still_html)
+if(NOT still_html MATCHES "<td>0.0200</td><td>no pixels scored</td><td>no pixels scored</td>")
+  message(FATAL_ERROR "report_still.html does not show the last frame's empty moving edges as \"no pixels scored\"")
 endif()
 
 file(WRITE "${OUT}/bad_anchors.json" "{\"points\": 3}")

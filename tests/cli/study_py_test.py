@@ -371,15 +371,23 @@ class TableTest(unittest.TestCase):
         self.assertIn("| room | t2 | `denoise=false` | 2.0 | 0.2500 | 0.3750 | 0.1250 | 0.5000 | 0.7500 | 0 "
                       "| **yes** |", lines)
 
-    def test_shadow_table_has_penumbra_and_no_hdr_flip(self):
+    def test_shadow_table_has_penumbra_moving_edges_and_no_hdr_flip(self):
+        # Moving edges: a value, null (no receiver moved) and absent (a study from before them).
         rows = [dict(study_row("yard", 1.0, 0.25, mae=0.125, effect="shadows"), settings=[], error_mean=0.5,
-                     rmse_clamped=0.5, non_finite=0, penumbra=0.0625),
+                     rmse_clamped=0.5, non_finite=0, penumbra=0.0625, moving_edge=0.375),
                 dict(study_row("lawn", 1.0, 0.25, effect="shadows"), settings=[], error_mean=0.5, non_finite=0,
+                     penumbra=-1, moving_edge=None),
+                dict(study_row("park", 1.0, 0.25, effect="shadows"), settings=[], error_mean=0.5, non_finite=0,
                      penumbra=-1)]
         study.mark_pareto(rows)
         lines = study.study_tables(rows)
-        self.assertIn("| yard | t1 | `-` | 1.0 | 0.2500 | 0.1250 | 0.5000 | 0.5000 | 0.0625 | 0 | **yes** |", lines)
-        self.assertIn("| lawn | t1 | `-` | 1.0 | 0.2500 | - | - | 0.5000 | no pixels scored | 0 | **yes** |", lines)
+        self.assertIn("| scene | point | settings | time (µs) | FLIP | MAE | RMSE | mean error | penumbra | moving edge "
+                      "| non-finite | Pareto |", lines)
+        self.assertIn("| yard | t1 | `-` | 1.0 | 0.2500 | 0.1250 | 0.5000 | 0.5000 | 0.0625 | 0.3750 | 0 | **yes** |",
+                      lines)
+        self.assertIn("| lawn | t1 | `-` | 1.0 | 0.2500 | - | - | 0.5000 | no pixels scored | no pixels scored | 0 "
+                      "| **yes** |", lines)
+        self.assertIn("| park | t1 | `-` | 1.0 | 0.2500 | - | - | 0.5000 | no pixels scored | - | 0 | **yes** |", lines)
 
     def test_metric_lines_state_the_clamp(self):
         text = " ".join(study.metric_lines(16.0))

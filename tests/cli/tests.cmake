@@ -73,7 +73,8 @@ glint_cli_test(NAME "devices lists at least one Vulkan device with its subgroup 
 
 # Every bundled scene simulates under the validation layer into a capture that info reads.
 foreach(scene IN ITEMS courtyard_penumbra disocclusion glossy_room gltf_engine mirror_corridor mirror_floor
-                       mostly_sky spinning_mirror thin_pillars toward_mirror)
+                       mostly_sky shadow_cut spinning_mirror sun_walker swinging_lamp thin_pillars time_of_day
+                       toward_mirror)
   add_test(NAME "cli: the bundled scene ${scene} simulates into a capture that info describes"
     COMMAND "${CMAKE_COMMAND}" "-DGLINT=$<TARGET_FILE:glint>" "-DSCENE=${PROJECT_SOURCE_DIR}/harness/scenes/${scene}.toml"
             "-DOUT=${PROJECT_BINARY_DIR}/test-output/cli/scenes/${scene}" -P "${CMAKE_CURRENT_SOURCE_DIR}/cli/simulate_scene.cmake")
