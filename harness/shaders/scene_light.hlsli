@@ -56,8 +56,8 @@ float SceneVisibilityAlong(float3 position, float3 normal, float3 dir, float max
 }
 
 // The same test, also giving the distance to the blocker along `dir`: 0 when the direction
-// reaches the light; -1 (unknown) when it lies below the surface: the terminator's penumbra
-// follows the surface's curvature, not a blocker distance, so none can be given.
+// reaches the light; -1 when it lies below the surface (no blocker: the caller knows the
+// surface's curvature, which sets the terminator's penumbra).
 float SceneVisibilityAndBlocker(float3 position, float3 normal, float3 dir, float maxT, out float blocker)
 {
     blocker = 0.0;

@@ -36,13 +36,13 @@ GLINT_BINDING(5, 0) GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float> g_blocker;
 #if SCENE_WRITE_BLOCKER
         visibility = SceneVisibilityOneSample(position, normal, SceneLightConeAt(g_scene.shadowLight, position), rng,
                                               blocker);
-        // Below the surface there is no blocker (-1, unknown). On a sphere the terminator's
-        // penumbra is the band where the light's cone crosses the horizon, 2 r tan(angular
-        // radius) wide, as a blocker at distance r would cast: its radius stands in. Flat faces
-        // keep it unknown.
+        // Below the surface there is no blocker (-1). On a sphere the terminator's penumbra is
+        // the band where the light's cone crosses the horizon, 2 r tan(angular radius) wide, as
+        // a blocker at distance r would cast: its radius stands in. A flat face is below the
+        // horizon as a whole, so its edge is as hard as the geometry: 0.
         ScenePrimitive surface = g_scene_primitives[hit.prim];
-        if (blocker < 0.0 && surface.kind == GLINT_SCENE_PRIM_SPHERE)
-            blocker = surface.p1.x;
+        if (blocker < 0.0)
+            blocker = surface.kind == GLINT_SCENE_PRIM_SPHERE ? surface.p1.x : 0.0;
 #else
         float sum = SceneVisibilitySum(position, normal, SceneLightConeAt(g_scene.shadowLight, position),
                                        g_scene.sampleStart, g_scene.samples, g_scene.sampleTotal, rng);

@@ -19,8 +19,9 @@
 //   float  GLINT_SHADOW_DENOISER_LoadBlockerDistance(int2 pixel);
 //       Distance along this frame's shadow ray of an in-image pixel to its closest blocker, in
 //       the units of the view depth: > 0 for a shadowed sample, 0 when the ray reached the
-//       light; negative or non-finite when unknown (a sample below the surface: the terminator's
-//       penumbra follows the curvature, not a blocker distance).
+//       light; negative or non-finite when unknown. A sample below the surface has no blocker:
+//       on a curved surface its terminator's penumbra is about as wide as a blocker at the
+//       curvature radius would cast; a flat face is below the horizon as a whole (0).
 //       Read only when penumbraScale > 0; an integration without the data returns -1 (or
 //       passes a negative penumbraScale): every pixel then takes the full filter.
 //
