@@ -31,10 +31,10 @@ constexpr double kHistorySlack = 5e-5;
 // rounding by half an ulp of 25 (1e-6), in each of the two sums, divided by at least 1.
 constexpr double kScoreSlack = 1e-4;
 // Hard shadows (docs/shadow_denoiser.md, "Hard shadows pass through"): a receiver whose 9 x 9
-// neighbourhood holds no penumbra wider than half a pixel passes through. The device computes
-// the widths in float (relative error a few 1e-7): a widest width this close to 1/2 is ambiguous.
+// neighbourhood holds no penumbra wider than one pixel passes through. The device computes the
+// widths in float (relative error a few 1e-7): a widest width this close to 1 is ambiguous.
 constexpr int kHardRadius = 4;
-constexpr double kHardWidth = 0.5;
+constexpr double kHardWidth = 1.0;
 constexpr double kUnknownPenumbra = 64.0; // an unknown blocker: a wide penumbra
 constexpr double kPenumbraMargin = 1e-5;
 
@@ -165,7 +165,8 @@ ShadowClassifyRanges shadowClassifyIndependent(const ShadowClassifyInputs& in,
                 const double zq = z(qx, qy);
                 if (!(zq > 0.0) || in.penumbraScale == 0.0f) continue;
                 const double b = in.blockerDistance[img.at(qx, qy)];
-                const double width = std::isfinite(b) && b >= 0.0 ? double(in.penumbraScale) * b / zq : kUnknownPenumbra;
+                const double width =
+                    std::isfinite(b) && b >= 0.0 ? double(in.penumbraScale) * b / zq : kUnknownPenumbra;
                 widest = std::max(widest, width);
             }
         return widest;

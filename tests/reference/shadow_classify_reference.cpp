@@ -66,8 +66,9 @@ ShadowClassifyOutputs shadowClassify(const ShadowClassifyInputs& in) {
         float widest = 0.0f;
         for (int dy = -4; dy <= 4; ++dy)
             for (int dx = -4; dx <= 4; ++dx)
-                widest = std::max(widest, penumbraWidth(std::clamp(x + dx, 0, w - 1), std::clamp(y + dy, 0, h - 1)));
-        return widest <= 0.5f;
+                widest = std::max(widest,
+                                  penumbraWidth(std::clamp(x + dx, 0, w - 1), std::clamp(y + dy, 0, h - 1)));
+        return widest <= 1.0f;
     };
     auto rowSum = [&](int x, int y) {
         const int row = std::clamp(y, 0, h - 1);

@@ -28,7 +28,7 @@ struct ShadowClassifyInputs {
     float storedVarianceScale = 1.0f / 16.0f; // times the variance of the accumulated mean
     // Hard shadows pass through (docs/shadow_denoiser.md): with penumbraScale >= 0 a receiver
     // whose 9 x 9 neighbourhood (clamped to the image) has no penumbra width
-    // penumbraScale * blocker / z above 0.5 pixel stores (sample, 0) and moments (sample, 0, 1,
+    // penumbraScale * blocker / z above 1 pixel stores (sample, 0) and moments (sample, 0, 1,
     // sample). Negative: no estimate. blockerDistance (W x H) is read only with penumbraScale > 0.
     float penumbraScale = -1.0f;
     std::vector<float> blockerDistance;

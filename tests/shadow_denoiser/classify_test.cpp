@@ -283,8 +283,8 @@ TEST_CASE("classify: hard shadows pass through, soft ones accumulate", "[classif
     runner.setHistory(desc.frameIndex, moments, shadow);
     const test::ShadowOutputs actual = runner.run(desc, inputs);
     CHECK(actual.metadata == expected.metadata);
-    CHECK(countMismatches(storedMoments(desc, actual), storedMoments(desc, expected.moments, expected.metadata)) ==
-          0u);
+    CHECK(countMismatches(storedMoments(desc, actual),
+                          storedMoments(desc, expected.moments, expected.metadata)) == 0u);
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }
 

@@ -72,7 +72,7 @@ TEST_CASE("penumbra error after 32 static frames at a given size and light", "[.
     std::vector<float> average;
     std::vector<float> last;
     for (std::uint32_t index = 0; index < kFrames; ++index) {
-        const auto [inputs, outputs] = replayer.run(sim.frames[index], index);
+        const auto [inputs, outputs, hard] = replayer.run(sim.frames[index], index);
         if (average.empty()) average.assign(inputs.visibility.size(), 0.0f);
         for (std::size_t i = 0; i < average.size(); ++i)
             average[i] += inputs.visibility[i] / static_cast<float>(kFrames);

@@ -89,8 +89,8 @@ void shadowDescFromFrame(const capture::Frame& frame, std::uint32_t index, bool 
     desc.frameIndex = index;
     desc.normalUnpackMul = frame.normalEncoding == capture::NormalEncoding::WorldUnorm ? 2.0f : 1.0f;
     desc.normalUnpackAdd = frame.normalEncoding == capture::NormalEncoding::WorldUnorm ? -1.0f : 0.0f;
-    // The penumbra estimate's sizes (light < 0, pixel 0 when unknown): the light's, and a pixel's at the image
-    // centre, 2 tan(fovY / 2) / H with 1 / tan(fovY / 2) the projection's [1][1].
+    // The penumbra estimate's sizes (light < 0, pixel 0 when unknown): the light's, and a pixel's at the
+    // image centre, 2 tan(fovY / 2) / H with 1 / tan(fovY / 2) the projection's [1][1].
     desc.lightTanHalfAngle = static_cast<float>(frame.shadowLightTanHalfAngle);
     const double focalY = std::abs(camera.projection.m[5]);
     desc.pixelAngularSize = focalY > 0.0 ? static_cast<float>(2.0 / (focalY * frame.height)) : 0.0f;

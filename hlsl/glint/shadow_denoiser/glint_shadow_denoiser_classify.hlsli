@@ -30,7 +30,7 @@
 //          tiles from the metadata).
 // Every loaded value may be non-finite: such histories count as missing, such depths as sky.
 // Hard shadows (penumbraScale >= 0, glint_shadow_denoiser_penumbra.hlsli): a receiver whose
-// (2 HARD_RADIUS + 1)^2 neighbourhood implies no penumbra wider than HARD_WIDTH (half a pixel)
+// (2 HARD_RADIUS + 1)^2 neighbourhood implies no penumbra wider than HARD_WIDTH (one pixel)
 // stores its own
 // sample, (x, 0), and the moments of a one-sample history, (x, 0, 1, x); with the filter's
 // footprint (which takes no tap there) the output is the input (docs/shadow_denoiser.md).
@@ -588,7 +588,7 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint3 groupThreadId, GLINT_Sh
     float spatialSigma = sqrt(spatialVariance);
     uint ownWord = GLINT_SHADOW_DENOISER_BlockWord(q, tile, 0, loadPixel.y >> 2);
     float x = ((ownWord >> GLINT_WIRE_ShadowMaskBit(uint(loadPixel.x), uint(loadPixel.y))) & 1u) != 0u ? 1.0 : 0.0;
-    // A hard shadow: no penumbra wider than half a pixel around the receiver, so its sample is the
+    // A hard shadow: no penumbra wider than a pixel around the receiver, so its sample is the
     // answer (a light of size 0 makes every receiver hard without loading a blocker).
     float widestPenumbra = 0.0;
     if (readsBlockers)

@@ -32,10 +32,10 @@
 // wide penumbra are rarely taken for hard (every pixel within the radius must be lit), and so
 // that a pixel classification passes through takes no filter tap either.
 #define GLINT_SHADOW_DENOISER_HARD_RADIUS 4
-// The widest penumbra (pixels) a hard pixel's neighbourhood may imply. Below a pixel, not at
-// one: pixel centres inside a penumbra of 0.5-1 pixels still see intermediate values that one
-// sample cannot give (docs/shadow_denoiser.md, "Hard shadows pass through").
-#define GLINT_SHADOW_DENOISER_HARD_WIDTH 0.5
+// The widest penumbra (pixels) a hard pixel's neighbourhood may imply: one pixel. Under it the
+// one sample is right but where a pixel centre falls inside the penumbra, and a history there
+// trails a moving shadow (docs/shadow_denoiser.md, "Hard shadows pass through").
+#define GLINT_SHADOW_DENOISER_HARD_WIDTH 1.0
 
 #ifdef __cplusplus
 namespace glint::shaders {

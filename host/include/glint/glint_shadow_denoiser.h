@@ -71,15 +71,16 @@ struct ShadowDenoiserDesc {
     // The penumbra estimate (docs/shadow_denoiser.md, "Penumbra-aware filtering" and "Hard
     // shadows pass through"): a receiver's penumbra is about
     // W = blocker distance x 2 lightTanHalfAngle / (view depth x pixelAngularSize) pixels wide.
-    // Classification passes a receiver whose 9 x 9 neighbourhood has no W above 0.5 pixel straight
+    // Classification passes a receiver whose 9 x 9 neighbourhood has no W above 1 pixel straight
     // through (its one sample is the answer: the output equals the input there), and each filter
     // pass's footprint follows W. Needs "shadow_blocker_distance" when lightTanHalfAngle > 0;
     // lightTanHalfAngle 0 (a light of angular radius 0) makes every shadow hard, so the output
     // equals the input everywhere. With lightTanHalfAngle < 0 or pixelAngularSize 0 (unknown), or
     // penumbraAware false, there is no estimate: the full temporal stage and filter everywhere.
     bool penumbraAware = true;
-    float lightTanHalfAngle = -1.0f; // tan of the light's angular radius (half-angle); 0: size 0; < 0: unknown
-    float pixelAngularSize = 0.0f;   // radians per pixel at the image centre, 2 tan(fovY / 2) / H; 0: unknown
+    float lightTanHalfAngle =
+        -1.0f;                     // tan of the light's angular radius (half-angle); 0: size 0; < 0: unknown
+    float pixelAngularSize = 0.0f; // radians per pixel at the image centre, 2 tan(fovY / 2) / H; 0: unknown
 
     // Classification (temporal) inputs. Matrices are row-major 4x4 with column vectors (q = M p).
     std::array<double, 16> reprojection{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}; // VP_prev VP^-1

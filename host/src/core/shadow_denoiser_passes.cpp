@@ -55,8 +55,8 @@ float penumbraScale(const ShadowDenoiserDesc& desc) {
 // The blocker distance binding of classification and the filter: the shaders read it only with
 // a light of positive size; otherwise the depth stands in.
 ResourceUse blockerDistanceUse(const ShadowDenoiserDesc& desc) {
-    return {"g_glint_blocker_distance", shadowPenumbraActive(desc) ? "shadow_blocker_distance" : "shadow_depth",
-            Access::Read};
+    return {"g_glint_blocker_distance",
+            shadowPenumbraActive(desc) ? "shadow_blocker_distance" : "shadow_depth", Access::Read};
 }
 
 Pass preparePass(const ShadowDenoiserDesc& desc, Extent2D tiles) {
@@ -194,11 +194,10 @@ void pushSplitClassify(const ShadowDenoiserDesc& desc, Extent2D tiles, EffectPla
     temporal.name = "temporal";
     temporal.pipeline = "shadow_denoiser_classify.listed";
     temporal.dispatch = IndirectDispatch{"shadow_filter_args", 0};
-    keepBindings(temporal,
-                 {"g_glint_shadow_mask", "g_glint_depth", "g_glint_previous_depth", "g_glint_normals",
-                  "g_glint_motion", "g_glint_moments_history", "g_glint_previous_metadata",
-                  "g_glint_shadow_variance", "g_glint_moments", "g_glint_filter_tiles",
-                  "g_glint_blocker_distance"});
+    keepBindings(temporal, {"g_glint_shadow_mask", "g_glint_depth", "g_glint_previous_depth",
+                            "g_glint_normals", "g_glint_motion", "g_glint_moments_history",
+                            "g_glint_previous_metadata", "g_glint_shadow_variance", "g_glint_moments",
+                            "g_glint_filter_tiles", "g_glint_blocker_distance"});
     for (ResourceUse& use : temporal.uses)
         if (use.binding == "g_glint_filter_tiles") use.access = Access::Read;
     plan.passes.push_back(std::move(classify));
