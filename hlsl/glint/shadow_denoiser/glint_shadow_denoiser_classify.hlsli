@@ -124,11 +124,28 @@ groupshared uint g_glint_shadow_denoiser_classify_offset_max[GLINT_SHADOW_DENOIS
 groupshared float4 g_glint_shadow_denoiser_classify_window[GLINT_SHADOW_DENOISER_CLASSIFY_BLOCKS *
                                                           GLINT_SHADOW_DENOISER_ANTILAG_SLOTS];
 // The hard-shadow test of a block that is not clear (one block a group in the parts that run it):
-// the penumbra width of every pixel of the block plus a HARD_RADIUS apron (coordinates clamped to
-// the image), then their maxima along each row's 2 HARD_RADIUS + 1 columns around the block's.
+// per row of the block plus a HARD_RADIUS apron (coordinates clamped to the image), bit i set
+// when span column i implies a penumbra wider than HARD_WIDTH. OR-ed in by the threads that
+// load the span, read after the row sums' barrier: no barrier of its own.
 #define GLINT_SHADOW_DENOISER_HARD_SPAN (8 + 2 * GLINT_SHADOW_DENOISER_HARD_RADIUS)
-groupshared float g_glint_shadow_denoiser_classify_penumbra[GLINT_SHADOW_DENOISER_HARD_SPAN * GLINT_SHADOW_DENOISER_HARD_SPAN];
-groupshared float g_glint_shadow_denoiser_classify_penumbra_rows[GLINT_SHADOW_DENOISER_HARD_SPAN * 8];
+groupshared uint g_glint_shadow_denoiser_classify_soft_rows[GLINT_SHADOW_DENOISER_HARD_SPAN];
+
+// Span slot k = 0..3 of thread `localIndex` (an 8 x 8 block's 16 x 16 span): slot 0 is the
+// thread's own pixel (span (4, 4) + local), slots 1..3 the 192 apron pixels: the 4 rows above,
+// the 4 below, then 4 columns left and right of the block's rows.
+int2 GLINT_SHADOW_DENOISER_HardSpanPixel(uint localIndex, uint k)
+{
+    if (k == 0u)
+        return int2(localIndex % 8u, localIndex / 8u) + GLINT_SHADOW_DENOISER_HARD_RADIUS;
+    uint a = localIndex + (k - 1u) * 64u;
+    if (a < 64u)
+        return int2(a % 16u, a / 16u);
+    if (a < 128u)
+        return int2((a - 64u) % 16u, 12u + (a - 64u) / 16u);
+    if (a < 160u)
+        return int2((a - 128u) % 4u, 4u + (a - 128u) / 4u);
+    return int2(12u + (a - 160u) % 4u, 4u + (a - 160u) / 4u);
+}
 
 // View depth of a receiver (finite depth strictly inside (1e-6, 1 - 1e-6)), or -1.
 float GLINT_SHADOW_DENOISER_ClassifyViewDepth(float depth, float4 viewDepth)
@@ -458,6 +475,10 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint3 groupThreadId, GLINT_Sh
     float z = GLINT_SHADOW_DENOISER_ClassifyViewDepth(depth, c.viewDepth);
     bool receiver = inside && z > 0.0;
 
+#if GLINT_SHADOW_DENOISER_CLASSIFY_PART != GLINT_SHADOW_DENOISER_CLASSIFY_PART_TILES
+    if (localIndex < GLINT_SHADOW_DENOISER_HARD_SPAN)
+        g_glint_shadow_denoiser_classify_soft_rows[localIndex] = 0u;
+#endif
 #if GLINT_SHADOW_DENOISER_CLASSIFY_PART == GLINT_SHADOW_DENOISER_CLASSIFY_PART_LISTED
     // A listed block is not clear (the tiles part tested it and stored its metadata).
     if (localIndex == 0)
@@ -510,18 +531,23 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint3 groupThreadId, GLINT_Sh
 #if GLINT_SHADOW_DENOISER_CLASSIFY_PART != GLINT_SHADOW_DENOISER_CLASSIFY_PART_TILES
     if (!clear)
     {
-        // Penumbra widths of the span, 4 slots a thread, their loads in flight with the row sums'.
+        // The span's soft pixels, 4 slots a thread (the first its own pixel, whose depth it has),
+        // their loads in flight with the row sums'; the row sums' barrier publishes them. The
+        // width is the filter's own (GLINT_SHADOW_DENOISER_PenumbraWidth), so a pixel passed
+        // through here is one the filter takes no tap at.
         if (readsBlockers)
         {
             int2 spanOrigin = int2(tile * 8u) - GLINT_SHADOW_DENOISER_HARD_RADIUS;
             [unroll] for (uint k = 0; k < 4u; ++k)
             {
-                uint slot = localIndex + k * 64u;
-                int2 spanPixel = clamp(spanOrigin + int2(slot % GLINT_SHADOW_DENOISER_HARD_SPAN, slot / GLINT_SHADOW_DENOISER_HARD_SPAN),
-                                       int2(0, 0), int2(c.inputSize) - 1);
-                float spanZ = GLINT_SHADOW_DENOISER_ClassifyViewDepth(GLINT_SHADOW_DENOISER_LoadDepth(spanPixel), c.viewDepth);
-                g_glint_shadow_denoiser_classify_penumbra[slot] = GLINT_SHADOW_DENOISER_PenumbraWidth(
-                    GLINT_SHADOW_DENOISER_LoadBlockerDistance(spanPixel), spanZ, c.penumbraScale);
+                int2 spanLocal = GLINT_SHADOW_DENOISER_HardSpanPixel(localIndex, k);
+                int2 spanPixel = clamp(spanOrigin + spanLocal, int2(0, 0), int2(c.inputSize) - 1);
+                float spanZ = k == 0u ? z
+                                      : GLINT_SHADOW_DENOISER_ClassifyViewDepth(GLINT_SHADOW_DENOISER_LoadDepth(spanPixel), c.viewDepth);
+                float width = GLINT_SHADOW_DENOISER_PenumbraWidth(GLINT_SHADOW_DENOISER_LoadBlockerDistance(spanPixel), spanZ,
+                                                                  c.penumbraScale);
+                if (width > GLINT_SHADOW_DENOISER_HARD_WIDTH)
+                    InterlockedOr(g_glint_shadow_denoiser_classify_soft_rows[spanLocal.y], 1u << uint(spanLocal.x));
             }
         }
         // Horizontal 17-tap sums of the 24 rows the block's vertical taps reach, once per
@@ -536,18 +562,6 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint3 groupThreadId, GLINT_Sh
                 GLINT_SHADOW_DENOISER_RowSum(q, tile, column, int(tile.y * 8u + row) - 8, c.inputSize);
         }
         GroupMemoryBarrierWithGroupSync();
-        if (readsBlockers)
-        {
-            [unroll] for (uint part = 0; part < 2u; ++part)
-            {
-                uint row = local.y + part * 8u;
-                float widest = 0.0;
-                [unroll] for (uint dx = 0; dx <= 2u * GLINT_SHADOW_DENOISER_HARD_RADIUS; ++dx)
-                    widest = max(widest, g_glint_shadow_denoiser_classify_penumbra[row * GLINT_SHADOW_DENOISER_HARD_SPAN + local.x + dx]);
-                g_glint_shadow_denoiser_classify_penumbra_rows[row * 8u + local.x] = widest;
-            }
-            GroupMemoryBarrierWithGroupSync();
-        }
     }
 #endif
 #if GLINT_SHADOW_DENOISER_CLASSIFY_PART != GLINT_SHADOW_DENOISER_CLASSIFY_PART_LISTED
@@ -590,11 +604,12 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint3 groupThreadId, GLINT_Sh
     float x = ((ownWord >> GLINT_WIRE_ShadowMaskBit(uint(loadPixel.x), uint(loadPixel.y))) & 1u) != 0u ? 1.0 : 0.0;
     // A hard shadow: no penumbra wider than a pixel around the receiver, so its sample is the
     // answer (a light of size 0 makes every receiver hard without loading a blocker).
-    float widestPenumbra = 0.0;
+    uint softNeighbours = 0u;
     if (readsBlockers)
         [unroll] for (uint dy = 0; dy <= 2u * GLINT_SHADOW_DENOISER_HARD_RADIUS; ++dy)
-            widestPenumbra = max(widestPenumbra, g_glint_shadow_denoiser_classify_penumbra_rows[(local.y + dy) * 8u + local.x]);
-    bool hard = active && GLINT_SHADOW_DENOISER_PenumbraKnown(c.penumbraScale) && widestPenumbra <= GLINT_SHADOW_DENOISER_HARD_WIDTH;
+            softNeighbours |= g_glint_shadow_denoiser_classify_soft_rows[local.y + dy] >> local.x;
+    softNeighbours &= (1u << (2u * GLINT_SHADOW_DENOISER_HARD_RADIUS + 1u)) - 1u;
+    bool hard = active && GLINT_SHADOW_DENOISER_PenumbraKnown(c.penumbraScale) && softNeighbours == 0u;
 
     // Loaded after the barriers: loading it before them in the listed part does not pay
     // (docs/performance.md).
