@@ -156,14 +156,15 @@ ShadowClassifyRanges shadowClassifyIndependent(const ShadowClassifyInputs& in,
     auto z = [&](int x, int y) { return viewDepth(in.depth[img.at(x, y)], in.viewDepth); };
     auto zPrevious = [&](int x, int y) { return viewDepth(in.previousDepth[img.at(x, y)], in.viewDepth); };
     // The widest penumbra W = scale * blocker / z over the 9 x 9 neighbourhood, coordinates
-    // clamped to the image; non-receivers, lit samples and a light of size 0 imply none.
+    // clamped to the image; non-receivers, lit samples (whatever their blocker) and a light of
+    // size 0 imply none.
     auto widestPenumbra = [&](int x, int y) {
         double widest = 0.0;
         for (int dy = -kHardRadius; dy <= kHardRadius; ++dy)
             for (int dx = -kHardRadius; dx <= kHardRadius; ++dx) {
                 const int qx = std::clamp(x + dx, 0, w - 1), qy = std::clamp(y + dy, 0, h - 1);
                 const double zq = z(qx, qy);
-                if (!(zq > 0.0) || in.penumbraScale == 0.0f) continue;
+                if (!(zq > 0.0) || in.penumbraScale == 0.0f || lit(qx, qy) > 0.5) continue; // lit: none
                 const double b = in.blockerDistance[img.at(qx, qy)];
                 const double width =
                     std::isfinite(b) && b >= 0.0 ? double(in.penumbraScale) * b / zq : kUnknownPenumbra;

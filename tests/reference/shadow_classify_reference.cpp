@@ -56,6 +56,8 @@ ShadowClassifyOutputs shadowClassify(const ShadowClassifyInputs& in) {
     auto penumbraWidth = [&](int x, int y) {
         const float zq = z(x, y);
         if (!(zq > 0.0f) || !(in.penumbraScale > 0.0f)) return 0.0f;
+        const std::uint32_t bit = shared::GLINT_WIRE_ShadowMaskBit(std::uint32_t(x), std::uint32_t(y));
+        if ((word(x >> 3, y >> 2) >> bit) & 1u) return 0.0f; // lit: no penumbra
         const float b = in.blockerDistance[idx(x, y)];
         if (!finite(b) || b < 0.0f) return 64.0f;
         const float width = in.penumbraScale * b / zq;

@@ -74,14 +74,18 @@ reference::ShadowClassifyInputs referenceInputs(const ShadowDenoiserDesc& desc,
 
 // Blocker distances for the hard-shadow cases: shadowed samples of the top half have a blocker
 // at 0.005 (a penumbra of 0.01 / z pixels with penumbraScale 2: hard), of the bottom half at 40
-// (16-80 pixels at view depths 1-5: soft), a few unknown (-1, NaN) there; lit samples 0.
+// (16-80 pixels at view depths 1-5: soft), a few unknown (-1, NaN) there; lit samples 0, but
+// every seventh one 40: a lit sample's blocker is not read, so the top half stays hard.
 test::ShadowInputs withBlockers(test::ShadowInputs inputs, std::uint32_t width, std::uint32_t height) {
     inputs.blockerDistance.assign(std::size_t{width} * height, 0.0f);
     for (std::uint32_t y = 0; y < height; ++y)
         for (std::uint32_t x = 0; x < width; ++x) {
             const std::size_t i = std::size_t{y} * width + x;
-            if (inputs.visibility[i] >= 0.5f) continue;
             float& b = inputs.blockerDistance[i];
+            if (inputs.visibility[i] >= 0.5f) {
+                if (i % 7 == 0) b = 40.0f;
+                continue;
+            }
             b = 2 * y < height ? 0.005f : 40.0f;
             if (2 * y >= height && i % 37 == 0) b = -1.0f;
             if (2 * y >= height && i % 41 == 0) b = std::numeric_limits<float>::quiet_NaN();

@@ -18,7 +18,7 @@ std::vector<std::uint8_t> hardPixels(const ShadowDenoiserDesc& desc, const Shado
     std::vector<double> width(inputs.depth.size(), 0.0);
     for (std::size_t i = 0; i < width.size(); ++i) {
         const double d = inputs.depth[i];
-        if (!(d > 1e-6 && d < 1.0 - 1e-6)) continue; // not a receiver
+        if (!(d > 1e-6 && d < 1.0 - 1e-6) || inputs.visibility[i] >= 0.5f) continue; // lit or not a receiver
         // View depth of device depth d (docs/integration.md, 2.2).
         const double z = reversed ? (f > 0.0 ? n * f / (n + d * (f - n)) : n / d) : n * f / (f - d * (f - n));
         const double b = inputs.blockerDistance.empty() ? -1.0 : double(inputs.blockerDistance[i]);

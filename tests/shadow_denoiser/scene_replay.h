@@ -19,8 +19,8 @@ class SceneShadowReplay {
         ShadowOutputs outputs;
         // Per pixel, 1 where docs/shadow_denoiser.md's hard-shadow rule passes the receiver
         // through: penumbra widths 2 tan(light radius) b / (z pixel angle) of at most one pixel
-        // over its 9 x 9 neighbourhood (clamped to the image), computed here from the frame's
-        // blocker layer; all 0 without a penumbra estimate.
+        // over its 9 x 9 neighbourhood (clamped to the image; lit samples imply none), computed
+        // here from the frame's blocker layer; all 0 without a penumbra estimate.
         std::vector<std::uint8_t> hard;
     };
     // Frame `index` of the sequence (0 first, then in order).

@@ -29,7 +29,8 @@
 //          may keep .x only); its StoreShadowVariance is then skipped (the filter rebuilds clear
 //          tiles from the metadata).
 // Every loaded value may be non-finite: such histories count as missing, such depths as sky.
-// Hard shadows (penumbraScale >= 0, glint_shadow_denoiser_penumbra.hlsli): a receiver whose
+// Hard shadows (penumbraScale >= 0, glint_shadow_denoiser_penumbra.hlsli): only shadowed
+// samples' blocker distances are read (a lit one implies no penumbra); a receiver whose
 // (2 HARD_RADIUS + 1)^2 neighbourhood implies no penumbra wider than HARD_WIDTH (one pixel)
 // stores its own
 // sample, (x, 0), and the moments of a one-sample history, (x, 0, 1, x); with the filter's
@@ -532,7 +533,8 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint3 groupThreadId, GLINT_Sh
     if (!clear)
     {
         // The span's soft pixels, 4 slots a thread (the first its own pixel, whose depth it has),
-        // their loads in flight with the row sums'; the row sums' barrier publishes them. The
+        // their loads in flight with the row sums'; the row sums' barrier publishes them. A lit
+        // sample implies no penumbra (its blocker distance is 0): only shadowed samples load. The
         // width is the filter's own (GLINT_SHADOW_DENOISER_PenumbraWidth), so a pixel passed
         // through here is one the filter takes no tap at.
         if (readsBlockers)
@@ -542,6 +544,9 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint3 groupThreadId, GLINT_Sh
             {
                 int2 spanLocal = GLINT_SHADOW_DENOISER_HardSpanPixel(localIndex, k);
                 int2 spanPixel = clamp(spanOrigin + spanLocal, int2(0, 0), int2(c.inputSize) - 1);
+                uint spanWord = GLINT_SHADOW_DENOISER_BlockWord(q, tile, (spanPixel.x >> 3) - int(tile.x), spanPixel.y >> 2);
+                if (((spanWord >> GLINT_WIRE_ShadowMaskBit(uint(spanPixel.x), uint(spanPixel.y))) & 1u) != 0u)
+                    continue;
                 float spanZ = k == 0u ? z
                                       : GLINT_SHADOW_DENOISER_ClassifyViewDepth(GLINT_SHADOW_DENOISER_LoadDepth(spanPixel), c.viewDepth);
                 float width = GLINT_SHADOW_DENOISER_PenumbraWidth(GLINT_SHADOW_DENOISER_LoadBlockerDistance(spanPixel), spanZ,
