@@ -11,12 +11,10 @@
 #include "replay/replay_frame.h"
 #include "scene/scene_file.h"
 #include "scene/scene_simulate.h"
-#include "support/test_replay.h"
 
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <optional>
 #include <string>
 
 using namespace glint;
@@ -57,17 +55,11 @@ Errors errorsOf(const std::vector<float>& value, std::size_t stride, const std::
 
 std::vector<FrameErrors> sceneErrors(const scene::Simulation& sim, bool penumbraAware) {
     std::vector<FrameErrors> errors;
-    std::optional<test::ShadowRunner> runner;
-    std::vector<float> previousDepth, previousReference;
+    test::SceneShadowReplay replayer(penumbraAware);
+    std::vector<float> previousReference;
     for (std::uint32_t index = 0; index < sim.frames.size(); ++index) {
         const capture::Frame& frame = sim.frames[index];
-        ShadowDenoiserDesc desc;
-        replay::shadowDescFromFrame(frame, index, index == 0, desc);
-        desc.penumbraAware = penumbraAware;
-        if (!runner) runner.emplace(desc);
-        const test::ShadowInputs inputs = replay::shadowInputsFromFrame(frame, previousDepth);
-        const test::ShadowOutputs outputs = runner->run(desc, inputs);
-        previousDepth = inputs.depth;
+        const auto [inputs, outputs, hard] = replayer.run(frame, index);
         const std::vector<float> reference = replay::layerChannels(frame, "reference.shadow", 1);
         std::vector<std::uint8_t> receiver(reference.size()), moved(reference.size(), 0u);
         FrameErrors e;

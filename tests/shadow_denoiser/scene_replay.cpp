@@ -42,6 +42,7 @@ std::vector<std::uint8_t> hardPixels(const ShadowDenoiserDesc& desc, const Shado
 SceneShadowReplay::Result SceneShadowReplay::run(const capture::Frame& frame, std::uint32_t index) {
     ShadowDenoiserDesc desc;
     replay::shadowDescFromFrame(frame, index, index == 0, desc);
+    desc.penumbraAware = penumbraAware_;
     if (!runner_) runner_.emplace(desc);
     Result result;
     result.inputs = replay::shadowInputsFromFrame(frame, previousDepth_);

@@ -14,6 +14,8 @@ namespace glint::test {
 
 class SceneShadowReplay {
   public:
+    // penumbraAware: ShadowDenoiserDesc::penumbraAware of every frame (false: no estimate).
+    explicit SceneShadowReplay(bool penumbraAware = true) : penumbraAware_(penumbraAware) {}
     struct Result {
         ShadowInputs inputs;
         ShadowOutputs outputs;
@@ -27,6 +29,7 @@ class SceneShadowReplay {
     Result run(const capture::Frame& frame, std::uint32_t index);
 
   private:
+    bool penumbraAware_ = true;
     std::optional<ShadowRunner> runner_;
     std::vector<float> previousDepth_;
 };
