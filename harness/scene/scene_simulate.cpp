@@ -23,6 +23,25 @@ namespace {
 
 using shaders::GLINT_SceneConstants;
 
+// tan of the shadow light's angular radius for the denoiser's penumbra estimate
+// (glint.shadowLightTanHalfAngle): a directional light's own (0 included: hard shadows); a
+// sphere light's as seen from the eye, its blocker layer scaled to it; -1 (unknown) with the eye
+// inside a sphere light.
+double shadowLightTan(const LightDesc& light, const Vec3& eye) {
+    if (light.kind == LightKind::Directional)
+        return light.angularRadiusDegrees >= 0.0f
+                   ? std::tan(static_cast<double>(light.angularRadiusDegrees) * std::numbers::pi / 180.0)
+                   : -1.0;
+    double squared = 0.0;
+    for (std::size_t k = 0; k < 3; ++k) {
+        const double d = double(light.position[k]) - double(eye[k]);
+        squared += d * d;
+    }
+    const double distance = std::sqrt(squared), radius = double(light.radius);
+    return distance > radius * 1.0001 && radius > 0.0 ? radius / std::sqrt(distance * distance - radius * radius)
+                                                      : -1.0;
+}
+
 struct OutputImage {
     const char* resource; // plan resource name
     const char* layer;    // capture layer
@@ -323,6 +342,12 @@ Simulation simulate(const gpu::Context& context, const Scene& scene) {
         c.ndcYDown = scene.camera.ndcYDown ? 1u : 0u;
         c.environmentIntensity = 1.0f;
         c.environmentSampling = environmentSampling ? 1u : 0u;
+        const double shadowTan = needsShadows(scene) ? shadowLightTan(lightsAt(scene, frame).at(scene.shadowLight), cam.eye)
+                                                     : -1.0;
+        c.shadowLightTanReference =
+            needsShadows(scene) && lightsAt(scene, frame).at(scene.shadowLight).kind == LightKind::Sphere && shadowTan > 0.0
+                ? static_cast<float>(shadowTan)
+                : 0.0f;
         const EffectPlan plan = planFrame(scene, c, outputs);
         if (frame == 0) {
             res.owned = gpu::createPlanResources(context, plan);
@@ -376,12 +401,9 @@ Simulation simulate(const gpu::Context& context, const Scene& scene) {
         f.effects = captureEffects(scene);
         if (needsShadows(scene)) {
             // The light the shadow layers sample: its angular radius for the denoiser's
-            // penumbra estimate (directional lights only, 0 included: hard shadows; a sphere
-            // light's varies with distance, so it stays unknown).
-            const LightDesc light = lightsAt(scene, frame).at(scene.shadowLight);
-            if (light.kind == LightKind::Directional && light.angularRadiusDegrees >= 0.0f)
-                f.shadowLightTanHalfAngle =
-                    std::tan(static_cast<double>(light.angularRadiusDegrees) * std::numbers::pi / 180.0);
+            // penumbra estimate (0 included: hard shadows; a sphere light's as the camera sees
+            // it, the blocker layer scaled to it: scene_shadow.cs.hlsl).
+            f.shadowLightTanHalfAngle = shadowTan;
         }
         for (const OutputImage& out : outputs) {
             const vk::Image& image = res.owned.images.at(out.resource);

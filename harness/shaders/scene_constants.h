@@ -111,7 +111,10 @@ GLINT_CONSTANTS_BEGIN(GLINT_SceneConstants)
     uint sampleStart;
     uint sampleTotal;
     uint environmentSampling; // 1: reflection references also sample the environment map (MIS)
-    uint padding;
+    // A sphere shadow light's tan(angular radius) as the camera sees it, the frame's
+    // glint.shadowLightTanHalfAngle: its blocker layer is scaled to it (scene_shadow.cs.hlsl).
+    // 0 for a directional light, whose blocker distances stay as they are.
+    float shadowLightTanReference;
 GLINT_CONSTANTS_END(GLINT_SceneConstants);
 
 #ifdef __cplusplus

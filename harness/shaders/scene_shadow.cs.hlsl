@@ -43,6 +43,15 @@ GLINT_BINDING(5, 0) GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float> g_blocker;
         ScenePrimitive surface = g_scene_primitives[hit.prim];
         if (blocker < 0.0)
             blocker = surface.kind == GLINT_SCENE_PRIM_SPHERE ? surface.p1.x : 0.0;
+        // A sphere light's angular size varies over the frame; the denoiser takes one (the
+        // camera's, g_scene.shadowLightTanReference). Its penumbra at this receiver is
+        // 2 b r / (d - b) wide (r the light's radius, d its distance): the blocker distance is
+        // scaled by (r / (d - b)) / tan_reference so that 2 b' tan_reference is that width.
+        if (g_scene.shadowLightTanReference > 0.0 && blocker > 0.0) {
+            SceneLight light = g_scene_lights[g_scene.shadowLight];
+            float toLight = length(light.where - position);
+            blocker *= light.size / max(toLight - blocker, 1e-6) / g_scene.shadowLightTanReference;
+        }
 #else
         float sum = SceneVisibilitySum(position, normal, SceneLightConeAt(g_scene.shadowLight, position),
                                        g_scene.sampleStart, g_scene.samples, g_scene.sampleTotal, rng);
