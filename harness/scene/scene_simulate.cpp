@@ -38,8 +38,9 @@ double shadowLightTan(const LightDesc& light, const Vec3& eye) {
         squared += d * d;
     }
     const double distance = std::sqrt(squared), radius = double(light.radius);
-    return distance > radius * 1.0001 && radius > 0.0 ? radius / std::sqrt(distance * distance - radius * radius)
-                                                      : -1.0;
+    return distance > radius * 1.0001 && radius > 0.0
+               ? radius / std::sqrt(distance * distance - radius * radius)
+               : -1.0;
 }
 
 struct OutputImage {
@@ -342,12 +343,14 @@ Simulation simulate(const gpu::Context& context, const Scene& scene) {
         c.ndcYDown = scene.camera.ndcYDown ? 1u : 0u;
         c.environmentIntensity = 1.0f;
         c.environmentSampling = environmentSampling ? 1u : 0u;
-        const double shadowTan = needsShadows(scene) ? shadowLightTan(lightsAt(scene, frame).at(scene.shadowLight), cam.eye)
-                                                     : -1.0;
-        c.shadowLightTanReference =
-            needsShadows(scene) && lightsAt(scene, frame).at(scene.shadowLight).kind == LightKind::Sphere && shadowTan > 0.0
-                ? static_cast<float>(shadowTan)
-                : 0.0f;
+        double shadowTan = -1.0;
+        c.shadowLightTanReference = 0.0f;
+        if (needsShadows(scene)) {
+            const LightDesc shadowLight = lightsAt(scene, frame).at(scene.shadowLight);
+            shadowTan = shadowLightTan(shadowLight, cam.eye);
+            if (shadowLight.kind == LightKind::Sphere && shadowTan > 0.0)
+                c.shadowLightTanReference = static_cast<float>(shadowTan);
+        }
         const EffectPlan plan = planFrame(scene, c, outputs);
         if (frame == 0) {
             res.owned = gpu::createPlanResources(context, plan);
