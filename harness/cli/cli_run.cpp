@@ -207,6 +207,7 @@ int runRun(const ReplayOptions& options) {
                                                   {"maeClamped", error.maeClamped},
                                                   {"rmseClamped", error.rmseClamped}};
                 if (error.noisyMean >= 0.0) record["errors"][error.effect]["noisyMean"] = error.noisyMean;
+                if (error.noisyRmse >= 0.0) record["errors"][error.effect]["noisyRmse"] = error.noisyRmse;
                 if (error.visibility) {
                     // null where no receiver is a moving edge (the first frame, or nothing moved).
                     const auto orNull = [](const std::optional<double>& value) {

@@ -177,8 +177,11 @@ std::vector<ReferenceError> referenceErrors(const capture::Frame& frame, const F
         const std::vector<std::uint8_t> mask = glossyMask(frame, roughnessThreshold);
         if (output) {
             errors.push_back(compare(effect, *output, reference->image, mask, true));
-            if (noisy && noisy != output)
-                errors.back().noisyMean = compare(effect, *noisy, reference->image, mask, true).mean;
+            if (noisy && noisy != output) {
+                const ReferenceError input = compare(effect, *noisy, reference->image, mask, true);
+                errors.back().noisyMean = input.mean;
+                errors.back().noisyRmse = input.rmse;
+            }
         }
     }
     if (const NamedImage* reference = result.find("shadows/reference"))
@@ -186,8 +189,11 @@ std::vector<ReferenceError> referenceErrors(const capture::Frame& frame, const F
             const std::vector<std::uint8_t> mask = surfaceMask(frame);
             errors.push_back(compare("shadows", *output, reference->image, mask, false));
             const NamedImage* noisy = result.find("shadows/noisy");
-            if (noisy)
-                errors.back().noisyMean = compare("shadows", *noisy, reference->image, mask, false).mean;
+            if (noisy) {
+                const ReferenceError input = compare("shadows", *noisy, reference->image, mask, false);
+                errors.back().noisyMean = input.mean;
+                errors.back().noisyRmse = input.rmse;
+            }
             if (previous)
                 if (const std::optional<report::Image> before =
                         previousReference(*previous, frame, "shadows"))

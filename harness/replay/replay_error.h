@@ -42,6 +42,7 @@ struct ReferenceError {
     double rmseClamped = 0.0; // RMSE of the same clamped colour channels
     double penumbra = -1.0;   // shadows: mean |error| over penumbra pixels (-1 when there are none)
     double noisyMean = -1.0;  // the same mean for the effect's noisy input, when the output is denoised
+    double noisyRmse = -1.0;  // and its rmse
     double nonFinite = 0.0;   // fraction of output pixels (all, not only the mask) that are not finite
     bool visibility = false;  // scored by |out - ref| (penumbra and moving edges apply)
     // Visibility effects: the moving-edge pixels (movingEdgeMask) and the mean |out - ref| over

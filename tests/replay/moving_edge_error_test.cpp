@@ -7,6 +7,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 
@@ -64,9 +65,14 @@ TEST_CASE(
     CHECK(*errors[0].movingEdge == Approx(0.35));
     REQUIRE(errors[0].noisyMovingEdge.has_value());
     CHECK(*errors[0].noisyMovingEdge == Approx(0.6));
-    // The error over every receiver is unchanged by it: (0.5 + 0 + 0.2) / 3.
+    // The error over every receiver is unchanged by it: (0.5 + 0 + 0.2) / 3, RMSE
+    // sqrt((0.25 + 0 + 0.04) / 3); the noisy input's (1 + 0.75 + 0.2) / 3 and
+    // sqrt((1 + 0.5625 + 0.04) / 3).
     CHECK(errors[0].pixels == 3);
     CHECK(errors[0].mean == Approx(0.7 / 3.0));
+    CHECK(errors[0].rmse == Approx(std::sqrt(0.29 / 3.0)));
+    CHECK(errors[0].noisyMean == Approx(1.95 / 3.0));
+    CHECK(errors[0].noisyRmse == Approx(std::sqrt(1.6025 / 3.0)));
 }
 
 TEST_CASE(
