@@ -6,6 +6,7 @@
 #include "glint/glint_effect.h"
 #include "glint/glint_shadow_denoiser.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace glint {
@@ -130,7 +131,11 @@ Result planShadows(const FrameInfo& frame, const SettingValues& settings, Effect
     OutputDesc mask{"mask", "shadow_mask", "prepare", OutputDecoder::ShadowMask};
     OutputDesc classes{"tile_class", shadowTileMetadataName(frame.frameIndex), "classify",
                        OutputDecoder::ShadowTileClass};
-    OutputDesc history{"moments", moments, "classify", OutputDecoder::Channels, 0, 3};
+    // With the classification split, its "temporal" part writes the listed tiles' moments after
+    // "classify": read them there, or a dump shows last frame's.
+    const bool split = std::any_of(plan.passes.begin(), plan.passes.end(),
+                                   [](const Pass& pass) { return pass.name == "temporal"; });
+    OutputDesc history{"moments", moments, split ? "temporal" : "classify", OutputDecoder::Channels, 0, 3};
     for (OutputDesc* output : {&mask, &classes, &history}) {
         output->intermediate = true;
         plan.outputs.push_back(*output);
