@@ -4,7 +4,8 @@
 #   - describes the bundled sample capture,
 #   - simulates every bundled scene (harness/scenes) into a capture sequence under
 #     out/demo/captures at GLINT_DEMO_SIZE (default 160x90) for GLINT_DEMO_FRAMES frames
-#     (default 16, so the temporal denoisers converge), the reference at GLINT_DEMO_SPP samples
+#     (default 16, so the temporal denoisers converge, or the scene's own frame count where it
+#     is larger: the scenes written to show motion play out), the reference at GLINT_DEMO_SPP samples
 #     per pixel (default 8: lavapipe's reference tracing bounds the demo's time on a machine
 #     without a GPU, and at 2 spp the references' own noise hid differences the report shows;
 #     docs/performance.md, "The demo's simulations on a 2-core machine"; set
@@ -52,19 +53,31 @@ progress() {
   step=$((step + 1))
   printf '[%d/%d] %s (%ds elapsed)\n' "$step" "$steps" "$1" $((SECONDS - started)) >&2
 }
+# The frames scene $1 is simulated for: GLINT_DEMO_FRAMES when set, else 16 or the scene's own
+# `frames = N`, whichever is larger.
+scene_frames() {
+  local own
+  own=$(sed -n 's/^frames *= *\([0-9][0-9]*\).*/\1/p' "$1" | head -n 1)
+  if [ -z "${GLINT_DEMO_FRAMES:-}" ] && [ -n "$own" ] && [ "$own" -gt "$frames" ]; then
+    echo "$own"
+  else
+    echo "$frames"
+  fi
+}
 # Simulates scene $1 with seed $2 into $3 unless $3 holds a capture of the same scene file,
 # size, frame count, sample count and seed.
 simulate() {
   local scene=$1 seed=$2 dir=$3
-  local key
-  key="$(sha1sum <"$scene" | cut -d' ' -f1) glint=$glint_id size=$size frames=$frames spp=${spp:-scene} seed=$seed"
+  local key count
+  count=$(scene_frames "$scene")
+  key="$(sha1sum <"$scene" | cut -d' ' -f1) glint=$glint_id size=$size frames=$count spp=${spp:-scene} seed=$seed"
   if [ -f "$dir/manifest.json" ] && [ "$(cat "$dir/demo_key" 2>/dev/null)" = "$key" ]; then
     progress "$(basename "$scene" .toml): capture with seed $seed is up to date"
     return
   fi
-  progress "simulating $(basename "$scene" .toml), $size, $frames frames, reference seed $seed ${spp:+at $spp spp}"
+  progress "simulating $(basename "$scene" .toml), $size, $count frames, reference seed $seed ${spp:+at $spp spp}"
   rm -rf "$dir"
-  "$glint" simulate "$scene" --out "$dir" --size "$size" --frame-count "$frames" --seed "$seed" ${spp:+--spp "$spp"}
+  "$glint" simulate "$scene" --out "$dir" --size "$size" --frame-count "$count" --seed "$seed" ${spp:+--spp "$spp"}
   echo "$key" >"$dir/demo_key"
 }
 # A capture is reused only when the scene, the settings and the simulator that made it are the same.
@@ -83,7 +96,7 @@ glint_id=$(sha1sum <"$glint" | cut -d' ' -f1)
   "$glint" info "$out/sample"
   echo '```'
   echo
-  echo "## Bundled scenes at $size, $frames frames (glint simulate when changed, then glint run)"
+  echo "## Bundled scenes at $size, $frames frames or the scene's own count where larger (glint simulate when changed, then glint run)"
   runs=()
   for scene in "${scenes[@]}"; do
     name=$(basename "$scene" .toml)
