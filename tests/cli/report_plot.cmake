@@ -8,6 +8,18 @@
 file(REMOVE_RECURSE "${OUT}")
 include("${CMAKE_CURRENT_LIST_DIR}/run_glint.cmake")
 
+# Writes `summary` as the summary.json of the run folder OUT/<name>, with the frame folders
+# named after it, renders its report to OUT/report_<name>.html and returns the page in `page`.
+function(report_of name summary page)
+  foreach(frame ${ARGN})
+    file(MAKE_DIRECTORY "${OUT}/${name}/${frame}")
+  endforeach()
+  file(WRITE "${OUT}/${name}/summary.json" "${summary}")
+  run_glint(0 report "${OUT}/${name}" --out "${OUT}/report_${name}.html")
+  file(READ "${OUT}/report_${name}.html" html)
+  set(${page} "${html}" PARENT_SCOPE)
+endfunction()
+
 # Fails unless the page `text` (read from `name`) matches every pattern after the first two.
 function(expect_all text name)
   foreach(expected IN LISTS ARGN)
@@ -57,12 +69,9 @@ file(READ "${OUT}/report.html" html)
 # References too noisy for the difference reported: a floor of 0.2 against |0.3 - 0.8| = 0.5.
 file(READ "${OUT}/glossy_room/summary.json" noisy_summary)
 string(REPLACE "\"mean\": 0.0625" "\"mean\": 0.2" noisy_summary "${noisy_summary}")
-file(MAKE_DIRECTORY "${OUT}/noisy_references/frame_0000" "${OUT}/noisy_references/frame_0001")
-file(WRITE "${OUT}/noisy_references/summary.json" "${noisy_summary}")
-run_glint(0 report "${OUT}/noisy_references" --out "${OUT}/report_noisy.html")
-file(READ "${OUT}/report_noisy.html" noisy_html)
+report_of(noisy_references "${noisy_summary}" noisy_html frame_0000 frame_0001)
 if(NOT noisy_html MATCHES "<td>no: floor 0.2000 is not below a quarter of 0.5000</td>")
-  message(FATAL_ERROR "report_noisy.html does not say the references are not converged")
+  message(FATAL_ERROR "report_noisy_references.html does not say the references are not converged")
 endif()
 expect_all("${html}" report.html
     "GGX alpha below roughnessThreshold = 0.30"
@@ -104,11 +113,8 @@ string(REPLACE "\"referenceNoiseLast\": 0.0625}"
        flip_summary "${flip_summary}")
 string(REPLACE "\"frames\": [" "\"flip\": {\"metric\": \"LDR-FLIP of the test\", \"clamp\": 16},\n  \"frames\": ["
        flip_summary "${flip_summary}")
-file(MAKE_DIRECTORY "${OUT}/with_flip/frame_0000" "${OUT}/with_flip/frame_0001")
-file(WRITE "${OUT}/with_flip/summary.json" "${flip_summary}")
-run_glint(0 report "${OUT}/with_flip" --out "${OUT}/report_flip.html")
-file(READ "${OUT}/report_flip.html" flip_html)
-expect_all("${flip_html}" report_flip.html
+report_of(with_flip "${flip_summary}" flip_html frame_0000 frame_0001)
+expect_all("${flip_html}" report_with_flip.html
     "<th>FLIP, last frame</th><th>its noisy input&#39;s FLIP, last frame</th>"
     "<td>0.0625 \\(clamped MAE 0.0200, FLIP 0.0625\\)</td><td>yes</td><td>0.1250</td><td>0.3500</td><td>0.1250</td><td>0.3750</td></tr>"
     "LDR-FLIP as scripts/study.py defines it"
@@ -119,10 +125,7 @@ expect_all("${flip_html}" report_flip.html
 expect_polylines("${flip_html}" 6 "error and FLIP: noisy, output, noise floor")
 # A null FLIP (the frame's mask held no pixel) is "no pixels scored", never a number.
 string(REPLACE "\"noisyFlip\": 0.375" "\"noisyFlip\": null" null_summary "${flip_summary}")
-file(MAKE_DIRECTORY "${OUT}/null_flip/frame_0000" "${OUT}/null_flip/frame_0001")
-file(WRITE "${OUT}/null_flip/summary.json" "${null_summary}")
-run_glint(0 report "${OUT}/null_flip" --out "${OUT}/report_null_flip.html")
-file(READ "${OUT}/report_null_flip.html" null_html)
+report_of(null_flip "${null_summary}" null_html frame_0000 frame_0001)
 if(NOT null_html MATCHES "<td>0.1250</td><td>no pixels scored</td></tr>")
   message(FATAL_ERROR "report_null_flip.html does not show a null FLIP as \"no pixels scored\"")
 endif()
@@ -175,10 +178,7 @@ endif()
 file(READ "${OUT}/walker/summary.json" still_summary)
 string(REPLACE "\"movingEdgePixels\": 8, \"movingEdge\": 0.125, \"noisyMovingEdge\": 0.375"
        "\"movingEdgePixels\": 0, \"movingEdge\": null, \"noisyMovingEdge\": null" still_summary "${still_summary}")
-file(MAKE_DIRECTORY "${OUT}/still/frame_0002")
-file(WRITE "${OUT}/still/summary.json" "${still_summary}")
-run_glint(0 report "${OUT}/still" --out "${OUT}/report_still.html")
-file(READ "${OUT}/report_still.html" still_html)
+report_of(still "${still_summary}" still_html frame_0002)
 if(NOT still_html MATCHES "<td>0.0200</td><td>no pixels scored</td><td>no pixels scored</td>")
   message(FATAL_ERROR "report_still.html does not show the last frame's empty moving edges as \"no pixels scored\"")
 endif()
