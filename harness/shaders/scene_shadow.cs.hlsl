@@ -40,9 +40,10 @@ GLINT_BINDING(5, 0) GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float> g_blocker;
         // the band where the light's cone crosses the horizon, 2 r tan(angular radius) wide, as
         // a blocker at distance r would cast: its radius stands in. A flat face is below the
         // horizon as a whole, so its edge is as hard as the geometry: 0.
-        ScenePrimitive surface = g_scene_primitives[hit.prim];
-        if (blocker < 0.0)
+        if (blocker < 0.0) {
+            ScenePrimitive surface = g_scene_primitives[hit.prim];
             blocker = surface.kind == GLINT_SCENE_PRIM_SPHERE ? surface.p1.x : 0.0;
+        }
         // A sphere light's angular size varies over the frame; the denoiser takes one (the
         // camera's, g_scene.shadowLightTanReference). Its penumbra at this receiver is
         // 2 b r / (d - b) wide (r the light's radius, d its distance): the blocker distance is

@@ -32,9 +32,9 @@
 // Hard shadows (penumbraScale >= 0, glint_shadow_denoiser_penumbra.hlsli): only shadowed
 // samples' blocker distances are read (a lit one implies no penumbra); a receiver whose
 // (2 HARD_RADIUS + 1)^2 neighbourhood implies no penumbra wider than HARD_WIDTH (one pixel)
-// stores its own
-// sample, (x, 0), and the moments of a one-sample history, (x, 0, 1, x); with the filter's
-// footprint (which takes no tap there) the output is the input (docs/shadow_denoiser.md).
+// stores its own sample, (x, 0), and the moments of a one-sample history, (x, 0, 1, x); with
+// the filter's footprint (which takes no tap there) the output is the input
+// (docs/shadow_denoiser.md, "Hard shadows pass through").
 // The (shadow, variance) stored for a non-receiver is (1, 0): lit, as the visibility input marks
 // it (docs/shadow_denoiser.md, "Non-receivers"); its moments are zeros (no history).
 //

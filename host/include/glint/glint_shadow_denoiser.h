@@ -78,9 +78,10 @@ struct ShadowDenoiserDesc {
     // equals the input everywhere. With lightTanHalfAngle < 0 or pixelAngularSize 0 (unknown), or
     // penumbraAware false, there is no estimate: the full temporal stage and filter everywhere.
     bool penumbraAware = true;
-    float lightTanHalfAngle =
-        -1.0f;                     // tan of the light's angular radius (half-angle); 0: size 0; < 0: unknown
-    float pixelAngularSize = 0.0f; // radians per pixel at the image centre, 2 tan(fovY / 2) / H; 0: unknown
+    // tan of the light's angular radius (half-angle): 0 a light of size 0, < 0 unknown.
+    float lightTanHalfAngle = -1.0f;
+    // Radians per pixel at the image centre, 2 tan(fovY / 2) / H; 0: unknown.
+    float pixelAngularSize = 0.0f;
 
     // Classification (temporal) inputs. Matrices are row-major 4x4 with column vectors (q = M p).
     std::array<double, 16> reprojection{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}; // VP_prev VP^-1
