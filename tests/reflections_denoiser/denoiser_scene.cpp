@@ -46,32 +46,76 @@ double glossyError(const capture::Frame& frame, const std::vector<float>& radian
     return glossyError(frame, radiance, target, roughnessThreshold);
 }
 
-double glossyError(const capture::Frame& frame, const std::vector<float>& radiance,
-                   const std::vector<float>& target, float roughnessThreshold) {
+std::vector<std::size_t> glossyPixels(const capture::Frame& frame, float roughnessThreshold) {
+    std::vector<std::size_t> pixels;
     const capture::Layer* depth = capture::findLayer(frame, "depth");
     const capture::Layer* roughness = capture::findLayer(frame, frame.roughness.layer);
-    if (!depth || !roughness) return -1.0;
+    if (!depth || !roughness) return pixels;
     const int channel = capture::channelIndex(roughness->channels, frame.roughness.channel);
     const std::size_t roughStride = roughness->channels.size();
-    double sum = 0.0;
-    std::size_t count = 0;
     const bool reversed = frame.camera.depth != capture::DepthConvention::Standard;
     for (std::size_t i = 0; i < std::size_t{frame.width} * frame.height; ++i) {
         const float d = depth->pixels[i];
         if (!std::isfinite(d) || (reversed ? d <= 1e-6f : d >= 1.0f - 1e-6f)) continue;
         float r = roughness->pixels[i * roughStride + static_cast<std::size_t>(channel)];
         const float alpha = frame.roughness.perceptual ? r * r : r;
-        if (!(alpha < roughnessThreshold)) continue;
-        auto luma = [](const float* c) {
-            return 0.2126 * static_cast<double>(c[0]) + 0.7152 * static_cast<double>(c[1]) +
-                   0.0722 * static_cast<double>(c[2]);
-        };
-        const double expected = luma(&target[4 * i]);
-        const double value = luma(&radiance[4 * i]);
-        sum += std::abs(value - expected) / std::max(expected, 0.05);
-        ++count;
+        if (alpha < roughnessThreshold) pixels.push_back(i);
     }
-    return count ? sum / static_cast<double>(count) : -1.0;
+    return pixels;
+}
+
+double glossyError(const capture::Frame& frame, const std::vector<float>& radiance,
+                   const std::vector<float>& target, float roughnessThreshold) {
+    auto luma = [](const float* c) {
+        return 0.2126 * static_cast<double>(c[0]) + 0.7152 * static_cast<double>(c[1]) +
+               0.0722 * static_cast<double>(c[2]);
+    };
+    const std::vector<std::size_t> pixels = glossyPixels(frame, roughnessThreshold);
+    double sum = 0.0;
+    for (std::size_t i : pixels) {
+        const double expected = luma(&target[4 * i]);
+        sum += std::abs(luma(&radiance[4 * i]) - expected) / std::max(expected, 0.05);
+    }
+    return pixels.empty() ? -1.0 : sum / static_cast<double>(pixels.size());
+}
+
+double glossyRmse(const capture::Frame& frame, const std::vector<float>& radiance, float roughnessThreshold) {
+    const capture::Layer* reference = capture::findLayer(frame, "reference.reflection");
+    if (!reference) return -1.0;
+    const std::size_t stride = reference->channels.size();
+    const std::vector<std::size_t> pixels = glossyPixels(frame, roughnessThreshold);
+    double sum = 0.0;
+    for (std::size_t i : pixels)
+        for (std::size_t c = 0; c < 3; ++c) {
+            const double d = static_cast<double>(radiance[4 * i + c]) -
+                             static_cast<double>(reference->pixels[i * stride + c]);
+            sum += d * d;
+        }
+    return pixels.empty() ? -1.0 : std::sqrt(sum / (3.0 * static_cast<double>(pixels.size())));
+}
+
+std::vector<std::vector<float>> runDenoiserFrames(const DenoiserScene& scene,
+                                                  const std::vector<std::size_t>& frameOrder, bool denoise) {
+    SssrDesc desc = scene.desc;
+    desc.denoise = denoise;
+    gpu::SssrRunner runner(testContext(), desc);
+    std::vector<std::vector<float>> radiance;
+    for (std::uint32_t index = 0; index < frameOrder.size(); ++index) {
+        const capture::Frame& frame = scene.frames.at(frameOrder[index]);
+        gpu::SssrFrameInputs inputs;
+        SssrDesc frameDesc = desc;
+        replay::sssrFromFrame(frame, scene.environment, frameDesc, inputs);
+        frameDesc.denoise = denoise;
+        frameDesc.frameIndex = index;
+        runner.upload(inputs);
+        const ReflectionsDenoiserDesc denoiser =
+            replay::denoiserFromFrame(frame, frameDesc, index, index == 0);
+        runner.run(frameDesc, nullptr, denoise ? &denoiser : nullptr);
+        gpu::SssrFrameOutputs out = runner.readback();
+        for (float value : out.radiance) REQUIRE(std::isfinite(value));
+        radiance.push_back(std::move(out.radiance));
+    }
+    return radiance;
 }
 
 void requireFiniteOverTiles(const gpu::SssrRunner& runner, const gpu::SssrFrameOutputs& out,

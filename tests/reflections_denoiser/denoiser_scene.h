@@ -26,6 +26,12 @@ struct DenoiserScene {
 DenoiserScene simulateDenoiserScene(const std::string& name, std::uint32_t width, std::uint32_t height,
                                     std::uint32_t frames);
 
+// Runs the scene's frames in `frameOrder` (frame index 0, 1, ... in that order, a history reset on
+// the first) through SSSR, denoised or not, and returns each frame's radiance (RGBA); requires
+// every value to be finite.
+std::vector<std::vector<float>> runDenoiserFrames(const DenoiserScene& scene,
+                                                  const std::vector<std::size_t>& frameOrder, bool denoise);
+
 // Mean of |value - reference| / max(reference luma, 0.05) over pixels whose alpha is below the
 // threshold and whose depth is not background (luminance, Rec. 709).
 double glossyError(const capture::Frame& frame, const std::vector<float>& radianceRgba,
@@ -34,6 +40,11 @@ double glossyError(const capture::Frame& frame, const std::vector<float>& radian
 // capture's reference.
 double glossyError(const capture::Frame& frame, const std::vector<float>& radianceRgba,
                    const std::vector<float>& targetRgba, float roughnessThreshold);
+
+// Root mean square of the colour channels' difference from the capture's reference over the
+// same pixels as glossyError.
+double glossyRmse(const capture::Frame& frame, const std::vector<float>& radianceRgba,
+                  float roughnessThreshold);
 
 // Frame `index` of the non-finite tests: frames 1 and 2 fill every history the denoiser reads
 // that frame with NaN (frame 1) or Inf (frame 2) and upload `clean` with that value scattered

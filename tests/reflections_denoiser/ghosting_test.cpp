@@ -18,28 +18,14 @@ using namespace glint;
 namespace {
 
 // The error of each frame's output: the denoised reflection, or with `denoise` false SSSR's
-// noisy input (the same rays: SSSR does not depend on the denoiser's histories here).
+// noisy input.
 std::vector<double> frameErrors(const test::DenoiserScene& scene, const std::vector<std::size_t>& frameOrder,
                                 bool denoise = true) {
-    SssrDesc desc = scene.desc;
-    desc.denoise = denoise;
-    gpu::SssrRunner runner(test::testContext(), desc);
+    const std::vector<std::vector<float>> radiance = test::runDenoiserFrames(scene, frameOrder, denoise);
     std::vector<double> errors;
-    for (std::uint32_t index = 0; index < frameOrder.size(); ++index) {
-        const capture::Frame& frame = scene.frames.at(frameOrder[index]);
-        gpu::SssrFrameInputs inputs;
-        SssrDesc frameDesc = desc;
-        replay::sssrFromFrame(frame, scene.environment, frameDesc, inputs);
-        frameDesc.denoise = denoise;
-        frameDesc.frameIndex = index;
-        runner.upload(inputs);
-        const ReflectionsDenoiserDesc denoiser =
-            replay::denoiserFromFrame(frame, frameDesc, index, index == 0);
-        runner.run(frameDesc, nullptr, denoise ? &denoiser : nullptr);
-        const gpu::SssrFrameOutputs out = runner.readback();
-        for (float value : out.radiance) REQUIRE(std::isfinite(value));
-        errors.push_back(test::glossyError(frame, out.radiance, desc.roughnessThreshold));
-    }
+    for (std::size_t i = 0; i < frameOrder.size(); ++i)
+        errors.push_back(
+            test::glossyError(scene.frames.at(frameOrder[i]), radiance[i], scene.desc.roughnessThreshold));
     return errors;
 }
 

@@ -153,9 +153,11 @@ void GLINT_RD_Resolve(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint2 
     float3 extent = (sigma + abs(mean - average)) * c.historyClipScale * 1.4;
     float3 boxCentre = lerp(mean, average, 0.2);
     float3 history = valid ? GLINT_RD_ClipToBox(GLINT_RD_SanitizeRadiance(reprojected.rgb), boxCentre, extent) : current;
-    // The pull toward the tile average and the clip around it, scaled by the spatial footprint
-    // (0 for mirrors: GLINT_RD_SpatialFootprint).
-    float3 regularised = GLINT_RD_ClipToBox(lerp(current, average, 1.0 / (historyLength + 1.0)), average, extent);
+    // The pull toward the box centre (mostly the neighbourhood's mean: the tile average is
+    // weighted toward dim samples, and pulling a short history to it drops the energy of bright
+    // highlights) and the clip around the tile average, scaled by the spatial footprint (0 for
+    // mirrors: GLINT_RD_SpatialFootprint).
+    float3 regularised = GLINT_RD_ClipToBox(lerp(current, boxCentre, 1.0 / (historyLength + 1.0)), average, extent);
     current = lerp(current, regularised, GLINT_RD_SpatialFootprint(c, alpha));
     // Mirrors (docs/reflections_denoiser.md, "Mirrors"): the sample is noise-free, so averaging
     // it with a history removes no noise and can only lag a moving reflection; the output is
