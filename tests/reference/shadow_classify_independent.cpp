@@ -66,8 +66,9 @@ struct Pixel {
     double sample = 0.0;
     bool found = false; // a history was found
     double m = 0.0, m2 = 0.0, count = 0.0;
-    double history = 0.0;     // bilinear accumulated shadow (when found)
-    double antiLagScore = -1; // the larger of the two scores (negative: no test)
+    double history = 0.0;        // bilinear accumulated shadow (when found)
+    double windowVariance = 0.0; // binomial variance of this frame's 5x5 samples
+    double antiLagScore = -1;    // the larger of the two scores (negative: no test)
 };
 
 double antiLagCap(double score) {
@@ -89,7 +90,8 @@ Result evaluate(const Pixel& p, double mean, double historyOffset, double scoreO
     double n = p.count + 1.0;
     const double newMean = p.m + (p.sample - p.m) / n;
     const double newM2 = p.m2 + (p.sample - p.m) * (p.sample - newMean);
-    const double temporalVariance = n > 1.0 ? newM2 / (n - 1.0) : 1.0;
+    // No history: four times the 5x5 samples' variance, at most 1.
+    const double temporalVariance = n > 1.0 ? newM2 / (n - 1.0) : std::min(4.0 * p.windowVariance, 1.0);
     const double history = p.found ? std::clamp(p.history + historyOffset, 0.0, 1.0) : mean;
     const double radius = kClampSigmas * sigma;
     // The range holds this frame's sample (docs/shadow_denoiser.md, "Classification").
@@ -100,7 +102,7 @@ Result evaluate(const Pixel& p, double mean, double historyOffset, double scoreO
     if (p.found && p.antiLagScore >= 0.0) n = std::min(n, antiLagCap(p.antiLagScore + scoreOffset));
     const double samples = std::max(n, 1.0);
     const double spread =
-        n < 16.0 ? std::max(temporalVariance, spatialVariance) * std::max(16.0 - n, 1.0) : temporalVariance;
+        n < 16.0 ? std::max(temporalVariance, p.windowVariance) * std::max(16.0 - n, 1.0) : temporalVariance;
     const double variance = spread / samples * storedVarianceScale;
     const double alpha = std::max(1.0 / samples, 1.0 / kHistoryCap);
     const double out = std::clamp(clamped + (p.sample - clamped) * alpha, 0.0, 1.0);
@@ -248,6 +250,10 @@ ShadowClassifyRanges shadowClassifyIndependent(const ShadowClassifyInputs& in,
 
                     Pixel px;
                     px.sample = lit(x, y);
+                    double windowLit = 0.0;
+                    for (int r = -2; r <= 2; ++r)
+                        for (int k = -2; k <= 2; ++k) windowLit += windowSample(x + k, y + r);
+                    px.windowVariance = windowLit / 25.0 * (1.0 - windowLit / 25.0);
                     bool ambiguous = false;
 
                     // The motion of the quad's closest receiver (the pixel's own unless another

@@ -3,6 +3,7 @@
 #include "glint/common/glint_wire_formats.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <utility>
 
@@ -72,13 +73,24 @@ ShadowClassifyOutputs shadowClassify(const ShadowClassifyInputs& in) {
                                   penumbraWidth(std::clamp(x + dx, 0, w - 1), std::clamp(y + dy, 0, h - 1)));
         return widest <= 1.0f;
     };
-    auto rowSum = [&](int x, int y) {
+    // Row y's mask bits from column x - 8 (bit 0) on, from the row's bytes of the three mask
+    // tiles around x's (clamped to the mask).
+    auto rowWindow = [&](int x, int y) {
         const int row = std::clamp(y, 0, h - 1);
         const std::uint32_t shift = shared::GLINT_WIRE_ShadowMaskBit(0u, static_cast<std::uint32_t>(row));
         const std::uint32_t left = (word((x >> 3) - 1, row >> 2) >> shift) & 0xFFu;
         const std::uint32_t centre = (word(x >> 3, row >> 2) >> shift) & 0xFFu;
         const std::uint32_t right = (word((x >> 3) + 1, row >> 2) >> shift) & 0xFFu;
-        const std::uint32_t window = (left | (centre << 8) | (right << 16)) >> (x & 7);
+        return (left | (centre << 8) | (right << 16)) >> (x & 7);
+    };
+    // This frame's lit samples in the 5x5 window around (x, y).
+    auto litInWindow5 = [&](int x, int y) {
+        int lit = 0;
+        for (int dy = -2; dy <= 2; ++dy) lit += std::popcount((rowWindow(x, y + dy) >> 6) & 0x1Fu);
+        return lit;
+    };
+    auto rowSum = [&](int x, int y) {
+        const std::uint32_t window = rowWindow(x, y);
         // The Gaussian weight of the lit and of the shadowed samples, both exact (kGaussian); the
         // second is summed down the column on its own, since 1 - mean is ill-conditioned when
         // only a few edge samples are shadowed.
@@ -266,7 +278,12 @@ ShadowClassifyOutputs shadowClassify(const ShadowClassifyInputs& in) {
                     const float delta = sample - m;
                     const float newMean = m + delta / n;
                     const float newM2 = m2 + delta * (sample - newMean);
-                    const float temporalVariance = n > 1.0f ? newM2 / (n - 1.0f) : 1.0f;
+                    // The 5x5 samples' binomial variance: a first sample's (times 4, at most 1)
+                    // and the least a young history lends the filter.
+                    const float litShare = static_cast<float>(litInWindow5(x, y)) / 25.0f;
+                    const float windowVariance = litShare * (1.0f - litShare);
+                    const float temporalVariance =
+                        n > 1.0f ? newM2 / (n - 1.0f) : std::min(4.0f * windowVariance, 1.0f);
                     // Wide clamp (2 sigma_s, widened to hold the sample), blend max(1/n, 1/64),
                     // variance of the mean scaled.
                     const float radius = 2.0f * spatialSigma;
@@ -277,7 +294,7 @@ ShadowClassifyOutputs shadowClassify(const ShadowClassifyInputs& in) {
                     if (found && in.antiLag) n = std::min(n, antiLagCap(x, y, px, py, zc));
                     const float samples = std::max(n, 1.0f);
                     const float spread =
-                        n < 16.0f ? std::max(temporalVariance, spatialVariance) * std::max(16.0f - n, 1.0f)
+                        n < 16.0f ? std::max(temporalVariance, windowVariance) * std::max(16.0f - n, 1.0f)
                                   : temporalVariance;
                     const float variance = spread / samples * in.storedVarianceScale;
                     const float alpha = std::max(1.0f / samples, 1.0f / 64.0f);

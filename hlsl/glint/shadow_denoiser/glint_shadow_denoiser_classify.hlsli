@@ -114,6 +114,8 @@ groupshared uint g_glint_shadow_denoiser_classify_words[GLINT_SHADOW_DENOISER_CL
 // Horizontal lit sums of rows blockOrigin.y - 8 .. blockOrigin.y + 15 (24 x 8 columns); see
 // GLINT_SHADOW_DENOISER_RowSum (the shadowed sum is 1 - this, exactly).
 groupshared float g_glint_shadow_denoiser_classify_rows[GLINT_SHADOW_DENOISER_CLASSIFY_BLOCKS * 24 * 8];
+// The lit samples among the 5 of each of those rows centred on the column (the 5x5 window's rows).
+groupshared uint g_glint_shadow_denoiser_classify_rows5[GLINT_SHADOW_DENOISER_CLASSIFY_BLOCKS * 24 * 8];
 // Smallest and largest packed offset (previous pixel - pixel) of the block's candidate pixels
 // for the anti-lag test (GLINT_SHADOW_DENOISER_AntiLagWindow): equal when the block moved by one
 // whole-pixel offset (always, for a still camera), and the test's windows then overlap exactly.
@@ -184,16 +186,10 @@ uint GLINT_SHADOW_DENOISER_BlockWord(uint q, uint2 tile, int dx, int tileY)
     return g_glint_shadow_denoiser_classify_words[q * 18u + uint((tileY - int(tile.y * 2u) + 2) * 3 + dx + 1)];
 }
 
-// Horizontal 17-tap sum for pixel row y (clamped to the image) centred on column x, a column
-// of block q (8x8 tile `tile`): the Gaussian weight of the lit samples, exact, and so is the
-// shadowed samples' weight, 1 minus it (the weights are multiples of 2^-20 summing to 1). The
-// spatial variance is mean (1 - mean), and in a window that is lit but for a few samples at its
-// edge 1 - mean is ~1e-5: taken as the difference of the 17x17 sum from 1, its rounding would
-// depend on how a compiler contracts the sums into FMAs, and with it the variance, the clamp
-// radius and the history length; summed from the exact row complements it is accurate in itself
-// on every device. Mask tiles outside the image clamp to the border
-// tile (as the 18 words do).
-float GLINT_SHADOW_DENOISER_RowSum(uint q, uint2 tile, int x, int y, uint2 inputSize)
+// The mask bits of pixel row y (clamped to the image) from column x - 8 (bit 0) to x + 8 (bit
+// 16) and beyond, x a column of block q (8x8 tile `tile`): the row's bytes of the mask tiles left
+// of, at and right of the block (clamped to the mask, as the 18 words are).
+uint GLINT_SHADOW_DENOISER_RowWindow(uint q, uint2 tile, int x, int y, uint2 inputSize)
 {
     int row = clamp(y, 0, int(inputSize.y) - 1);
     int tileY = row >> 2;
@@ -201,7 +197,19 @@ float GLINT_SHADOW_DENOISER_RowSum(uint q, uint2 tile, int x, int y, uint2 input
     uint left = (GLINT_SHADOW_DENOISER_BlockWord(q, tile, -1, tileY) >> shift) & 0xFFu;
     uint centre = (GLINT_SHADOW_DENOISER_BlockWord(q, tile, 0, tileY) >> shift) & 0xFFu;
     uint right = (GLINT_SHADOW_DENOISER_BlockWord(q, tile, 1, tileY) >> shift) & 0xFFu;
-    uint window = (left | (centre << 8) | (right << 16)) >> uint(x & 7);
+    return (left | (centre << 8) | (right << 16)) >> uint(x & 7);
+}
+
+// Horizontal 17-tap sum of a row window (GLINT_SHADOW_DENOISER_RowWindow) centred on its
+// column: the Gaussian weight of the lit samples, exact, and so is the
+// shadowed samples' weight, 1 minus it (the weights are multiples of 2^-20 summing to 1). The
+// spatial variance is mean (1 - mean), and in a window that is lit but for a few samples at its
+// edge 1 - mean is ~1e-5: taken as the difference of the 17x17 sum from 1, its rounding would
+// depend on how a compiler contracts the sums into FMAs, and with it the variance, the clamp
+// radius and the history length; summed from the exact row complements it is accurate in itself
+// on every device.
+float GLINT_SHADOW_DENOISER_RowSum(uint window)
+{
     float lit = 0.0;
     [unroll] for (int k = 0; k <= 16; ++k)
         lit += ((window >> uint(k)) & 1u) != 0u ? GLINT_SHADOW_DENOISER_GaussianWeight(abs(k - 8)) : 0.0;
@@ -563,8 +571,9 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint3 groupThreadId, GLINT_Sh
         [unroll] for (uint part = 0; part < 3u; ++part)
         {
             uint row = local.y + part * 8u;
-            g_glint_shadow_denoiser_classify_rows[(q * 24u + row) * 8u + local.x] =
-                GLINT_SHADOW_DENOISER_RowSum(q, tile, column, int(tile.y * 8u + row) - 8, c.inputSize);
+            uint window = GLINT_SHADOW_DENOISER_RowWindow(q, tile, column, int(tile.y * 8u + row) - 8, c.inputSize);
+            g_glint_shadow_denoiser_classify_rows[(q * 24u + row) * 8u + local.x] = GLINT_SHADOW_DENOISER_RowSum(window);
+            g_glint_shadow_denoiser_classify_rows5[(q * 24u + row) * 8u + local.x] = countbits((window >> 6u) & 0x1Fu);
         }
         GroupMemoryBarrierWithGroupSync();
     }
@@ -699,7 +708,14 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint3 groupThreadId, GLINT_Sh
     float delta = x - moments.x;
     float newMean = moments.x + delta / n;
     float m2 = moments.y + delta * (x - newMean);
-    float temporalVariance = n > 1.0 ? m2 / (n - 1.0) : 1.0;
+    // This frame's 5x5 samples: their binomial variance stands for a young history's spread.
+    uint lit5 = 0u;
+    [unroll] for (uint r5 = 6u; r5 <= 10u; ++r5)
+        lit5 += g_glint_shadow_denoiser_classify_rows5[(q * 24u + local.y + r5) * 8u + local.x];
+    float litShare = float(lit5) / 25.0;
+    float windowVariance = litShare * (1.0 - litShare);
+    float temporalVariance =
+        n > 1.0 ? m2 / (n - 1.0) : min(GLINT_SHADOW_DENOISER_FIRST_SAMPLE_VARIANCE * windowVariance, 1.0);
 
     // The history is the unfiltered accumulation (never a filter output: feeding the filtered
     // value back blurs the penumbra again every frame). The clamp is wide (2 sigma_s): the
@@ -716,7 +732,7 @@ void GLINT_SHADOW_DENOISER_Classify(uint2 groupId, uint3 groupThreadId, GLINT_Sh
     float count = max(n, 1.0);
     // Variance of the accumulated mean (boosted while young): the filter's edge stop tightens as
     // samples accumulate, so the spatial filter fades out instead of biasing the penumbra.
-    float variance = (n < 16.0 ? max(temporalVariance, spatialVariance) * max(16.0 - n, 1.0) : temporalVariance) /
+    float variance = (n < 16.0 ? max(temporalVariance, windowVariance) * max(16.0 - n, 1.0) : temporalVariance) /
                      count * c.storedVarianceScale;
     float alpha = max(1.0 / count, 1.0 / GLINT_SHADOW_DENOISER_HISTORY_CAP);
     float result = clamp(lerp(clamped, x, alpha), 0.0, 1.0);

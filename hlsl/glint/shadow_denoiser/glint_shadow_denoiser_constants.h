@@ -76,6 +76,10 @@ GLINT_CONSTANTS_END(GLINT_ShadowDenoiserFilterConstants);
 // (ShadowDenoiserDesc::storedVarianceScale) times the variance of the accumulated mean.
 #define GLINT_SHADOW_DENOISER_CLAMP_SIGMAS 2.0
 #define GLINT_SHADOW_DENOISER_HISTORY_CAP 64.0
+// A history younger than 16 frames lends the filter at least the binomial variance of this
+// frame's 5x5 samples (not the 17x17 window's); a first sample takes FIRST_SAMPLE_VARIANCE times
+// it, at most 1 (docs/shadow_denoiser.md, "The first samples beside a narrow penumbra").
+#define GLINT_SHADOW_DENOISER_FIRST_SAMPLE_VARIANCE 4.0
 // Anti-lag (docs/shadow_denoiser.md, "Convergence"): this frame's mask bits in a
 // (2 RADIUS + 1)^2 window against last frame's accumulated shadow of the same window; when the
 // larger of two binomial scores (with SLACK samples of slack; neighbours within DEPTH relative
