@@ -259,10 +259,12 @@ RadianceVariance resolvePixel(const ResolveInputs& in) {
     const double n = resolveHistoryLength(in);
     // 3. The history, clipped toward the box centre (without one, the current sample stands in).
     const Rgb history = in.historyValid ? clipTowardCentre(in.history, boxCentre, extent) : current;
-    // 4. The current sample pulled toward the box centre by 1/(n+1), then clipped around the
-    // tile average; of that move, the spatial footprint's share is taken (none for mirrors).
+    // 4. The current sample pulled by 1/(n+1) toward a target that moves from the box centre
+    // (n = 1) to the tile average as 1 - 1/n, then clipped around the average; of that move, the
+    // spatial footprint's share is taken (none for mirrors).
+    const Rgb target = mix(boxCentre, in.average, 1.0 - 1.0 / n);
     const Rgb pulled =
-        mix(current, clipTowardCentre(mix(current, boxCentre, 1.0 / (n + 1.0)), in.average, extent),
+        mix(current, clipTowardCentre(mix(current, target, 1.0 / (n + 1.0)), in.average, extent),
             spatialFootprint(in.alpha, in.mirrorThreshold));
     // 5. Blend by history length. A mirror's sample is noise-free: it is the output.
     const bool mirror = in.alpha < in.mirrorThreshold;

@@ -153,11 +153,13 @@ void GLINT_RD_Resolve(GLINT_ReflectionsDenoiserConstants c, uint groupId, uint2 
     float3 extent = (sigma + abs(mean - average)) * c.historyClipScale * 1.4;
     float3 boxCentre = lerp(mean, average, 0.2);
     float3 history = valid ? GLINT_RD_ClipToBox(GLINT_RD_SanitizeRadiance(reprojected.rgb), boxCentre, extent) : current;
-    // The pull toward the box centre (mostly the neighbourhood's mean: the tile average is
-    // weighted toward dim samples, and pulling a short history to it drops the energy of bright
-    // highlights) and the clip around the tile average, scaled by the spatial footprint (0 for
-    // mirrors: GLINT_RD_SpatialFootprint).
-    float3 regularised = GLINT_RD_ClipToBox(lerp(current, boxCentre, 1.0 / (historyLength + 1.0)), average, extent);
+    // The pull and the clip around the tile average, scaled by the spatial footprint (0 for
+    // mirrors: GLINT_RD_SpatialFootprint). The pull's target moves from the box centre (mostly
+    // the neighbourhood's mean) for a sample without a history to the tile average for a long
+    // one: the average is weighted toward dim samples, and pulling a first sample halfway to it
+    // drops the energy of bright highlights (docs/reflections_denoiser.md, "Bright highlights").
+    float3 pullTarget = lerp(boxCentre, average, 1.0 - 1.0 / historyLength);
+    float3 regularised = GLINT_RD_ClipToBox(lerp(current, pullTarget, 1.0 / (historyLength + 1.0)), average, extent);
     current = lerp(current, regularised, GLINT_RD_SpatialFootprint(c, alpha));
     // Mirrors (docs/reflections_denoiser.md, "Mirrors"): the sample is noise-free, so averaging
     // it with a history removes no noise and can only lag a moving reflection; the output is
