@@ -11,4 +11,16 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 "$root/scripts/setup.sh" fuzz
 cd "$root"
 jobs=$(nproc 2>/dev/null || echo 2)
-ctest --preset debug -j "$jobs" "$@"
+log=$(mktemp)
+trap 'rm -f "$log"' EXIT
+started=$(date +%s)
+status=0
+ctest --preset debug -j "$jobs" "$@" 2>&1 | tee "$log" || status=$?
+# The wall time and the 15 slowest tests (a test over 120 s is a defect to shrink or split:
+# CONTRIBUTING.md, "Test time").
+echo "ctest wall time: $(( $(date +%s) - started )) s"
+echo "slowest tests:"
+grep -E '^ *[0-9]+/[0-9]+ Test +#[0-9]+: ' "$log" |
+    awk '{ time = $(NF - 1); sub(/^ *[0-9]+\/[0-9]+ Test +#[0-9]+: /, ""); sub(/ \.\.\.+.*$/, ""); printf "%8.1f s  %s\n", time, $0 }' |
+    sort -rn | head -15
+exit "$status"
