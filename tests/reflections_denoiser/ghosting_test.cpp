@@ -55,19 +55,19 @@ TEST_CASE("after a moving box stops, the denoised error recovers within 8 frames
     WARN("moving then resting: " << trace(moving) << "\nfresh on the resting frame: " << trace(fresh)
                                  << "\nnoisy input: " << trace(noisy));
     // Measured on lavapipe (luminance relative error over glossy pixels against the scene's
-    // 8-spp reference), with the resolve's anti-lag: moving 0.055 0.039 0.079 0.097 0.087 0.074
-    // (box stops at frame 5) 0.071 0.063 0.062 0.064 0.063 0.059 0.058 0.060 0.058 0.062; noisy
-    // input 0.090 0.071 0.099 0.111 0.094 0.102 0.111 0.096 0.095 0.102 0.100 0.102 0.096 0.104
-    // 0.104 0.104; a fresh run settles at 0.062, with or without the anti-lag (the same values to
-    // three digits on every frame). With denoiser.antiLag off the moving run is 0.055 0.044 0.097
-    // 0.139 0.121 0.100 0.092 0.080 0.077 0.078 0.075 0.070 0.068 0.070 0.067 0.071, above the
-    // noisy input on frames 3 and 4. Bounds: eight frames after the box stops the error is within
-    // 1.25x of the fresh steady error (measured 0.97x); while it moves it never exceeds 3x
-    // (measured 1.6x); and from frame 1 on it is at most the noisy input's (closest: frame 4,
-    // 0.93x).
+    // reference, 2026-12-04), with the resolve's anti-lag: moving 0.091 0.078 0.111 0.119 0.112
+    // 0.110 (box stops at frame 5) 0.108 0.107 0.102 0.106 0.103 0.102 0.100 0.102 0.100 0.100;
+    // noisy input 0.121 0.103 0.130 0.138 0.124 0.132 0.140 0.129 0.126 0.135 0.132 0.137 0.124
+    // 0.136 0.134 0.130; a fresh run on the resting frame settles at 0.099. With denoiser.antiLag
+    // off the moving run is 0.091 0.084 0.135 0.174 0.152 0.138 0.128 0.123 0.117 0.121 0.115
+    // 0.114 0.110 0.112 0.108 0.108: eight frames after the stop 1.13x the steady error (1.01x
+    // with it), at most 1.76x while the box moves (1.20x with it), above the noisy input on frames
+    // 2-5. Each bound sits at the geometric mean of the two runs' values, so each fails without
+    // the anti-lag: within 1.07x eight frames after the stop, within 1.45x on every frame, and
+    // from frame 1 on at most the noisy input's (closest: frame 4, 0.90x).
     const double steady = fresh.back();
-    CHECK(moving[5 + 8] < 1.25 * steady);
-    for (std::size_t i = 0; i < kFrames; ++i) CHECK(moving[i] < 3.0 * steady);
+    CHECK(moving[5 + 8] < 1.07 * steady);
+    for (std::size_t i = 0; i < kFrames; ++i) CHECK(moving[i] < 1.45 * steady);
     for (std::size_t i = 1; i < kFrames; ++i) {
         INFO("frame " << i);
         CHECK(moving[i] <= noisy[i]);

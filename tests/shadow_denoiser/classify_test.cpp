@@ -512,8 +512,9 @@ TEST_CASE("tile skipping after classification: close to filtering every tile, ov
     // Odd size: partial groups and clamped borders. A penumbra everywhere but in the lit and
     // shadowed bands, so tiles of every kind meet at group borders. Skipping keeps a CLEAR
     // tile's constant where filtering it would blend in, through the edge stops, a little of the
-    // neighbouring filtered tiles: the two differ there, by far less than half an 8-bit output
-    // step (2e-3); a skipped tile with a wrong constant or a listed tile left out would not.
+    // neighbouring filtered tiles: the two differ there by far less than half an 8-bit output
+    // step (2e-3); a skipped tile with a wrong constant or a listed tile left out would differ by
+    // at least that.
     ShadowDenoiserDesc desc = classifyDesc(53, 37);
     desc.filter = true;
     test::ShadowInputs inputs = test::makeShadowInputs(53, 37, 23);
@@ -529,7 +530,9 @@ TEST_CASE("tile skipping after classification: close to filtering every tile, ov
     float worst = 0.0f;
     for (std::size_t i = 0; i < results[0].filtered.size(); ++i)
         worst = std::max(worst, std::abs(results[0].filtered[i] - results[1].filtered[i]));
-    CHECK(worst <= 1e-3f);
+    // Measured: 0 on lavapipe (2026-12-04), 8e-5 on NVIDIA (issue 39); the bound is 1e-4.
+    INFO("largest difference " << worst);
+    CHECK(worst <= 1e-4f);
     CHECK(results[0].filteredTiles > 0u);
     CHECK(results[0].filteredTiles < 3u * 7u * 5u);
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
