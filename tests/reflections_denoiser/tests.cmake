@@ -1,7 +1,6 @@
 # Reflections denoiser: the plan (unit) and SSSR + denoiser on simulated scenes (gpu).
 glint_add_test_suite(NAME reflections_denoiser LABELS gpu
   SOURCES
-    reflections_denoiser/static_test.cpp
     reflections_denoiser/non_finite_test.cpp
     reflections_denoiser/ghosting_test.cpp
     reflections_denoiser/hdr_highlight_test.cpp
