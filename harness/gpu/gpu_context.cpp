@@ -377,6 +377,8 @@ Context createContext(const ContextOptions& options) {
             VK_COMMAND_POOL_CREATE_TRANSIENT_BIT | VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
         poolInfo.queueFamilyIndex = context.device.queueFamily;
         GLINT_VK_CHECK(vkCreateCommandPool(context.device.device, &poolInfo, nullptr, &context.commandPool));
+        context.immediate =
+            std::make_unique<RecordedCommands>(recordCommands(context, [](VkCommandBuffer) {}));
     } catch (...) {
         destroyContext(context);
         throw;
@@ -388,6 +390,8 @@ void destroyContext(Context& context) {
     if (context.device.device) {
         // Best effort: on a lost device the objects still have to be destroyed.
         (void)vkDeviceWaitIdle(context.device.device);
+        if (context.immediate) destroyRecorded(context, *context.immediate);
+        context.immediate.reset();
         if (context.commandPool) vkDestroyCommandPool(context.device.device, context.commandPool, nullptr);
         vkDestroyDevice(context.device.device, nullptr);
     }
@@ -404,6 +408,28 @@ void destroyContext(Context& context) {
 }
 
 void submitAndWait(const Context& context, const std::function<void(VkCommandBuffer)>& record) {
+    // The context's own pair, unless a recording callback submits in turn (then a pair of its own).
+    if (context.immediate && !context.immediate->pending) {
+        RecordedCommands& recorded = *context.immediate;
+        recorded.pending = true; // marks the pair in use while the callback records
+        try {
+            GLINT_VK_CHECK(vkResetCommandBuffer(recorded.commands, 0));
+            VkCommandBufferBeginInfo beginInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+            beginInfo.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+            GLINT_VK_CHECK(vkBeginCommandBuffer(recorded.commands, &beginInfo));
+            record(recorded.commands);
+            GLINT_VK_CHECK(vkEndCommandBuffer(recorded.commands));
+            recorded.pending = false;
+            submitRecorded(context, recorded);
+            waitRecorded(context, recorded);
+        } catch (...) {
+            // Pending after a failed wait: idling keeps the next reset valid.
+            if (recorded.pending) (void)vkDeviceWaitIdle(context.device.device);
+            recorded.pending = false;
+            throw;
+        }
+        return;
+    }
     RecordedCommands recorded = recordCommands(context, record);
     try {
         submitRecorded(context, recorded);

@@ -34,6 +34,8 @@ struct ContextOptions {
     std::function<VkSurfaceKHR(VkInstance)> createSurface;
 };
 
+struct RecordedCommands;
+
 struct Context {
     VkInstance instance = VK_NULL_HANDLE;
     uint32_t instanceApiVersion = 0;
@@ -41,6 +43,9 @@ struct Context {
     vk::Device device;
     DeviceInfo info; // the features it reports (float16, int16, storage16) are enabled
     VkCommandPool commandPool = VK_NULL_HANDLE; // for submitAndWait; resettable buffers
+    // submitAndWait's command buffer and fence, re-recorded on every call: allocating a pair per
+    // call made the validation layer's and lavapipe's bookkeeping grow with every submission.
+    std::unique_ptr<RecordedCommands> immediate;
     // Non-null when validation is on. Heap-allocated because the messenger holds its address.
     std::unique_ptr<ValidationStats> validation;
     bool memoryBudget = false;             // VK_EXT_memory_budget is enabled

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <map>
 #include <stdexcept>
 
 namespace glint::gpu {
@@ -217,6 +218,25 @@ EffectRunner::readOutputs(const EffectPlan& plan, bool intermediates,
     const std::uint32_t w = size_.width, h = size_.height;
     const std::size_t pixels = std::size_t{w} * h;
     std::vector<std::pair<std::string, double>> counters; // read once, when a list needs them
+    // Every image level the outputs show, read back in one submission.
+    TransferBatch batch(context_);
+    std::map<std::pair<const vk::Image*, std::uint32_t>, std::size_t> tickets;
+    const auto queue = [&](const vk::Image& source, std::uint32_t level) {
+        if (!tickets.contains({&source, level}))
+            tickets[{&source, level}] = batch.readbackImage(source, level);
+    };
+    for (const OutputDesc& output : plan.outputs) {
+        if (output.intermediate && !intermediates) continue;
+        if (output.decoder == OutputDecoder::Channels && shown(output.name))
+            queue(outputImage(output), output.level);
+        if (output.decoder == OutputDecoder::MipChain)
+            for (std::uint32_t level = output.level; level < image(output.resource).mipLevels; ++level)
+                if (shown(output.name + std::to_string(level))) queue(image(output.resource), level);
+    }
+    batch.submit();
+    const auto texelsOf = [&](const vk::Image& source, std::uint32_t level) {
+        return batch.floats(tickets.at({&source, level}));
+    };
     for (const OutputDesc& output : plan.outputs) {
         if (output.intermediate && !intermediates) continue;
         if (output.decoder != OutputDecoder::MipChain && !shown(output.name)) continue;
@@ -224,7 +244,7 @@ EffectRunner::readOutputs(const EffectPlan& plan, bool intermediates,
         switch (output.decoder) {
         case OutputDecoder::Channels: {
             const vk::Image& source = outputImage(output);
-            const std::vector<float> texels = readbackImage(context_, source, output.level);
+            const std::vector<float> texels = texelsOf(source, output.level);
             decoded.width = mipWidth(source, output.level);
             decoded.height = mipHeight(source, output.level);
             const std::size_t count = std::size_t{decoded.width} * decoded.height;
@@ -237,7 +257,7 @@ EffectRunner::readOutputs(const EffectPlan& plan, bool intermediates,
             const vk::Image& pyramid = image(output.resource);
             for (std::uint32_t level = output.level; level < pyramid.mipLevels; ++level) {
                 if (!shown(output.name + std::to_string(level))) continue;
-                const std::vector<float> texels = readbackImage(context_, pyramid, level);
+                const std::vector<float> texels = texelsOf(pyramid, level);
                 const std::uint32_t lw = mipWidth(pyramid, level), lh = mipHeight(pyramid, level);
                 const std::size_t count = std::size_t{lw} * lh;
                 const auto stride = static_cast<std::uint32_t>(texels.size() / count);

@@ -73,6 +73,13 @@ InputImages::~InputImages() {
 }
 
 void InputImages::upload(InputKind kind, const std::vector<float>& texels, std::uint32_t channels) {
+    TransferBatch batch(context_);
+    upload(batch, kind, texels, channels);
+    batch.submit();
+}
+
+void InputImages::upload(TransferBatch& batch, InputKind kind, const std::vector<float>& texels,
+                         std::uint32_t channels) {
     const std::size_t pixels = std::size_t{size_.width} * size_.height;
     if (texels.size() != pixels * channels)
         throw std::runtime_error("input images: an input has " + std::to_string(texels.size()) +
@@ -83,10 +90,10 @@ void InputImages::upload(InputKind kind, const std::vector<float>& texels, std::
     if (compact_ && kind == InputKind::Material) { // R16F: roughness only, from channel 0
         std::vector<float> roughness(pixels);
         for (std::size_t i = 0; i < pixels; ++i) roughness[i] = texels[i * channels];
-        uploadImage(context_, image, roughness, 1);
+        batch.uploadImage(image, roughness, 1);
         return;
     }
-    uploadImage(context_, image, texels, channels);
+    batch.uploadImage(image, texels, channels);
 }
 
 void InputImages::uploadEnvironment(std::uint32_t width, std::uint32_t height,

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <gpu/gpu_context.h>
+#include <gpu/gpu_transfer.h>
 
 #include "glint/glint_effect.h"
 #include "glint/vulkan/vk_resources.h"
@@ -24,6 +25,9 @@ class InputImages {
 
     // W x H texels with `channels` floats each (Material: roughness in channel 0).
     void upload(InputKind kind, const std::vector<float>& texels, std::uint32_t channels);
+    // The same, queued in `batch` (the image exists once this returns; its texels on submit).
+    void upload(TransferBatch& batch, InputKind kind, const std::vector<float>& texels,
+                std::uint32_t channels);
     // An RGBA lat-long map, level 0; the rest of the chain is box-filtered here.
     void uploadEnvironment(std::uint32_t width, std::uint32_t height, const std::vector<float>& rgba);
     const vk::Image* find(InputKind kind) const;

@@ -1,5 +1,5 @@
-// Staging copies with explicit barriers. Every transfer is one submitAndWait; the staging
-// buffers live only for that call.
+// Staging copies with explicit barriers. Every transfer (a single call or a batch) is one
+// submitAndWait; the staging buffers live only as long as the call or the batch.
 #include <gpu/gpu_transfer.h>
 
 #include <gpu/gpu_texel_format.h>
@@ -163,81 +163,30 @@ std::vector<std::byte> readbackBuffer(const Context& context, const vk::Buffer& 
 
 void uploadImageBytes(const Context& context, const vk::Image& image, std::span<const std::byte> texels,
                       uint32_t mip) {
-    const VkDeviceSize size = mipByteSize(image, mip, "glint::gpu::uploadImageBytes");
-    if (texels.size() != size) {
-        throw std::invalid_argument("glint::gpu::uploadImageBytes: " + std::to_string(texels.size()) +
-                                    " bytes for a mip of " + std::to_string(size));
-    }
-    const vk::Device& device = context.device;
-    StagingBuffer staging(device, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, vk::MemoryUse::Upload);
-    std::memcpy(staging.buffer.mapped, texels.data(), texels.size());
-    vk::flushBuffer(device, staging.buffer);
-    submitAndWait(context, [&](VkCommandBuffer cmd) {
-        // From UNDEFINED: the whole mip is overwritten, so its old layout and contents do not
-        // matter, and the upload works on new and used images alike.
-        imageBarrier(cmd, image, mip, 1,
-                     {VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                      VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_ACCESS_MEMORY_WRITE_BIT,
-                      VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT});
-        const VkBufferImageCopy region = mipCopyRegion(image, mip);
-        vkCmdCopyBufferToImage(cmd, staging.buffer.buffer, image.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                               1, &region);
-        imageBarrier(cmd, image, mip, 1,
-                     {VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
-                      VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
-                      VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, kAnyAccess});
-    });
+    TransferBatch batch(context);
+    batch.uploadImageBytes(image, texels, mip);
+    batch.submit();
 }
 
 std::vector<std::byte> readbackImageBytes(const Context& context, const vk::Image& image, uint32_t mip) {
-    const VkDeviceSize size = mipByteSize(image, mip, "glint::gpu::readbackImageBytes");
-    const vk::Device& device = context.device;
-    StagingBuffer staging(device, size, VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::Readback);
-    submitAndWait(context, [&](VkCommandBuffer cmd) {
-        imageBarrier(cmd, image, mip, 1,
-                     {VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
-                      VK_ACCESS_MEMORY_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                      VK_ACCESS_TRANSFER_READ_BIT});
-        const VkBufferImageCopy region = mipCopyRegion(image, mip);
-        vkCmdCopyImageToBuffer(cmd, image.image, VK_IMAGE_LAYOUT_GENERAL, staging.buffer.buffer, 1, &region);
-        // Later writes to the image must wait for this read (an execution dependency suffices).
-        imageBarrier(cmd, image, mip, 1,
-                     {VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
-                      VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0});
-        memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
-                      VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
-    });
-    vk::invalidateBuffer(device, staging.buffer);
-    std::vector<std::byte> result(size);
-    std::memcpy(result.data(), staging.buffer.mapped, size);
-    return result;
+    TransferBatch batch(context);
+    const std::size_t ticket = batch.readbackImage(image, mip);
+    batch.submit();
+    return batch.bytes(ticket);
 }
 
 void uploadImage(const Context& context, const vk::Image& image, std::span<const float> texels,
                  uint32_t channels, uint32_t mip) {
-    const VkDeviceSize size = mipByteSize(image, mip, "glint::gpu::uploadImage");
-    const size_t texelCount = size_t{mipWidth(image, mip)} * mipHeight(image, mip);
-    if (channels == 0 || texels.size() != texelCount * channels) {
-        throw std::invalid_argument("glint::gpu::uploadImage: " + std::to_string(texels.size()) +
-                                    " floats for " + std::to_string(texelCount) + " texels of " +
-                                    std::to_string(channels) + " channels");
-    }
-    std::vector<std::byte> bytes(size);
-    encodeTexels(image.format, texels, channels, bytes);
-    uploadImageBytes(context, image, bytes, mip);
+    TransferBatch batch(context);
+    batch.uploadImage(image, texels, channels, mip);
+    batch.submit();
 }
 
 std::vector<float> readbackImage(const Context& context, const vk::Image& image, uint32_t mip) {
-    if (!hasFloatConversion(image.format)) {
-        throw std::invalid_argument("glint::gpu::readbackImage: VkFormat " +
-                                    std::to_string(static_cast<int>(image.format)) +
-                                    " has no float conversion (use readbackImageBytes)");
-    }
-    const std::vector<std::byte> bytes = readbackImageBytes(context, image, mip);
-    std::vector<float> result(bytes.size() / vk::formatTexelSize(image.format) *
-                              vk::formatChannelCount(image.format));
-    decodeTexels(image.format, bytes, result);
-    return result;
+    TransferBatch batch(context);
+    const std::size_t ticket = batch.readbackImage(image, mip);
+    batch.submit();
+    return batch.floats(ticket);
 }
 
 void clearImage(const Context& context, const vk::Image& image, const VkClearColorValue& value) {
@@ -253,6 +202,135 @@ void clearImage(const Context& context, const vk::Image& image, const VkClearCol
                       VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
                       VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, kAnyAccess});
     });
+}
+
+TransferBatch::TransferBatch(const Context& context) : context_(context) {}
+
+TransferBatch::~TransferBatch() {
+    if (uploadStaging_.buffer) vk::destroyBuffer(context_.device, uploadStaging_);
+    if (readbackStaging_.buffer) vk::destroyBuffer(context_.device, readbackStaging_);
+}
+
+namespace {
+// Copy offsets in a staging buffer: a multiple of every harness texel size (at most 16 bytes).
+VkDeviceSize alignedOffset(VkDeviceSize offset) {
+    return (offset + 15) & ~VkDeviceSize{15};
+}
+} // namespace
+
+void TransferBatch::uploadImageBytes(const vk::Image& image, std::span<const std::byte> texels,
+                                     uint32_t mip) {
+    if (submitted_) throw std::logic_error("glint::gpu::TransferBatch: upload after submit");
+    const VkDeviceSize size = mipByteSize(image, mip, "glint::gpu::uploadImageBytes");
+    if (texels.size() != size) {
+        throw std::invalid_argument("glint::gpu::uploadImageBytes: " + std::to_string(texels.size()) +
+                                    " bytes for a mip of " + std::to_string(size));
+    }
+    for (const Upload& u : uploads_)
+        if (u.image == &image && u.mip == mip)
+            throw std::logic_error("glint::gpu::TransferBatch: mip " + std::to_string(mip) +
+                                   " uploaded twice in one batch");
+    const VkDeviceSize offset = alignedOffset(uploadBytes_.size());
+    uploadBytes_.resize(offset + size);
+    std::memcpy(uploadBytes_.data() + offset, texels.data(), size);
+    uploads_.push_back({&image, mip, offset});
+}
+
+void TransferBatch::uploadImage(const vk::Image& image, std::span<const float> texels, uint32_t channels,
+                                uint32_t mip) {
+    const VkDeviceSize size = mipByteSize(image, mip, "glint::gpu::uploadImage");
+    const size_t texelCount = size_t{mipWidth(image, mip)} * mipHeight(image, mip);
+    if (channels == 0 || texels.size() != texelCount * channels) {
+        throw std::invalid_argument("glint::gpu::uploadImage: " + std::to_string(texels.size()) +
+                                    " floats for " + std::to_string(texelCount) + " texels of " +
+                                    std::to_string(channels) + " channels");
+    }
+    std::vector<std::byte> bytes(size);
+    encodeTexels(image.format, texels, channels, bytes);
+    uploadImageBytes(image, bytes, mip);
+}
+
+std::size_t TransferBatch::readbackImage(const vk::Image& image, uint32_t mip) {
+    if (submitted_) throw std::logic_error("glint::gpu::TransferBatch: readback after submit");
+    const VkDeviceSize size = mipByteSize(image, mip, "glint::gpu::readbackImageBytes");
+    const VkDeviceSize offset = alignedOffset(readbackSize_);
+    readbacks_.push_back({&image, mip, offset, size});
+    readbackSize_ = offset + size;
+    return readbacks_.size() - 1;
+}
+
+void TransferBatch::submit() {
+    if (submitted_) throw std::logic_error("glint::gpu::TransferBatch: submitted twice");
+    submitted_ = true;
+    if (uploads_.empty() && readbacks_.empty()) return;
+    const vk::Device& device = context_.device;
+    if (!uploads_.empty()) {
+        uploadStaging_ = vk::createBuffer(device, uploadBytes_.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                                          vk::MemoryUse::Upload);
+        std::memcpy(uploadStaging_.mapped, uploadBytes_.data(), uploadBytes_.size());
+        vk::flushBuffer(device, uploadStaging_);
+    }
+    if (!readbacks_.empty())
+        readbackStaging_ = vk::createBuffer(device, readbackSize_, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                            vk::MemoryUse::Readback);
+    submitAndWait(context_, [&](VkCommandBuffer cmd) {
+        for (const Upload& u : uploads_) {
+            // From UNDEFINED: the whole mip is overwritten, so its old layout and contents do not
+            // matter, and the upload works on new and used images alike.
+            imageBarrier(cmd, *u.image, u.mip, 1,
+                         {VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                          VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_ACCESS_MEMORY_WRITE_BIT,
+                          VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT});
+            VkBufferImageCopy region = mipCopyRegion(*u.image, u.mip);
+            region.bufferOffset = u.offset;
+            vkCmdCopyBufferToImage(cmd, uploadStaging_.buffer, u.image->image,
+                                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+            imageBarrier(cmd, *u.image, u.mip, 1,
+                         {VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
+                          VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                          VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, kAnyAccess});
+        }
+        for (const Readback& r : readbacks_) {
+            imageBarrier(cmd, *r.image, r.mip, 1,
+                         {VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL,
+                          VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_ACCESS_MEMORY_WRITE_BIT,
+                          VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT});
+            VkBufferImageCopy region = mipCopyRegion(*r.image, r.mip);
+            region.bufferOffset = r.offset;
+            vkCmdCopyImageToBuffer(cmd, r.image->image, VK_IMAGE_LAYOUT_GENERAL, readbackStaging_.buffer, 1,
+                                   &region);
+            // Later writes to the image must wait for this read (an execution dependency suffices).
+            imageBarrier(cmd, *r.image, r.mip, 1,
+                         {VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
+                          VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0});
+        }
+        if (!readbacks_.empty())
+            memoryBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                          VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
+    });
+    if (!readbacks_.empty()) vk::invalidateBuffer(device, readbackStaging_);
+}
+
+std::vector<std::byte> TransferBatch::bytes(std::size_t ticket) const {
+    if (!submitted_ || ticket >= readbacks_.size())
+        throw std::logic_error("glint::gpu::TransferBatch: no readback " + std::to_string(ticket) + " yet");
+    const Readback& r = readbacks_[ticket];
+    const std::byte* first = static_cast<const std::byte*>(readbackStaging_.mapped) + r.offset;
+    return std::vector<std::byte>(first, first + r.size);
+}
+
+std::vector<float> TransferBatch::floats(std::size_t ticket) const {
+    const vk::Image& image = *readbacks_.at(ticket).image;
+    if (!hasFloatConversion(image.format)) {
+        throw std::invalid_argument("glint::gpu::readbackImage: VkFormat " +
+                                    std::to_string(static_cast<int>(image.format)) +
+                                    " has no float conversion (use readbackImageBytes)");
+    }
+    const std::vector<std::byte> raw = bytes(ticket);
+    std::vector<float> result(raw.size() / vk::formatTexelSize(image.format) *
+                              vk::formatChannelCount(image.format));
+    decodeTexels(image.format, raw, result);
+    return result;
 }
 
 } // namespace glint::gpu

@@ -1,6 +1,7 @@
-// Moving data between the CPU and glint's buffers and images, synchronously: every call
-// records one command buffer, submits it and waits (submitAndWait), so the data is on the GPU
-// (or in the returned vector) when it returns. Meant for tests and tools, not frame loops.
+// Moving data between the CPU and glint's buffers and images, synchronously: every call (and
+// every TransferBatch::submit) records one command buffer, submits it and waits (submitAndWait),
+// so the data is on the GPU (or in the returned vector) when it returns. Meant for tests and
+// tools, not frame loops.
 //
 // Image layout convention: the harness keeps every image that a pass reads or writes in
 // VK_IMAGE_LAYOUT_GENERAL (legal for storage, sampled and transfer use alike), so no code
@@ -59,6 +60,50 @@ std::vector<float> readbackImage(const Context& context, const vk::Image& image,
 // Fills every mip with `value` (in the format's own terms: floats for float and UNORM formats,
 // uint32 for UINT formats) and leaves the whole image in GENERAL.
 void clearImage(const Context& context, const vk::Image& image, const VkClearColorValue& value);
+
+// Image transfers gathered into one submission: a frame's inputs, or every output an effect
+// wrote, cost one vkQueueSubmit and two staging buffers instead of one of each per image.
+// Uploads are encoded and copied aside when queued (the caller's texels may go at once) and
+// reach their images on submit(); readbacks are copied on submit(), after the batch's uploads,
+// and are read with bytes()/floats() once it returned. Layouts and barriers as above. A mip may
+// be uploaded once per batch. The single-image calls above are batches of one.
+class TransferBatch {
+  public:
+    explicit TransferBatch(const Context& context);
+    ~TransferBatch();
+    TransferBatch(const TransferBatch&) = delete;
+    TransferBatch& operator=(const TransferBatch&) = delete;
+
+    void uploadImageBytes(const vk::Image& image, std::span<const std::byte> texels, uint32_t mip = 0);
+    void uploadImage(const vk::Image& image, std::span<const float> texels, uint32_t channels,
+                     uint32_t mip = 0);
+    // A ticket for bytes() or floats() after submit().
+    std::size_t readbackImage(const vk::Image& image, uint32_t mip = 0);
+    // Records, submits and waits; a batch is submitted once. With nothing queued, submits nothing.
+    void submit();
+    std::vector<std::byte> bytes(std::size_t ticket) const;
+    // formatChannelCount(image.format) floats per texel.
+    std::vector<float> floats(std::size_t ticket) const;
+
+  private:
+    struct Upload {
+        const vk::Image* image;
+        uint32_t mip;
+        VkDeviceSize offset;
+    };
+    struct Readback {
+        const vk::Image* image;
+        uint32_t mip;
+        VkDeviceSize offset, size;
+    };
+    const Context& context_;
+    std::vector<std::byte> uploadBytes_; // each upload's texels at its offset
+    std::vector<Upload> uploads_;
+    std::vector<Readback> readbacks_;
+    VkDeviceSize readbackSize_ = 0;
+    vk::Buffer uploadStaging_, readbackStaging_;
+    bool submitted_ = false;
+};
 
 uint32_t mipWidth(const vk::Image& image, uint32_t mip);
 uint32_t mipHeight(const vk::Image& image, uint32_t mip);

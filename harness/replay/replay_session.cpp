@@ -155,6 +155,7 @@ Session::~Session() = default;
 
 void Session::uploadInputs(const capture::Frame& frame, bool reset) {
     uploaded_.clear();
+    gpu::TransferBatch batch(context_); // the frame's images in one submission
     for (const auto& running : running_)
         for (const InputDesc& input : running->descriptor->inputs) {
             if (!inputUsed(input, running->settings) || uploaded_.contains(input.kind)) continue;
@@ -169,7 +170,7 @@ void Session::uploadInputs(const capture::Frame& frame, bool reset) {
             if (input.kind == InputKind::SceneGeometry) continue; // buffers, set per frame in run()
             std::uint32_t channels = 0;
             std::vector<float> texels = inputTexels(frame, input.kind, channels);
-            inputs_->upload(input.kind, texels, channels);
+            inputs_->upload(batch, input.kind, texels, channels);
             uploaded_[input.kind] = std::move(texels);
         }
     for (const auto& running : running_)
@@ -178,10 +179,11 @@ void Session::uploadInputs(const capture::Frame& frame, bool reset) {
                 std::uint32_t channels = 1;
                 std::vector<float> depth = inputTexels(frame, InputKind::Depth, channels);
                 const bool usable = !reset && previousDepth_.size() == depth.size();
-                inputs_->upload(InputKind::PreviousDepth, usable ? previousDepth_ : depth, 1);
+                inputs_->upload(batch, InputKind::PreviousDepth, usable ? previousDepth_ : depth, 1);
                 previousDepth_ = std::move(depth);
                 uploaded_[input.kind] = {};
             }
+    batch.submit();
 }
 
 namespace {

@@ -71,13 +71,12 @@ SceneBuffers::~SceneBuffers() {
 }
 
 void SceneBuffers::release() {
-    for (vk::Buffer* buffer : {&constants_, &nodes_, &primitives_, &lights_})
-        if (buffer->buffer != VK_NULL_HANDLE) vk::destroyBuffer(context_.device, *buffer);
+    for (Stored* stored : {&constants_, &nodes_, &primitives_, &lights_})
+        if (stored->buffer.buffer != VK_NULL_HANDLE) vk::destroyBuffer(context_.device, stored->buffer);
 }
 
 void SceneBuffers::setFrame(std::uint32_t frame) {
     frame = std::min(frame, scene_.frameCount == 0 ? 0u : scene_.frameCount - 1);
-    release();
     Bvh bvh = buildBvh(buildGeometry(scene_, meshes_, frame).primitives);
     if (bvh.primitives.empty()) bvh.primitives.push_back({}); // never read: the root is an empty leaf
     shaders::GLINT_SceneConstants c{};
@@ -88,18 +87,33 @@ void SceneBuffers::setFrame(std::uint32_t frame) {
     c.samples = 1;
     c.shadowSamples = scene_.shadowSamples;
     c.environmentIntensity = 1.0f;
-    constants_ = upload(context_, std::vector<shaders::GLINT_SceneConstants>{c});
-    nodes_ = upload(context_, bvh.nodes);
-    primitives_ = upload(context_, bvh.primitives);
-    lights_ = upload(context_, packLights(lightsAt(scene_, frame)));
+    refresh(constants_, std::as_bytes(std::span(&c, 1)));
+    refresh(nodes_, std::as_bytes(std::span(bvh.nodes)));
+    refresh(primitives_, std::as_bytes(std::span(bvh.primitives)));
+    const std::vector<shaders::SceneLight> lights = packLights(lightsAt(scene_, frame));
+    refresh(lights_, std::as_bytes(std::span(lights)));
+}
+
+void SceneBuffers::refresh(Stored& stored, std::span<const std::byte> bytes) {
+    // A static scene's BVH and lights are the same on every frame: uploaded once.
+    if (stored.buffer.buffer != VK_NULL_HANDLE && stored.bytes.size() == bytes.size() &&
+        std::equal(bytes.begin(), bytes.end(), stored.bytes.begin()))
+        return;
+    if (stored.buffer.buffer != VK_NULL_HANDLE && stored.buffer.size != bytes.size())
+        vk::destroyBuffer(context_.device, stored.buffer);
+    if (stored.buffer.buffer == VK_NULL_HANDLE)
+        stored.buffer = vk::createBuffer(context_.device, bytes.size(), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                         vk::MemoryUse::DeviceLocal);
+    gpu::uploadBuffer(context_, stored.buffer, bytes);
+    stored.bytes.assign(bytes.begin(), bytes.end());
 }
 
 void SceneBuffers::addTo(vk::ResourceTable& table) const {
-    table.buffers["scene_constants"] = &constants_;
-    table.buffers["scene_nodes"] = &nodes_;
-    table.buffers["scene_primitives"] = &primitives_;
+    table.buffers["scene_constants"] = &constants_.buffer;
+    table.buffers["scene_nodes"] = &nodes_.buffer;
+    table.buffers["scene_primitives"] = &primitives_.buffer;
     table.buffers["scene_materials"] = &materials_;
-    table.buffers["scene_lights"] = &lights_;
+    table.buffers["scene_lights"] = &lights_.buffer;
 }
 
 } // namespace glint::scene

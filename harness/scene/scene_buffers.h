@@ -12,6 +12,8 @@
 
 #include "glint/vulkan/vk_executor.h"
 
+#include <cstddef>
+#include <span>
 #include <vector>
 
 namespace glint::scene {
@@ -35,11 +37,19 @@ class SceneBuffers {
     void addTo(vk::ResourceTable& table) const;
 
   private:
+    // A buffer and the bytes last uploaded to it.
+    struct Stored {
+        vk::Buffer buffer;
+        std::vector<std::byte> bytes;
+    };
+    // Uploads `bytes` unless the buffer holds them already (recreated when the size changes).
+    void refresh(Stored& stored, std::span<const std::byte> bytes);
     void release();
     const gpu::Context& context_;
     Scene scene_;
     std::vector<Mesh> meshes_;
-    vk::Buffer constants_, nodes_, primitives_, materials_, lights_;
+    Stored constants_, nodes_, primitives_, lights_;
+    vk::Buffer materials_;
 };
 
 } // namespace glint::scene

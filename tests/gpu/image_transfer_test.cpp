@@ -128,6 +128,48 @@ TEST_CASE("an image can be uploaded again after it was read back", "[gpu]") {
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }
 
+TEST_CASE("a transfer batch uploads and reads back several images and mips in one submission", "[gpu]") {
+    const gpu::Context& context = test::testContext();
+    // Formats of different texel sizes (4, 8 and 1 bytes), so the staging offsets must be aligned.
+    vk::Image a = vk::createImage2D(context.device, kWidth, kHeight, VK_FORMAT_R32_SFLOAT, kMips);
+    vk::Image b = vk::createImage2D(context.device, 5, 3, VK_FORMAT_R16G16B16A16_SFLOAT);
+    vk::Image c = vk::createImage2D(context.device, 3, 3, VK_FORMAT_R8_UNORM);
+    std::vector<std::vector<float>> expected;
+    {
+        gpu::TransferBatch batch(context);
+        for (uint32_t mip = 0; mip < kMips; ++mip) {
+            expected.push_back(exactValues(VK_FORMAT_R32_SFLOAT,
+                                           size_t{gpu::mipWidth(a, mip)} * gpu::mipHeight(a, mip), mip));
+            batch.uploadImage(a, expected.back(), 1, mip);
+        }
+        expected.push_back(exactValues(VK_FORMAT_R16G16B16A16_SFLOAT, 5 * 3 * 4, 7));
+        batch.uploadImage(b, expected.back(), 4);
+        expected.push_back(exactValues(VK_FORMAT_R8_UNORM, 3 * 3, 9));
+        batch.uploadImage(c, expected.back(), 1);
+        // A mip twice in one batch is refused (its two copies would race).
+        CHECK_THROWS_AS(batch.uploadImage(c, expected.back(), 1), std::logic_error);
+        // Readbacks in the same batch see its uploads.
+        const std::size_t fromC = batch.readbackImage(c);
+        const std::size_t fromA1 = batch.readbackImage(a, 1);
+        CHECK_THROWS_AS(batch.floats(fromC), std::logic_error); // not submitted yet
+        batch.submit();
+        CHECK(batch.floats(fromC) == expected[kMips + 1]);
+        CHECK(batch.floats(fromA1) == expected[1]);
+        CHECK_THROWS_AS(batch.submit(), std::logic_error);
+    }
+    gpu::TransferBatch reads(context);
+    std::vector<std::size_t> tickets;
+    for (uint32_t mip = 0; mip < kMips; ++mip) tickets.push_back(reads.readbackImage(a, mip));
+    tickets.push_back(reads.readbackImage(b));
+    reads.submit();
+    for (std::size_t i = 0; i < tickets.size(); ++i) {
+        INFO("readback " << i);
+        CHECK(reads.floats(tickets[i]) == expected[i]);
+    }
+    for (vk::Image* image : {&a, &b, &c}) vk::destroyImage(context.device, *image);
+    GLINT_REQUIRE_NO_VALIDATION_ERRORS();
+}
+
 TEST_CASE("clearing an image fills every mip and leaves it readable", "[gpu]") {
     const gpu::Context& context = test::testContext();
     vk::Image image = vk::createImage2D(context.device, kWidth, kHeight, VK_FORMAT_R32_SFLOAT, kMips);

@@ -77,6 +77,7 @@ std::vector<EffectFrame> EffectSet::run(const capture::Frame& frame, bool cut, b
     const FrameInfo info = replay::frameInfo(frame, environment_, frame_, reset);
     // The inputs, each kind once (effects share them), as the session uploads them.
     std::vector<InputKind> done;
+    gpu::TransferBatch batch(context_); // the frame's images in one submission
     const auto uploaded = [&](InputKind kind) {
         for (InputKind k : done)
             if (k == kind) return true;
@@ -99,7 +100,7 @@ std::vector<EffectFrame> EffectSet::run(const capture::Frame& frame, bool cut, b
             std::uint32_t channels = 0;
             std::vector<float> texels = replay::inputTexels(frame, input.kind, channels);
             if (hook_) hook_(input.kind, texels, channels);
-            inputs_->upload(input.kind, texels, channels);
+            inputs_->upload(batch, input.kind, texels, channels);
             if (input.kind == InputKind::Depth) {
                 // Last frame's depth as the application copied it (poisoned or not).
                 bool wantsPrevious = false;
@@ -108,11 +109,12 @@ std::vector<EffectFrame> EffectSet::run(const capture::Frame& frame, bool cut, b
                         wantsPrevious = wantsPrevious || i.kind == InputKind::PreviousDepth;
                 if (wantsPrevious) {
                     const bool usable = !reset && previousDepth_.size() == texels.size();
-                    inputs_->upload(InputKind::PreviousDepth, usable ? previousDepth_ : texels, 1);
+                    inputs_->upload(batch, InputKind::PreviousDepth, usable ? previousDepth_ : texels, 1);
                     previousDepth_ = std::move(texels);
                 }
             }
         }
+    batch.submit();
     environmentPoisoned_ = false;
     hook_ = nullptr;
     if (scene_) scene_->setFrame(frame.frameIndex);

@@ -5,4 +5,4 @@ glint_add_test_suite(NAME sssr_vndf LABELS gpu
   LIBS glint_scene glint_gpu_test_support glint_gpu)
 # The expected bin probabilities integrate the densities over millions of directions per
 # case; keep that fast in Debug (sanitizers stay on), as harness/scene does for its BVH.
-set_source_files_properties(sssr/vndf_test.cpp PROPERTIES COMPILE_OPTIONS "-O2")
+set_source_files_properties(sssr/vndf_test.cpp PROPERTIES COMPILE_OPTIONS "-O2" SKIP_PRECOMPILE_HEADERS ON)
