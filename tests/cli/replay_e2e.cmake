@@ -63,9 +63,10 @@ if(CASE STREQUAL "reflections")
   glint_expect(0 --validate run "${OUT}/capture" --set denoise=true --set composite=true --out "${OUT}/run")
   summary_error(reflections last denoised)
   summary_error(reflections noisyLast noisy)
-  # Measured on lavapipe 2026-11-22 and again 2026-12-02: denoised 0.450, noisy input 0.864
-  # (mean relative error over glossy pixels). The camera moves every frame in this scene.
-  require_less("denoised error" "${denoised}" 0.55)
+  # Mean relative error over glossy pixels at the last frame (the camera moves every frame),
+  # lavapipe 2026-12-04, seeds 1-6: denoised 0.3275-0.3378 (sd 0.0034), noisy input 0.62-0.64.
+  # Bound: the largest plus the larger of 4 sd and 5 % of it.
+  require_less("denoised error" "${denoised}" 0.355)
   require_less("denoised error relative to the noisy input" "${denoised}" "${noisy}")
   foreach(image noisy denoised composite reference error)
     if(NOT EXISTS "${OUT}/run/frame_0005/reflections_${image}.png")
@@ -87,12 +88,13 @@ elseif(CASE STREQUAL "shadows")
   math(EXPR lastFrame "${frames} - 1")
   string(JSON penumbra GET "${json}" frames ${lastFrame} errors shadows penumbra)
   string(JSON nonFinite GET "${json}" frames ${lastFrame} errors shadows nonFinite)
-  # Measured on lavapipe 2026-12-02: mean |error| over receivers 0.0038 against the noisy
-  # input's 0.0045 (most receivers are fully lit or shadowed, where both are exact), penumbra
-  # 0.147 (the penumbra gap of issue 7: the plain average of the input is lower; see
-  # docs/shadow_denoiser.md). The absolute bounds only catch a broken run.
+  # Lavapipe 2026-12-04, seeds 1-6, last frame: mean |error| over receivers 0.0020-0.0023
+  # (sd 0.00012) against the noisy input's 0.0041-0.0055 (most receivers are fully lit or
+  # shadowed, where both are exact); over the penumbra 0.137-0.165 (sd 0.010; the plain average
+  # of the input is lower: docs/shadow_denoiser.md). Receivers' bound: the largest plus the
+  # larger of 4 sd and 5 % of it; the penumbra's 0.2 is 3.4 sd above the largest.
   require_less("denoised shadow error over receivers relative to the noisy input" "${denoised}" "${noisy}")
-  require_less("denoised shadow error over receivers" "${denoised}" 0.015)
+  require_less("denoised shadow error over receivers" "${denoised}" 0.0028)
   require_less("denoised shadow error over the penumbra" "${penumbra}" 0.2)
   if(NOT nonFinite EQUAL 0)
     message(FATAL_ERROR "non-finite shadow pixels: ${nonFinite}")

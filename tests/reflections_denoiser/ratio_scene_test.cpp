@@ -150,18 +150,25 @@ TEST_CASE("static glossy room: both spatial paths' errors fall over frames and e
     // left against the reference is SSSR's own bias (its 256-frame mean's distance from the
     // reference: off-screen geometry, the box-filtered environment), which no denoiser removes.
     // The default path (prefilter) ends far below one raw frame and below the plain average.
+    // Absolute bounds: the largest of eight sample sequences (frame indices offset by 0, 1000, ...,
+    // 7000; lavapipe, 2026-12-04) plus the larger of 4 standard deviations and 5 % of it (the
+    // rule of tests/sssr/convergence_test.cpp). Prefilter at frame 23: error against the
+    // reference 0.2079-0.2149 (sd 0.0023), against SSSR's mean 0.0763-0.0809 (sd 0.0017); ratio
+    // path: 0.2102-0.2276 (sd 0.0051) and 0.0785-0.0856 (sd 0.0028).
     CHECK(errors[0].back() < 0.6 * rawError);
     CHECK(errors[0].back() < averageError);
+    CHECK(errors[0].back() < 0.226);
     CHECK(noise[0].back() < 0.75 * noise[0].front());
-    CHECK(noise[0].back() < 0.12);
+    CHECK(noise[0].back() < 0.088);
     // The ratio path must end below SSSR's own mean.
     const std::vector<double>& ratioErrors = errors[1];
     const std::vector<double>& ratioNoise = noise[1];
     CHECK(ratioErrors.back() < ratioErrors.front());
     CHECK(ratioErrors.back() < 0.7 * rawError);
     CHECK(ratioErrors.back() < convergedError);
+    CHECK(ratioErrors.back() < 0.248);
     CHECK(ratioNoise.back() < 0.75 * ratioNoise.front());
-    CHECK(ratioNoise.back() < 0.10);
+    CHECK(ratioNoise.back() < 0.097);
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }
 

@@ -273,8 +273,9 @@ double frameToFrameChange(gpu::SssrRunner& runner, SssrDesc desc, const std::vec
 // another sample sequence; the 5 % floor covers a systematic shift of the corridor's narrow
 // spread). Mask floors: 90 % of the smallest measured mask, about seven times the spread: a
 // larger loss means rays stopped finding on-screen geometry. The environment baseline is what
-// the effect promises: screen-space hits must cut the error of the environment fallback by at
-// least a factor of 4 where the screen has the answer (measured 16 and 6.8).
+// the effect promises, that screen-space hits cut the error of the environment fallback where
+// the screen has the answer: measured 16.8x and 6.8x; required, the error bound over the
+// environment's measured error (whose pixels and lookups involve no sampling).
 
 const ConvergenceNumbers& glossyRoom() {
     static const ConvergenceNumbers numbers = measureConvergence("glossy_room.toml", 32);
@@ -284,9 +285,10 @@ const ConvergenceNumbers& glossyRoom() {
 TEST_CASE("static glossy room: the frame average matches the reference where the screen has the answer",
           "[sssr][convergence]") {
     const ConvergenceNumbers& n = glossyRoom();
-    CHECK(n.mask >= 660u);                              // 0.9 x 736
-    CHECK(n.averaged.mean < 0.074);                     // 0.0612 + 4 x 0.0029 (0.0589 on frames 0..31)
-    CHECK(n.averaged.mean < 0.25 * n.environment.mean); // measured 0.0589 against 0.987
+    CHECK(n.mask >= 660u);          // 0.9 x 736
+    CHECK(n.averaged.mean < 0.074); // 0.0612 + 4 x 0.0029 (0.0589 on frames 0..31)
+    // Measured 0.0589 against 0.987 (a 16.8x gain); the bound above over the environment's 0.987.
+    CHECK(n.averaged.mean < 0.075 * n.environment.mean);
     CHECK(n.mirrorsChanging == 0u);
 }
 
@@ -317,7 +319,8 @@ TEST_CASE("static mirror corridor: the frame average matches the reference where
     // that the plane gap accepts, which are harder pixels (docs/sssr.md, "Accuracy on simulated
     // scenes"). Bound: 0.1396 x 1.05 (4 sd would be 0.003 only).
     CHECK(n.averaged.mean < 0.147);
-    CHECK(n.averaged.mean < 0.25 * n.environment.mean); // measured 0.138 against 0.945
+    // Measured 0.138 against 0.945 (a 6.8x gain); the bound above over the environment's 0.945.
+    CHECK(n.averaged.mean < 0.156 * n.environment.mean);
     CHECK(n.mirrors > 9350u); // 0.9 x 10396: the scene's roughness layer, no sampling involved
     CHECK(n.mirrorsChanging == 0u);
 }
