@@ -71,9 +71,10 @@ VkDeviceSize mipByteSize(const vk::Image& image, uint32_t mip, const char* funct
     return VkDeviceSize{mipWidth(image, mip)} * mipHeight(image, mip) * texelSize;
 }
 
-VkBufferImageCopy mipCopyRegion(const vk::Image& image, uint32_t mip) {
+// One whole mip, tightly packed in the buffer from `offset`.
+VkBufferImageCopy mipCopyRegion(const vk::Image& image, uint32_t mip, VkDeviceSize offset) {
     VkBufferImageCopy region{};
-    region.bufferOffset = 0;
+    region.bufferOffset = offset;
     region.bufferRowLength = 0; // tightly packed
     region.bufferImageHeight = 0;
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, mip, 0, 1};
@@ -281,8 +282,7 @@ void TransferBatch::submit() {
                          {VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                           VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_ACCESS_MEMORY_WRITE_BIT,
                           VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT});
-            VkBufferImageCopy region = mipCopyRegion(*u.image, u.mip);
-            region.bufferOffset = u.offset;
+            const VkBufferImageCopy region = mipCopyRegion(*u.image, u.mip, u.offset);
             vkCmdCopyBufferToImage(cmd, uploadStaging_.buffer, u.image->image,
                                    VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
             imageBarrier(cmd, *u.image, u.mip, 1,
@@ -295,8 +295,7 @@ void TransferBatch::submit() {
                          {VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL,
                           VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_ACCESS_MEMORY_WRITE_BIT,
                           VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT});
-            VkBufferImageCopy region = mipCopyRegion(*r.image, r.mip);
-            region.bufferOffset = r.offset;
+            const VkBufferImageCopy region = mipCopyRegion(*r.image, r.mip, r.offset);
             vkCmdCopyImageToBuffer(cmd, r.image->image, VK_IMAGE_LAYOUT_GENERAL, readbackStaging_.buffer, 1,
                                    &region);
             // Later writes to the image must wait for this read (an execution dependency suffices).
