@@ -131,7 +131,9 @@ ShadowClassifyRanges shadowClassifyIndependent(const ShadowClassifyInputs& in,
     const std::size_t count = img.at(0, h);
 
     // Lit samples: >= 0.5 (NaN is not).
-    auto lit = [&](int x, int y) { return visibility[img.at(x, y)] >= 0.5f ? 1.0 : 0.0; };
+    std::vector<double> litImage(count);
+    for (std::size_t p = 0; p < count; ++p) litImage[p] = visibility[p] >= 0.5f ? 1.0 : 0.0;
+    auto lit = [&](int x, int y) { return litImage[img.at(x, y)]; };
     // The documented addressing of the 17x17 window and of the uniform test's mask tiles: a
     // column outside the image reads the border tile (tile index clamped, same bit column), a
     // bit outside the image repeats the nearest pixel, a row outside it the border row.
@@ -155,23 +157,36 @@ ShadowClassifyRanges shadowClassifyIndependent(const ShadowClassifyInputs& in,
     for (int i = -8; i <= 8; ++i) total += weights[i + 8] = std::exp(-3.0 * i * i / 81.0);
     for (double& weight : weights) weight /= total;
 
-    auto z = [&](int x, int y) { return viewDepth(in.depth[img.at(x, y)], in.viewDepth); };
-    auto zPrevious = [&](int x, int y) { return viewDepth(in.previousDepth[img.at(x, y)], in.viewDepth); };
+    std::vector<double> zImage(count), zPreviousImage(count);
+    for (std::size_t p = 0; p < count; ++p) {
+        zImage[p] = viewDepth(in.depth[p], in.viewDepth);
+        zPreviousImage[p] = viewDepth(in.previousDepth[p], in.viewDepth);
+    }
+    auto z = [&](int x, int y) { return zImage[img.at(x, y)]; };
+    auto zPrevious = [&](int x, int y) { return zPreviousImage[img.at(x, y)]; };
+    // The 17x17 Gaussian is separable: each in-image row's horizontal sums first.
+    std::vector<double> rowSums(count, 0.0);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x)
+            for (int k = -8; k <= 8; ++k) rowSums[img.at(x, y)] += weights[k + 8] * windowSample(x + k, y);
     // The widest penumbra W = scale * blocker / z over the 9 x 9 neighbourhood, coordinates
     // clamped to the image; non-receivers, lit samples (whatever their blocker) and a light of
     // size 0 imply none.
+    std::vector<double> penumbraWidth(count, 0.0);
+    for (std::size_t p = 0; in.penumbraScale > 0.0f && p < count; ++p) {
+        const double zq = zImage[p];
+        if (!(zq > 0.0) || litImage[p] > 0.5) continue; // lit: none
+        const double b = in.blockerDistance[p];
+        penumbraWidth[p] =
+            std::isfinite(b) && b >= 0.0 ? double(in.penumbraScale) * b / zq : kUnknownPenumbra;
+    }
     auto widestPenumbra = [&](int x, int y) {
         double widest = 0.0;
         for (int dy = -kHardRadius; dy <= kHardRadius; ++dy)
-            for (int dx = -kHardRadius; dx <= kHardRadius; ++dx) {
-                const int qx = std::clamp(x + dx, 0, w - 1), qy = std::clamp(y + dy, 0, h - 1);
-                const double zq = z(qx, qy);
-                if (!(zq > 0.0) || in.penumbraScale == 0.0f || lit(qx, qy) > 0.5) continue; // lit: none
-                const double b = in.blockerDistance[img.at(qx, qy)];
-                const double width =
-                    std::isfinite(b) && b >= 0.0 ? double(in.penumbraScale) * b / zq : kUnknownPenumbra;
-                widest = std::max(widest, width);
-            }
+            for (int dx = -kHardRadius; dx <= kHardRadius; ++dx)
+                widest = std::max(
+                    widest,
+                    penumbraWidth[img.at(std::clamp(x + dx, 0, w - 1), std::clamp(y + dy, 0, h - 1))]);
         return widest;
     };
 
@@ -245,8 +260,7 @@ ShadowClassifyRanges shadowClassifyIndependent(const ShadowClassifyInputs& in,
                     // The 17x17 Gaussian mean, in double with the exact weights.
                     double mean = 0.0;
                     for (int r = -8; r <= 8; ++r)
-                        for (int k = -8; k <= 8; ++k)
-                            mean += weights[r + 8] * weights[k + 8] * windowSample(x + k, y + r);
+                        mean += weights[r + 8] * rowSums[img.at(x, std::clamp(y + r, 0, h - 1))];
 
                     Pixel px;
                     px.sample = lit(x, y);

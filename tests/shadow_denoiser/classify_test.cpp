@@ -1,9 +1,9 @@
-// Tile classification + temporal pass on the device against the CPU reference, camera cuts,
-// tile skipping metadata and non-finite inputs.
+// Tile classification + temporal pass on the device against the independent CPU reference
+// (shadow_classify_independent.h: double, from docs/shadow_denoiser.md, a range per value) and
+// against what docs/shadow_denoiser.md states exactly: camera cuts, clear tiles' constants and
+// rebuilt histories, hard shadows passed through, tile skipping, non-finite inputs.
 #include "glint/shadow_denoiser/glint_shadow_denoiser_constants.h"
 #include "reference/shadow_classify_independent.h"
-#include "reference/shadow_classify_reference.h"
-#include "reference/shadow_denoiser_reference.h"
 #include "shadow_denoiser/shadow_runner.h"
 #include "support/gpu_test_context.h"
 
@@ -16,11 +16,6 @@
 using namespace glint;
 
 namespace {
-
-// The 17x17 sums, exp, sqrt and pow differ between the device and the C library by a few
-// ulps; every output channel must agree within this absolute tolerance (n up to ~1000 is
-// compared relatively).
-constexpr float kTolerance = 2e-4f;
 
 // A perspective-like VP^-1 that is not symmetric, so a transposed upload would change results.
 constexpr std::array<double, 16> kInverseViewProjection{0.8, 0.1, 0.0, 0.0,  0.0, -0.6, 0.0,   0.0,
@@ -44,7 +39,6 @@ reference::ShadowClassifyInputs referenceInputs(const ShadowDenoiserDesc& desc,
     reference::ShadowClassifyInputs ref;
     ref.width = desc.size.width;
     ref.height = desc.size.height;
-    ref.mask = reference::packShadowMask(inputs.visibility, ref.width, ref.height);
     ref.depth = inputs.depth;
     ref.previousDepth = inputs.previousDepth;
     ref.normals = inputs.normals;
@@ -114,92 +108,38 @@ void randomHistory(std::size_t count, std::uint32_t seed, std::vector<float>& mo
     }
 }
 
-std::size_t countMismatches(const std::vector<float>& actual, const std::vector<float>& expected) {
-    REQUIRE(actual.size() == expected.size());
-    std::size_t mismatches = 0;
-    for (std::size_t i = 0; i < expected.size(); ++i) {
-        const float scale = std::max(1.0f, std::abs(expected[i]));
-        if (!std::isfinite(actual[i]) || std::abs(actual[i] - expected[i]) > kTolerance * scale) {
-            // The first few, so a failure says where and by how much.
-            if (mismatches < 6)
-                UNSCOPED_INFO("value " << i << ": gpu " << actual[i] << " reference " << expected[i]);
-            ++mismatches;
-        }
-    }
-    return mismatches;
+// The metadata word of the 8x8 tile holding `pixel` (an index into a `width`-wide image).
+std::uint32_t tileWord(const std::vector<std::uint32_t>& metadata, std::size_t width, std::size_t pixel) {
+    return metadata.at((pixel / width / 8) * ((width + 7) / 8) + (pixel % width) / 8);
 }
 
-// The moments a frame stores: with rebuildClearHistory the texels of CLEAR tiles are not
-// written (the next frame rebuilds them), so they are left out (zeroed) on both sides.
-std::vector<float> storedMoments(const ShadowDenoiserDesc& desc, std::vector<float> moments,
-                                 const std::vector<std::uint32_t>& metadata) {
-    if (!desc.rebuildClearHistory) return moments;
-    const std::size_t width = desc.size.width;
-    const std::size_t tilesX = (width + 7) / 8;
-    for (std::size_t i = 0; 4 * i < moments.size(); ++i)
-        if (metadata.at((i / width / 8) * tilesX + (i % width) / 8) & GLINT_SHADOW_DENOISER_TILE_CLEAR)
-            std::fill_n(moments.begin() + static_cast<std::ptrdiff_t>(4 * i), 4, 0.0f);
-    return moments;
+bool clearTile(const std::vector<std::uint32_t>& metadata, std::size_t width, std::size_t pixel) {
+    return (tileWord(metadata, width, pixel) & GLINT_SHADOW_DENOISER_TILE_CLEAR) != 0u;
 }
 
-std::vector<float> storedMoments(const ShadowDenoiserDesc& desc, const test::ShadowOutputs& outputs) {
-    return storedMoments(desc, outputs.moments, outputs.metadata);
-}
-
-void checkClassify(ShadowDenoiserDesc desc, test::ShadowInputs inputs, std::uint32_t seed) {
-    const std::size_t count = std::size_t{desc.size.width} * desc.size.height;
-    std::vector<float> moments, shadow;
-    randomHistory(count, seed, moments, shadow);
-    test::ShadowRunner runner(desc);
-    runner.setHistory(desc.frameIndex, moments, shadow);
-    const test::ShadowOutputs actual = runner.run(desc, inputs);
-    const reference::ShadowClassifyOutputs expected =
-        reference::shadowClassify(referenceInputs(desc, inputs, moments));
-    INFO(desc.size.width << "x" << desc.size.height << " reset " << desc.resetHistory);
-    CHECK(actual.metadata == expected.metadata);
-    if (count >= 64 * 48 && !desc.resetHistory) {
-        // Not vacuous: some tiles are classified, some histories are reprojected, some rejected.
-        CHECK(std::count(expected.metadata.begin(), expected.metadata.end(), 0u) > 0);
-        std::size_t accumulated = 0, restarted = 0;
-        const std::size_t width = desc.size.width;
-        const std::size_t groupsX = (width + 7) / 8;
-        for (std::size_t i = 0; i < count; ++i) {
-            if (expected.metadata[(i / width / 8) * groupsX + (i % width) / 8] != 0u) continue;
-            // Welford from zero moments after one sample leaves M2 = 0 and n <= 1.
-            const bool fresh = expected.moments[4 * i + 2] <= 1.0f && expected.moments[4 * i + 1] == 0.0f;
-            accumulated += expected.moments[4 * i + 2] > 1.5f ? 1u : 0u;
-            restarted += fresh && expected.moments[4 * i + 2] > 0.0f ? 1u : 0u;
-        }
-        CHECK(accumulated > 20u);
-        CHECK(restarted > 20u);
-    }
-    CHECK(countMismatches(actual.classified, expected.shadowVariance) == 0u);
-    CHECK(countMismatches(storedMoments(desc, actual),
-                          storedMoments(desc, expected.moments, expected.metadata)) == 0u);
-    GLINT_REQUIRE_NO_VALIDATION_ERRORS();
-}
-
-// Against the independent reference (shadow_classify_independent.h), which returns a range per
-// value: the mean's, the history's and the anti-lag score's float and weight-rounding error
-// spanned. Beyond those the device's float evaluation of each value takes about 40 roundings
-// of 6e-8 and exp's 3 + 2|x| ulp (|x| <= 20 where the result is not negligible): about 1e-5
-// relative to max(1, |value|) (n reaches 1024); 2e-5 leaves a factor 2. Ambiguous pixels (a
-// decision within float rounding of its threshold) are left out; they must stay rare.
+// Against the independent reference, which returns a range per value: the mean's, the history's
+// and the anti-lag score's float and weight-rounding error spanned. Beyond those the device's
+// float evaluation of each value takes about 40 roundings of 6e-8 and exp's 3 + 2|x| ulp
+// (|x| <= 20 where the result is not negligible): about 1e-5 relative to max(1, |value|) (n
+// reaches 1024); 2e-5 leaves a factor 2. Ambiguous pixels (a decision within float rounding of
+// its threshold) are left out; they must stay rare: at most 2 % of a frame.
 constexpr double kFloatTolerance = 2e-5;
 
-void checkIndependent(const ShadowDenoiserDesc& desc, const test::ShadowInputs& inputs, std::uint32_t seed) {
-    const std::size_t count = std::size_t{desc.size.width} * desc.size.height;
-    std::vector<float> moments, shadow;
-    randomHistory(count, seed, moments, shadow);
-    test::ShadowRunner runner(desc);
-    runner.setHistory(desc.frameIndex, moments, shadow);
-    const test::ShadowOutputs actual = runner.run(desc, inputs);
+// One frame of the device against the independent reference computed from the history the
+// device read (`history`, RGBA moments): the metadata exactly; inside the ranges, the scratch
+// (shadow, variance) without the filter, and with the filter and tile skipping the output of
+// CLEAR tiles (classification writes their constant there and no filter pass touches them); the
+// stored moments, except clear tiles' with rebuildClearHistory (not stored: rebuilt next frame).
+reference::ShadowClassifyRanges checkAgainstIndependent(const ShadowDenoiserDesc& desc,
+                                                        const test::ShadowInputs& inputs,
+                                                        const std::vector<float>& history,
+                                                        const test::ShadowOutputs& actual) {
     const reference::ShadowClassifyRanges expected =
-        reference::shadowClassifyIndependent(referenceInputs(desc, inputs, moments), inputs.visibility);
+        reference::shadowClassifyIndependent(referenceInputs(desc, inputs, history), inputs.visibility);
     INFO(desc.size.width << "x" << desc.size.height << " reset " << desc.resetHistory << " antiLag "
-                         << desc.antiLag);
+                         << desc.antiLag << " filter " << desc.filter);
     CHECK(actual.metadata == expected.metadata);
-    const std::size_t width = desc.size.width, tilesX = (width + 7) / 8;
+    const std::size_t width = desc.size.width, count = width * desc.size.height;
     std::size_t compared = 0, ambiguous = 0, outside = 0;
     const auto within = [&](float value, double low, double high, const char* what, std::size_t pixel) {
         const bool ok = std::isfinite(value) &&
@@ -210,18 +150,26 @@ void checkIndependent(const ShadowDenoiserDesc& desc, const test::ShadowInputs& 
                                << "): gpu " << value << ", independent reference [" << low << ", " << high
                                << "]");
     };
+    const bool clearOutput = desc.filter && desc.skipClearedTiles;
+    REQUIRE(actual.moments.size() == 4 * count);
+    REQUIRE((desc.filter ? actual.filtered : actual.classified).size() == 2 * count);
     for (std::size_t i = 0; i < count; ++i) {
-        const bool clear = (expected.metadata.at((i / width / 8) * tilesX + (i % width) / 8) &
-                            GLINT_SHADOW_DENOISER_TILE_CLEAR) != 0u;
         if (expected.ambiguous[i]) {
             ++ambiguous;
             continue;
         }
         ++compared;
-        for (std::size_t c = 0; c < 2; ++c)
-            within(actual.classified[2 * i + c], expected.shadowVarianceLow[2 * i + c],
-                   expected.shadowVarianceHigh[2 * i + c], c == 0 ? "shadow" : "variance", i);
-        if (clear && desc.rebuildClearHistory) continue; // not stored: rebuilt next frame
+        const bool clear = clearTile(expected.metadata, width, i);
+        static const char* const channels[2] = {"shadow", "variance"};
+        for (std::size_t c = 0; c < 2; ++c) {
+            if (!desc.filter)
+                within(actual.classified[2 * i + c], expected.shadowVarianceLow[2 * i + c],
+                       expected.shadowVarianceHigh[2 * i + c], channels[c], i);
+            else if (clear && clearOutput)
+                within(actual.filtered[2 * i + c], expected.shadowVarianceLow[2 * i + c],
+                       expected.shadowVarianceHigh[2 * i + c], c == 0 ? "clear output" : "clear variance", i);
+        }
+        if (clear && desc.rebuildClearHistory) continue;
         static const char* const names[4] = {"mean", "M2", "n", "accumulated shadow"};
         for (std::size_t c = 0; c < 4; ++c)
             within(actual.moments[4 * i + c], expected.momentsLow[4 * i + c], expected.momentsHigh[4 * i + c],
@@ -230,65 +178,186 @@ void checkIndependent(const ShadowDenoiserDesc& desc, const test::ShadowInputs& 
     INFO(compared << " pixels compared, " << ambiguous << " ambiguous");
     CHECK(outside == 0u);
     CHECK(ambiguous * 50 <= count); // at most 2 %
+    return expected;
+}
+
+struct IndependentRun {
+    test::ShadowOutputs actual;
+    reference::ShadowClassifyRanges expected;
+};
+
+// One frame from a random history (`seed`) on a new runner, checked by checkAgainstIndependent.
+IndependentRun checkIndependent(const ShadowDenoiserDesc& desc, const test::ShadowInputs& inputs,
+                                std::uint32_t seed) {
+    const std::size_t count = std::size_t{desc.size.width} * desc.size.height;
+    std::vector<float> moments, shadow;
+    randomHistory(count, seed, moments, shadow);
+    test::ShadowRunner runner(desc);
+    runner.setHistory(desc.frameIndex, moments, shadow);
+    IndependentRun run;
+    run.actual = runner.run(desc, inputs);
+    run.expected = checkAgainstIndependent(desc, inputs, moments, run.actual);
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
+    return run;
+}
+
+// Not vacuous: some tiles are classified, and in them some histories are reprojected (n > 1
+// across the whole range) and some restarted (Welford from zero moments after one sample:
+// M2 = 0, 0 < n <= 1).
+void checkAccumulatedAndRestarted(const ShadowDenoiserDesc& desc,
+                                  const reference::ShadowClassifyRanges& expected) {
+    CHECK(std::count(expected.metadata.begin(), expected.metadata.end(), 0u) > 0);
+    std::size_t accumulated = 0, restarted = 0;
+    const std::size_t width = desc.size.width;
+    for (std::size_t i = 0; i < expected.ambiguous.size(); ++i) {
+        if (expected.ambiguous[i] || clearTile(expected.metadata, width, i)) continue;
+        accumulated += expected.momentsLow[4 * i + 2] > 1.5 ? 1u : 0u;
+        restarted += expected.momentsHigh[4 * i + 1] == 0.0 && expected.momentsHigh[4 * i + 2] <= 1.0 &&
+                             expected.momentsLow[4 * i + 2] > 0.0
+                         ? 1u
+                         : 0u;
+    }
+    INFO(accumulated << " accumulated, " << restarted << " restarted");
+    CHECK(accumulated > 20u);
+    CHECK(restarted > 20u);
+}
+
+// docs/shadow_denoiser.md, "Non-receivers": a receiver's depth is finite and inside (1e-6, 1 - 1e-6).
+bool receiver(float depth) {
+    return depth > 1e-6f && depth < 1.0f - 1e-6f;
+}
+
+// The moments a frame stores: with rebuildClearHistory the texels of CLEAR tiles are not
+// written (the next frame rebuilds them), so they are left out (zeroed).
+std::vector<float> storedMoments(const ShadowDenoiserDesc& desc, const test::ShadowOutputs& outputs) {
+    std::vector<float> moments = outputs.moments;
+    if (!desc.rebuildClearHistory) return moments;
+    for (std::size_t i = 0; 4 * i < moments.size(); ++i)
+        if (clearTile(outputs.metadata, desc.size.width, i))
+            std::fill_n(moments.begin() + static_cast<std::ptrdiff_t>(4 * i), 4, 0.0f);
+    return moments;
+}
+
+// Two plans on the device run the same classification functions compiled into different entry
+// points, whose contraction of products and sums into FMAs may differ: a few ulps a value, which
+// the ill-conditioned clamp radius and history damping can amplify (see docs/shadow_denoiser.md,
+// "Validation"); every channel must agree within this absolute tolerance (n up to ~1000
+// relatively).
+constexpr float kPlanTolerance = 2e-4f;
+
+std::size_t countMismatches(const std::vector<float>& actual, const std::vector<float>& expected) {
+    REQUIRE(actual.size() == expected.size());
+    std::size_t mismatches = 0;
+    for (std::size_t i = 0; i < expected.size(); ++i) {
+        const float scale = std::max(1.0f, std::abs(expected[i]));
+        if (!std::isfinite(actual[i]) || std::abs(actual[i] - expected[i]) > kPlanTolerance * scale) {
+            // The first few, so a failure says where and by how much.
+            if (mismatches < 6)
+                UNSCOPED_INFO("value " << i << ": " << actual[i] << " against " << expected[i]);
+            ++mismatches;
+        }
+    }
+    return mismatches;
 }
 
 } // namespace
 
-TEST_CASE("classify: within the independent double reference's ranges", "[classify][independent]") {
+TEST_CASE("classify 64x48 with history and motion: within the independent reference's ranges",
+          "[classify][independent]") {
     ShadowDenoiserDesc desc = classifyDesc(64, 48);
-    checkIndependent(desc, test::movingShadowInputs(64, 48, 11), 1);
+    checkAccumulatedAndRestarted(desc,
+                                 checkIndependent(desc, test::movingShadowInputs(64, 48, 11), 1).expected);
     desc.frameIndex = 1;
     desc.vulkanNdc = false;
-    checkIndependent(desc, test::movingShadowInputs(64, 48, 12), 2);
+    checkAccumulatedAndRestarted(desc,
+                                 checkIndependent(desc, test::movingShadowInputs(64, 48, 12), 2).expected);
+    // Without the anti-lag test (the reference skips its cap too).
     desc.antiLag = false;
-    checkIndependent(desc, test::movingShadowInputs(64, 48, 12), 2);
+    checkAccumulatedAndRestarted(desc,
+                                 checkIndependent(desc, test::movingShadowInputs(64, 48, 12), 2).expected);
+    // An explicit stored variance scale reaches the stored variance.
     desc.antiLag = true;
     desc.storedVarianceScale = 0.7f;
-    checkIndependent(desc, test::movingShadowInputs(64, 48, 12), 2);
-    checkIndependent(classifyDesc(1, 1), test::movingShadowInputs(1, 1, 13), 3);
-    checkIndependent(classifyDesc(13, 7), test::movingShadowInputs(13, 7, 14), 4);
-    checkIndependent(classifyDesc(203, 77), test::movingShadowInputs(203, 77, 15), 5);
-    desc = classifyDesc(64, 48);
-    desc.resetHistory = true;
-    checkIndependent(desc, test::movingShadowInputs(64, 48, 16), 6);
+    checkAccumulatedAndRestarted(desc,
+                                 checkIndependent(desc, test::movingShadowInputs(64, 48, 12), 2).expected);
+    GLINT_REQUIRE_NO_VALIDATION_ERRORS();
+}
+
+// A zoom: the motion grows away from the image centre, so the whole-pixel offset to the previous
+// position changes inside some blocks and not in others. The device runs the anti-lag test from
+// a groupshared window where a block's offset is uniform and pixel by pixel elsewhere; both must
+// stay inside the independent reference's ranges. The zoom (0.09 pixels per pixel from the
+// centre) leaves every previous position at least 0.02 pixels from a pixel edge, and the depth
+// falls by 2e-5 a column (at least 4e-4 relative in view depth), so no 2x2 quad holds two
+// equally close receivers with different motions: the quad's motion is well defined.
+TEST_CASE("classify with a zoom: uniform and mixed block offsets within the independent reference's ranges",
+          "[classify][independent]") {
+    constexpr std::uint32_t width = 64, height = 48;
+    constexpr float zoom = 0.09f;
+    test::ShadowInputs inputs = test::movingShadowInputs(width, height, 21);
+    std::size_t uniformBlocks = 0, mixedBlocks = 0;
+    for (std::uint32_t by = 0; by < height / 8; ++by)
+        for (std::uint32_t bx = 0; bx < width / 8; ++bx) {
+            bool first = true, mixed = false;
+            int firstOffset = 0;
+            for (std::uint32_t y = by * 8; y < by * 8 + 8; ++y)
+                for (std::uint32_t x = bx * 8; x < bx * 8 + 8; ++x) {
+                    const std::size_t p = std::size_t{y} * width + x;
+                    for (std::vector<float>* depth : {&inputs.depth, &inputs.previousDepth})
+                        if (receiver((*depth)[p])) (*depth)[p] -= 2e-5f * static_cast<float>(x);
+                    const float dx = zoom * (static_cast<float>(x) - 32.0f);
+                    const float dy = zoom * (static_cast<float>(y) - 24.0f);
+                    inputs.motion[2 * p] = dx / static_cast<float>(width);
+                    inputs.motion[2 * p + 1] = dy / static_cast<float>(height);
+                    // The whole-pixel offset, floor(uv_prev * size) - pixel.
+                    const int offset = static_cast<int>(std::floor(static_cast<float>(x) + 0.5f + dx)) -
+                                       static_cast<int>(x) +
+                                       64 * (static_cast<int>(std::floor(static_cast<float>(y) + 0.5f + dy)) -
+                                             static_cast<int>(y));
+                    mixed = mixed || (!first && offset != firstOffset);
+                    firstOffset = first ? offset : firstOffset;
+                    first = false;
+                }
+            ++(mixed ? mixedBlocks : uniformBlocks);
+        }
+    CHECK(uniformBlocks >= 4u);
+    CHECK(mixedBlocks >= 20u);
+    ShadowDenoiserDesc desc = classifyDesc(width, height);
+    desc.frameIndex = 1;
+    checkAccumulatedAndRestarted(desc, checkIndependent(desc, inputs, 22).expected);
+    GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }
 
 // Hard shadows pass through (docs/shadow_denoiser.md): receivers whose 9 x 9 neighbourhood
 // implies no penumbra wider than a pixel store their sample and a one-sample history; the rest
-// is the temporal stage as without the estimate. Against both references, with the tile list's
-// split classification (the default) and the single dispatch.
+// is the temporal stage as without the estimate. Against the independent reference, with the
+// single dispatch and with the tile list's split classification (the default).
 TEST_CASE("classify: hard shadows pass through, soft ones accumulate", "[classify][hard]") {
     ShadowDenoiserDesc desc = classifyDesc(64, 48);
     desc.lightTanHalfAngle = 0.01f;
     desc.pixelAngularSize = 0.01f;
     const test::ShadowInputs inputs = withBlockers(test::movingShadowInputs(64, 48, 31), 64, 48);
-    checkIndependent(desc, inputs, 7);
-    checkClassify(desc, inputs, 7);
-    std::vector<float> moments, shadow;
-    randomHistory(std::size_t{64} * 48, 7, moments, shadow);
-    const reference::ShadowClassifyOutputs expected =
-        reference::shadowClassify(referenceInputs(desc, inputs, moments));
-    // Not vacuous: the hard half's receivers in listed tiles hold their samples with n = 1,
-    // while some of the soft half's accumulate (n > 1).
+    const reference::ShadowClassifyRanges expected = checkIndependent(desc, inputs, 7).expected;
+    // Not vacuous: the hard half's receivers in listed tiles hold their samples with n = 1
+    // exactly, while some of the soft half's accumulate (n > 1).
     std::size_t passed = 0, accumulated = 0;
     for (std::size_t i = 0; i < std::size_t{64} * 48; ++i) {
-        if (expected.metadata[(i / 64 / 8) * 8 + (i % 64) / 8] != 0u) continue;
+        if (expected.ambiguous[i] || clearTile(expected.metadata, 64, i)) continue;
         const bool top = i / 64 < 20;
-        passed += top && expected.moments[4 * i + 2] == 1.0f ? 1u : 0u;
-        accumulated += !top && expected.moments[4 * i + 2] > 1.5f ? 1u : 0u;
+        passed +=
+            top && expected.momentsLow[4 * i + 2] == 1.0 && expected.momentsHigh[4 * i + 2] == 1.0 ? 1u : 0u;
+        accumulated += !top && expected.momentsLow[4 * i + 2] > 1.5 ? 1u : 0u;
     }
     CHECK(passed > 20u);
     CHECK(accumulated > 20u);
     // The default plan's split classification: its "temporal" part takes the same decisions.
     desc.filter = true;
     REQUIRE(desc.splitClassify);
+    std::vector<float> moments, shadow;
+    randomHistory(std::size_t{64} * 48, 7, moments, shadow);
     test::ShadowRunner runner(desc);
     runner.setHistory(desc.frameIndex, moments, shadow);
-    const test::ShadowOutputs actual = runner.run(desc, inputs);
-    CHECK(actual.metadata == expected.metadata);
-    CHECK(countMismatches(storedMoments(desc, actual),
-                          storedMoments(desc, expected.moments, expected.metadata)) == 0u);
+    checkAgainstIndependent(desc, inputs, moments, runner.run(desc, inputs));
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }
 
@@ -328,114 +397,79 @@ TEST_CASE("a light of angular radius 0: the denoised output equals the input exa
     }
 }
 
-// The cases below compare with reference::shadowClassify, which mirrors the shader's float
-// arithmetic (its 2^-20 weights, bit windows and formulas): it catches a change of the device's
-// results at a tight tolerance, but shares the shader's bugs. The independent reference above
-// is the check of what docs/shadow_denoiser.md promises.
-TEST_CASE("classify 64x48 with history and motion: matches the shader-mirroring CPU reference",
-          "[classify]") {
-    ShadowDenoiserDesc desc = classifyDesc(64, 48);
-    checkClassify(desc, test::movingShadowInputs(64, 48, 11), 1);
-    desc.frameIndex = 1;
-    desc.vulkanNdc = false;
-    checkClassify(desc, test::movingShadowInputs(64, 48, 12), 2);
-    // Without the anti-lag test (the reference skips its cap too).
-    desc.antiLag = false;
-    checkClassify(desc, test::movingShadowInputs(64, 48, 12), 2);
-    // An explicit stored variance scale reaches the stored variance.
-    desc.antiLag = true;
-    desc.storedVarianceScale = 0.7f;
-    checkClassify(desc, test::movingShadowInputs(64, 48, 12), 2);
-}
-
-// A zoom: the motion grows away from the image centre, so the whole-pixel offset to the previous
-// position changes inside some blocks and not in others. The device runs the anti-lag test from
-// a groupshared window where a block's offset is uniform and pixel by pixel elsewhere; both must
-// match the reference.
-TEST_CASE("classify with a zoom: uniform and mixed block offsets match the shader-mirroring CPU reference",
-          "[classify]") {
-    constexpr std::uint32_t width = 64, height = 48;
-    test::ShadowInputs inputs = test::movingShadowInputs(width, height, 21);
-    std::size_t uniformBlocks = 0, mixedBlocks = 0;
-    for (std::uint32_t by = 0; by < height / 8; ++by)
-        for (std::uint32_t bx = 0; bx < width / 8; ++bx) {
-            bool first = true, mixed = false;
-            int firstOffset = 0;
-            for (std::uint32_t y = by * 8; y < by * 8 + 8; ++y)
-                for (std::uint32_t x = bx * 8; x < bx * 8 + 8; ++x) {
-                    const float dx = 0.06f * (static_cast<float>(x) - 32.0f);
-                    const float dy = 0.06f * (static_cast<float>(y) - 24.0f);
-                    const std::size_t i = 2 * (std::size_t{y} * width + x);
-                    inputs.motion[i] = dx / static_cast<float>(width);
-                    inputs.motion[i + 1] = dy / static_cast<float>(height);
-                    // The whole-pixel offset, as the shader rounds it (away from pixel edges).
-                    const int offset = static_cast<int>(std::floor(static_cast<float>(x) + 0.5f + dx)) -
-                                       static_cast<int>(x) +
-                                       64 * (static_cast<int>(std::floor(static_cast<float>(y) + 0.5f + dy)) -
-                                             static_cast<int>(y));
-                    mixed = mixed || (!first && offset != firstOffset);
-                    firstOffset = first ? offset : firstOffset;
-                    first = false;
-                }
-            ++(mixed ? mixedBlocks : uniformBlocks);
-        }
-    CHECK(uniformBlocks >= 4u);
-    CHECK(mixedBlocks >= 20u);
-    ShadowDenoiserDesc desc = classifyDesc(width, height);
-    desc.frameIndex = 1;
-    checkClassify(desc, inputs, 22);
-}
-
-// The CPU reference stores every tile's moments and feeds them back; the device stores none for
-// clear tiles and rebuilds them from last frame's metadata and depth. Over a moving sequence the
-// two must agree, where histories come from tiles that were clear and from tiles that were not.
+// The device stores no moments for clear tiles and rebuilds them next frame from last frame's
+// metadata and depth as (v, 0, receiver ? 1 : 0, v), v = 1 for the receivers of a LIGHT tile, else
+// 0 (docs/shadow_denoiser.md, "Inputs and outputs"). Over a moving sequence each frame is checked
+// against the independent reference fed that documented history: the stored moments of last
+// frame's classified tiles (read back, each inside its own frame's ranges) and the rebuilt values
+// of its clear tiles. Histories come from tiles that were clear and from tiles that were not.
 TEST_CASE("classify: clear tiles' rebuilt histories match the stored ones over frames", "[classify][tiles]") {
-    ShadowDenoiserDesc desc = classifyDesc(96, 64);
+    constexpr std::uint32_t width = 96, height = 64;
+    constexpr std::size_t count = std::size_t{width} * height;
+    ShadowDenoiserDesc desc = classifyDesc(width, height);
+    REQUIRE(desc.rebuildClearHistory);
     test::ShadowRunner runner(desc);
-    std::vector<float> history(4 * 96 * 64, 0.0f);
-    std::size_t clearTiles = 0, classifiedTiles = 0;
+    std::vector<float> history(4 * count, 0.0f);
+    std::vector<std::uint32_t> lastMetadata;
+    std::size_t clearTiles = 0, classifiedTiles = 0, fromClear = 0;
     for (std::uint32_t frame = 0; frame < 4; ++frame) {
         desc.frameIndex = frame;
         desc.resetHistory = frame == 0;
-        test::ShadowInputs inputs = test::makeShadowInputs(96, 64, 40 + frame);
+        test::ShadowInputs inputs = test::makeShadowInputs(width, height, 40 + frame);
         for (std::size_t i = 0; i < inputs.motion.size(); i += 2) {
-            inputs.motion[i] = 1.3f / 96.0f;
-            inputs.motion[i + 1] = -0.7f / 64.0f;
+            inputs.motion[i] = 1.3f / static_cast<float>(width);
+            inputs.motion[i + 1] = -0.7f / static_cast<float>(height);
         }
         inputs.previousDepth = inputs.depth; // last frame's depth: the depth is static
         const test::ShadowOutputs actual = runner.run(desc, inputs);
-        const reference::ShadowClassifyOutputs expected =
-            reference::shadowClassify(referenceInputs(desc, inputs, history));
         INFO("frame " << frame);
-        CHECK(actual.metadata == expected.metadata);
-        CHECK(countMismatches(actual.classified, expected.shadowVariance) == 0u);
-        CHECK(countMismatches(storedMoments(desc, actual),
-                              storedMoments(desc, expected.moments, expected.metadata)) == 0u);
+        const reference::ShadowClassifyRanges expected =
+            checkAgainstIndependent(desc, inputs, history, actual);
         for (std::uint32_t word : expected.metadata)
             ++(word & GLINT_SHADOW_DENOISER_TILE_CLEAR ? clearTiles : classifiedTiles);
-        history = expected.moments;
+        // Not vacuous: pixels of classified tiles whose history, at floor(uv_prev * size) =
+        // (x + 1, y - 1), lies in a tile that was clear.
+        for (std::size_t i = width; frame > 0 && i < count; ++i)
+            if (i % width + 1 < width && !clearTile(expected.metadata, width, i) &&
+                clearTile(lastMetadata, width, i - width + 1))
+                ++fromClear;
+        // The history next frame reads: this frame's stored moments, clear tiles rebuilt.
+        history = actual.moments;
+        for (std::size_t i = 0; i < count; ++i) {
+            if (!clearTile(expected.metadata, width, i)) continue;
+            const bool light =
+                (tileWord(expected.metadata, width, i) & GLINT_SHADOW_DENOISER_TILE_LIGHT) != 0u;
+            const bool isReceiver = receiver(inputs.depth[i]);
+            const float value = light && isReceiver ? 1.0f : 0.0f;
+            std::copy_n(std::array<float, 4>{value, 0.0f, isReceiver ? 1.0f : 0.0f, value}.begin(), 4,
+                        history.begin() + static_cast<std::ptrdiff_t>(4 * i));
+        }
+        lastMetadata = expected.metadata;
     }
-    // Not vacuous: both kinds of tile in every frame.
+    // Not vacuous: both kinds of tile in every frame, and histories read from rebuilt texels.
+    INFO(clearTiles << " clear tiles, " << classifiedTiles << " classified, " << fromClear
+                    << " pixels reading a rebuilt history");
     CHECK(clearTiles > 4u * 20u);
     CHECK(classifiedTiles > 4u * 20u);
+    CHECK(fromClear > 3u * 20u);
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }
 
-TEST_CASE("classify 1x1, 13x7 and 203x77: match the shader-mirroring CPU reference", "[classify]") {
-    checkClassify(classifyDesc(1, 1), test::movingShadowInputs(1, 1, 13), 3);
-    checkClassify(classifyDesc(13, 7), test::movingShadowInputs(13, 7, 14), 4);
-    checkClassify(classifyDesc(203, 77), test::movingShadowInputs(203, 77, 15), 5);
+TEST_CASE("classify 1x1, 13x7 and 203x77: within the independent reference's ranges",
+          "[classify][independent]") {
+    checkIndependent(classifyDesc(1, 1), test::movingShadowInputs(1, 1, 13), 3);
+    checkIndependent(classifyDesc(13, 7), test::movingShadowInputs(13, 7, 14), 4);
+    checkIndependent(classifyDesc(203, 77), test::movingShadowInputs(203, 77, 15), 5);
+    GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }
 
 TEST_CASE("classify: a camera cut ignores every history", "[classify][reset]") {
     ShadowDenoiserDesc desc = classifyDesc(64, 48);
     desc.resetHistory = true;
-    checkClassify(desc, test::movingShadowInputs(64, 48, 16), 6);
-    test::ShadowRunner runner(desc);
-    std::vector<float> moments, shadow;
-    randomHistory(64 * 48, 7, moments, shadow);
-    runner.setHistory(0, moments, shadow);
-    const test::ShadowOutputs outputs = runner.run(desc, test::movingShadowInputs(64, 48, 16));
+    const test::ShadowOutputs outputs =
+        checkIndependent(desc, test::movingShadowInputs(64, 48, 16), 6).actual;
+    // No history survives (docs/shadow_denoiser.md: on reset every history is ignored): at most
+    // this frame's sample.
     for (std::size_t i = 0; i < 64 * 48; ++i) CHECK(outputs.moments[4 * i + 2] <= 1.0f);
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }
@@ -446,9 +480,7 @@ TEST_CASE("classify: uniform tiles are cleared and flagged", "[classify][tiles]"
     std::fill(inputs.visibility.begin(), inputs.visibility.end(), 1.0f);
     std::fill(inputs.depth.begin(), inputs.depth.end(), 0.9f);
     inputs.previousDepth = inputs.depth;
-    checkClassify(desc, inputs, 8);
-    test::ShadowRunner runner(desc);
-    const test::ShadowOutputs outputs = runner.run(desc, inputs);
+    const test::ShadowOutputs outputs = checkIndependent(desc, inputs, 8).actual;
     for (std::uint32_t word : outputs.metadata) CHECK(word == 3u); // CLEAR | LIGHT
     for (std::size_t i = 0; i < outputs.classified.size(); i += 2) CHECK(outputs.classified[i] == 1.0f);
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
@@ -538,16 +570,20 @@ TEST_CASE("tile skipping after classification: close to filtering every tile, ov
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }
 
-TEST_CASE("split classification: metadata and moments match the shader-mirroring CPU reference",
+TEST_CASE("split classification: metadata, clear tiles' output and moments within the independent "
+          "reference's ranges",
           "[classify][tiles]") {
-    // With the filter's tile list, classification runs as "classify" (2x2 tiles a group) and
-    // "temporal" (the listed tiles). Odd sizes leave partial groups on both borders.
+    // With the filter's tile list, classification runs as "classify" (2x2 tiles a group: the
+    // metadata and CLEAR tiles' output) and "temporal" (the listed tiles' moments). Odd sizes
+    // leave partial groups on both borders.
     for (const Extent2D size : {Extent2D{64, 48}, Extent2D{203, 77}, Extent2D{13, 7}}) {
         ShadowDenoiserDesc desc = classifyDesc(size.width, size.height);
         desc.filter = true;
         REQUIRE(desc.splitClassify);
+        REQUIRE(desc.skipClearedTiles);
         EffectPlan plan;
         REQUIRE(planShadowDenoiser(desc, plan, nullptr) == Result::Ok);
+        REQUIRE(plan.passes[1].name == "classify");
         REQUIRE(plan.passes[2].name == "temporal");
         const test::ShadowInputs inputs = test::movingShadowInputs(size.width, size.height, size.width + 5u);
         const std::size_t count = std::size_t{size.width} * size.height;
@@ -555,18 +591,14 @@ TEST_CASE("split classification: metadata and moments match the shader-mirroring
         randomHistory(count, size.height, moments, shadow);
         test::ShadowRunner runner(desc);
         runner.setHistory(desc.frameIndex, moments, shadow);
-        const test::ShadowOutputs actual = runner.run(desc, inputs);
-        const reference::ShadowClassifyOutputs expected =
-            reference::shadowClassify(referenceInputs(desc, inputs, moments));
+        const reference::ShadowClassifyRanges expected =
+            checkAgainstIndependent(desc, inputs, moments, runner.run(desc, inputs));
         INFO(size.width << "x" << size.height);
-        CHECK(actual.metadata == expected.metadata);
         // Both kinds of tile (beyond 13x7, which has two busy ones), so both parts wrote something.
         CHECK(std::count(expected.metadata.begin(), expected.metadata.end(), 0u) > 0);
         if (size.width > 13)
             CHECK(std::count(expected.metadata.begin(), expected.metadata.end(), 0u) <
                   static_cast<std::ptrdiff_t>(expected.metadata.size()));
-        CHECK(countMismatches(storedMoments(desc, actual),
-                              storedMoments(desc, expected.moments, expected.metadata)) == 0u);
     }
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }

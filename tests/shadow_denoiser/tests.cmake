@@ -12,7 +12,6 @@ glint_add_test_suite(NAME shadow_denoiser LABELS gpu
     shadow_denoiser/filter_test.cpp
     shadow_denoiser/classify_test.cpp
     shadow_denoiser/output_format_test.cpp
-    reference/shadow_classify_reference.cpp
     reference/shadow_classify_independent.cpp
     shadow_denoiser/shadow_runner.cpp
     reference/shadow_denoiser_reference.cpp
