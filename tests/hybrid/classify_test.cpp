@@ -35,16 +35,18 @@ struct Rng {
 };
 
 // A history of every kind of tile: no statistics, all hits, all misses, and mixtures, each
-// field within the documented 0..64.
-std::vector<std::uint32_t> randomHistory(std::uint32_t tiles, Rng& rng) {
+// field within the documented 0..64. A sparse history has only tiles without statistics and
+// tiles of at most 2 hits and misses, so that the safe band rarely finds a sure tile and most
+// decisions, s + h - w m within (0, 1), are the lottery's.
+std::vector<std::uint32_t> randomHistory(std::uint32_t tiles, bool sparse, Rng& rng) {
     std::vector<std::uint32_t> history(tiles);
     for (std::uint32_t& counter : history) {
-        const std::uint32_t kind = rng.word() % 4;
+        const std::uint32_t kind = sparse ? rng.word() % 2 : rng.word() % 4;
         std::uint32_t field[4] = {};
-        for (std::uint32_t& f : field) f = rng.word() % 65;
+        for (std::uint32_t& f : field) f = rng.word() % (sparse ? 3 : 65);
         if (kind == 0) std::fill(std::begin(field), std::end(field), 0u);
-        if (kind == 1) field[2] = field[3] = 0; // hits only
-        if (kind == 2) field[0] = field[1] = 0; // misses only
+        if (kind == 1 && !sparse) field[2] = field[3] = 0; // hits only
+        if (kind == 2) field[0] = field[1] = 0;            // misses only
         counter = field[0] | (field[1] << 8) | (field[2] << 16) | (field[3] << 24);
     }
     return history;
@@ -71,6 +73,7 @@ struct Case {
     float spawnRate = 0.02f, missWeight = 0.5f;
     float rayTracingThreshold = 0.22f;
     bool alternateCheckerboard = true;
+    bool sparseHistory = false;
 };
 
 std::uint32_t tileOf(std::uint32_t entry, std::uint32_t tilesX) {
@@ -170,14 +173,14 @@ void checkCase(const Case& c) {
     INFO(c.width << "x" << c.height << " frame " << c.frame << " ss " << c.screenSpace << " rt "
                  << c.rayTracing << " feedback " << c.feedback << " mirrors rt " << c.mirrorsRayTraced
                  << " s " << c.spawnRate << " rt threshold " << c.rayTracingThreshold << " alternate "
-                 << c.alternateCheckerboard);
+                 << c.alternateCheckerboard << " sparse history " << c.sparseHistory);
     Rng rng{c.width * 7919u + c.height * 104729u + c.frame};
     test::SssrTestView view =
         test::randomClassifyView(c.width, c.height, false, c.width + 3 * c.height + c.frame);
     const std::size_t pixels = std::size_t{c.width} * c.height;
     view.inputs.motion = randomMotion(pixels, rng);
     const std::uint32_t tilesX = (c.width + 7) / 8, tilesY = (c.height + 7) / 8;
-    const std::vector<std::uint32_t> history = randomHistory(tilesX * tilesY, rng);
+    const std::vector<std::uint32_t> history = randomHistory(tilesX * tilesY, c.sparseHistory, rng);
 
     HybridDesc desc;
     desc.sssr = view.desc;
@@ -270,17 +273,21 @@ TEST_CASE("hybrid classification matches the CPU classification at odd sizes and
           "[hybrid][classify]") {
     for (const auto& [w, h] :
          {std::pair{37u, 21u}, std::pair{9u, 3u}, std::pair{200u, 72u}, std::pair{8u, 8u}})
-        for (const std::uint32_t frame : {6u, 7u}) checkCase({w, h, frame});
+        for (const std::uint32_t frame : {6u, 7u}) {
+            Case c{w, h, frame};
+            c.sparseHistory = frame == 7;
+            checkCase(c);
+        }
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }
 
 TEST_CASE("hybrid classification's switches and overrides match the CPU classification",
           "[hybrid][classify]") {
-    checkCase({45, 29, 3, false, true});                          // ray tracing only: every ray FULL_HW
-    checkCase({45, 29, 3, true, false});                          // screen space only
-    checkCase({45, 29, 3, true, true, false});                    // no feedback: every tile FULL_SW
-    checkCase({45, 29, 3, true, true, true, true});               // mirrors always ray traced
-    checkCase({45, 29, 4, true, true, true, false, 0.5f, 0.25f}); // a busy lottery
+    checkCase({45, 29, 3, false, true});            // ray tracing only: every ray FULL_HW
+    checkCase({45, 29, 3, true, false});            // screen space only
+    checkCase({45, 29, 3, true, true, false});      // no feedback: every tile FULL_SW
+    checkCase({45, 29, 3, true, true, true, true}); // mirrors always ray traced
+    checkCase({45, 29, 4, true, true, true, false, 0.5f, 0.25f, 0.22f, true, true}); // a busy lottery
     // Rough rays (alpha at or above the RT threshold, below SSSR's 0.2) stay in screen space,
     // mirrors still ray traced; and a checkerboard that does not alternate on an odd frame.
     checkCase({45, 29, 5, true, true, true, true, 0.5f, 0.25f, 0.05f});
