@@ -52,7 +52,7 @@
 //   classification (metadata, list, clear tiles' output) of 2 x 2 blocks a group,
 //   ceil(W / 16) x ceil(H / 16) x 1 groups. With one block per group a pass over mostly clear
 //   tiles is bound by the rate at which the GPU starts groups, not by their work
-//   (docs/performance.md, "Sixth session");
+//   (docs/performance.md, "Shadow denoiser: figures the headers cited");
 // - GLINT_SHADOW_DENOISER_CLASSIFY_PART_LISTED (with the tile list): (8, 8, 1), the temporal part
 //   of the blocks the tiles part listed, one a group, dispatched indirectly from the list's
 //   arguments (listed tiles, 1, 1) at byte 0; it takes
