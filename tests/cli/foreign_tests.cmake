@@ -20,3 +20,6 @@ add_test(NAME "cli: a Blender render replays with and without composite; outputs
           -P "${CMAKE_CURRENT_SOURCE_DIR}/cli/foreign_run.cmake")
 set_tests_properties("cli: a Blender render replays with and without composite; outputs carry its frame numbers"
   PROPERTIES LABELS gpu FIXTURES_REQUIRED cli_samples)
+glint_cli_test(NAME "run's help says the capture is one path, a foreign EXR or a folder of them" LABELS unit EXIT 0
+  STDOUT "capture.*with --map one foreign EXR or a folder of them"
+  COMMAND run --help)
