@@ -182,7 +182,14 @@ std::optional<std::string> projectionProblem(const SourceCamera& s, const Channe
                    ") sends view +y down; an OpenGL projection sends it up (glint flips it when "
                    "camera.ndc_y_down is true), so this looks like a Vulkan-style matrix: give it as "
                    "projection with camera.ndc_y_down = true";
-        if (auto p = depthRowProblem(s.projection, s.nearZ, s.farZ, infinite, -1.0, 1.0))
+        // Without a far plane (reversed_infinite) the entry has no far to check the row against.
+        const double atNear = depthAt(s.projection, s.nearZ);
+        if (infinite && (!(clipW(s.projection, s.nearZ) > 0.0) ||
+                         std::abs(atNear + 1.0) > depthTolerance(s.projection, s.nearZ)))
+            return "an OpenGL projection's depth row maps near " + shortNumber(s.nearZ) + " to depth " +
+                   shortNumber(atNear) + ", expected -1";
+        if (auto p = infinite ? std::optional<std::string>{}
+                              : depthRowProblem(s.projection, s.nearZ, s.farZ, false, -1.0, 1.0))
             return "an OpenGL projection's depth row " + *p +
                    " from the entry's near and far; give the near and far the matrix was made with, or "
                    "give a matrix already in glint's convention as projection";
