@@ -419,7 +419,7 @@ TEST_CASE("a side-file projection that does not match the entry's near/far, the 
     const fs::path dir = writeBlenderCapture("channel_map_projection_check");
     const ChannelMap map = loadChannelMap(blenderMapPath());
     const std::string frame = (dir / "0002.exr").string();
-    const Camera c = makeSampleFrame(kWidth, kHeight, 1).camera;
+    const Camera c = sampleCamera(kWidth, kHeight, 1);
     auto withEntry = [&](const std::function<void(nlohmann::json&)>& edit) {
         nlohmann::json cameras = blenderCameras();
         edit(cameras["frames"][1]);
