@@ -503,9 +503,9 @@ TEST_CASE("a map's frames pattern or list picks the frames of a folder and repor
     const std::string text = readText(blenderMapPath());
     const std::size_t at = text.find("frames = \"*#.exr\"");
     REQUIRE(at != std::string::npos);
-    auto mapWith = [&](const std::string& frames) {
+    auto mapWith = [&](const std::string& line) {
         std::string edited = text;
-        edited.replace(at, std::string("frames = \"*#.exr\"").size(), frames);
+        edited.replace(at, std::string("frames = \"*#.exr\"").size(), line);
         writeText(dir / "listed.toml", edited);
         return loadChannelMap((dir / "listed.toml").string());
     };
