@@ -312,8 +312,8 @@ void checkReferences(const MapReader& r, const toml::table& root, ChannelMap& ma
 ChannelMap parseMap(const toml::table& root, const std::string& file) {
     const MapReader r{file};
     r.onlyKeys(root, "",
-               {"version", "effects", "flip_vertical", "environment", "world", "color", "depth", "normal",
-                "roughness", "motion", "shadow", "reference", "material", "camera"});
+               {"version", "effects", "frames", "flip_vertical", "environment", "world", "color", "depth",
+                "normal", "roughness", "motion", "shadow", "reference", "material", "camera"});
     const toml::node* version = root.get("version");
     if (!version) r.fail(&root, "version", "missing (required; this reader knows version 1)");
     if (version->value_exact<std::int64_t>() != kMapVersion)
@@ -328,6 +328,16 @@ ChannelMap parseMap(const toml::table& root, const std::string& file) {
                    "unknown effect '" + effect + "' (known: reflections, hybrid, shadows, depth_pyramid)");
         if (std::count(map.effects.begin(), map.effects.end(), effect) > 1)
             r.fail(root.get("effects"), "effects", "effect '" + effect + "' is listed twice");
+    }
+    if (const toml::node* frames = root.get("frames")) {
+        if (frames->is_array())
+            map.frames = r.texts(root, "", "frames", 1, 100000);
+        else
+            map.frames = {r.text(root, "", "frames", true)};
+        for (const std::string& pattern : map.frames)
+            if (pattern.find_first_of("/\\") != std::string::npos)
+                r.fail(frames, "frames",
+                       "'" + pattern + "' is a path; give file (or folder) names, without folders");
     }
     map.flipVertical = r.flag(root, "", "flip_vertical", false);
     if (const toml::table* t = r.table(root, "", "world")) {
@@ -406,6 +416,12 @@ ChannelMap parseMap(const toml::table& root, const std::string& file) {
     return map;
 }
 
+std::string framesText(const ChannelMap& map) {
+    std::string out = map.frames.size() == 1 ? "" : "[";
+    for (std::size_t i = 0; i < map.frames.size(); ++i) out += (i ? ", \"" : "\"") + map.frames[i] + "\"";
+    return out + (map.frames.size() == 1 ? "" : "]");
+}
+
 bool isExrFile(const std::filesystem::path& p) {
     std::string ext = p.extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(),
@@ -456,6 +472,30 @@ bool isOneFrame(const std::filesystem::path& p, const ChannelMap& map) {
 }
 } // namespace
 
+bool matchesFramePattern(std::string_view name, std::string_view pattern) {
+    // Iterative glob: on a mismatch, let the last `*` take one more character.
+    std::size_t n = 0, p = 0, starP = std::string_view::npos, starN = 0;
+    while (n < name.size()) {
+        const bool one = p < pattern.size() &&
+                         (pattern[p] == '?' || pattern[p] == name[n] ||
+                          (pattern[p] == '#' && std::isdigit(static_cast<unsigned char>(name[n])) != 0));
+        if (one) {
+            ++n;
+            ++p;
+        } else if (p < pattern.size() && pattern[p] == '*') {
+            starP = p++;
+            starN = n;
+        } else if (starP != std::string_view::npos) {
+            p = starP + 1;
+            n = ++starN;
+        } else {
+            return false;
+        }
+    }
+    while (p < pattern.size() && pattern[p] == '*') ++p;
+    return p == pattern.size();
+}
+
 ChannelRef splitChannelRef(const std::string& ref) {
     std::string lower = ref;
     std::transform(lower.begin(), lower.end(), lower.begin(),
@@ -478,7 +518,8 @@ ChannelMap loadChannelMap(const std::string& path) {
     return parseMap(root, path);
 }
 
-std::vector<std::string> mappedSequenceFiles(const std::string& dirOrFile, const ChannelMap& map) {
+std::vector<std::string> mappedSequenceFiles(const std::string& dirOrFile, const ChannelMap& map,
+                                             std::vector<std::string>* ignored) {
     const std::filesystem::path p(dirOrFile);
     std::error_code ec;
     if (!std::filesystem::exists(p, ec)) fail(p, "does not exist");
@@ -497,11 +538,21 @@ std::vector<std::string> mappedSequenceFiles(const std::string& dirOrFile, const
         if (!frame) continue;
         std::error_code same; // an optional environment may not be there
         if (!environment.empty() && std::filesystem::equivalent(entry.path(), environment, same)) continue;
-        names.push_back(entry.path().filename().string());
+        const std::string name = entry.path().filename().string();
+        const bool listed = map.frames.empty() ||
+                            std::any_of(map.frames.begin(), map.frames.end(),
+                                        [&](const std::string& f) { return matchesFramePattern(name, f); });
+        if (listed)
+            names.push_back(name);
+        else if (ignored)
+            ignored->push_back(name);
     }
     if (ec) fail(p, "cannot list the folder: " + ec.message());
+    if (names.empty() && !map.frames.empty())
+        fail(p, "holds no frames that match frames = " + framesText(map) + " in " + map.path);
     if (names.empty()) fail(p, map.framesAreFolders ? "holds no frame folders" : "holds no .exr files");
     std::sort(names.begin(), names.end(), naturalLess);
+    if (ignored) std::sort(ignored->begin(), ignored->end(), naturalLess);
     std::vector<std::string> out;
     for (const std::string& name : names) out.push_back((p / name).string());
     return out;

@@ -22,6 +22,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace glint::capture {
@@ -144,7 +145,13 @@ struct ChannelMap {
     bool materialOptional = false;                // frames may lack the material channels
     CameraMapping camera;
     EnvironmentMapping environment;
+    // Name patterns of the capture folder's frames (`*` any run of characters, `?` one
+    // character, `#` one digit); empty: every .exr file (every folder for folder frames).
+    std::vector<std::string> frames;
 };
+
+// Whether a frame's file (or folder) name matches one of the map's `frames` patterns.
+bool matchesFramePattern(std::string_view name, std::string_view pattern);
 
 // Reads and checks a map file: unknown keys, missing fields, bad values and layers the
 // declared effects need but the map lacks are errors naming the file, line and key.
@@ -153,8 +160,10 @@ ChannelMap loadChannelMap(const std::string& path);
 // Frames of a mapped capture in playback order. `dirOrFile` is one frame (a file, or a
 // folder when map.framesAreFolders) or a folder of them: its .exr files (or, for folder
 // frames, its sub-folders) in natural name order ("2.exr" before "10.exr"), leaving out the
-// map's environment file.
-std::vector<std::string> mappedSequenceFiles(const std::string& dirOrFile, const ChannelMap& map);
+// map's environment file. With map.frames, only the names that match one of its patterns;
+// the other candidates' names go into `ignored` (when given), for a note to the user.
+std::vector<std::string> mappedSequenceFiles(const std::string& dirOrFile, const ChannelMap& map,
+                                             std::vector<std::string>* ignored = nullptr);
 
 // The capture folder that the map's side files (camera.file, environment) are relative to:
 // `dirOrFile` itself when it is a folder of frames, the folder holding it when it is a frame.

@@ -3,6 +3,7 @@
 #include "capture/channel_map.h"
 
 #include "capture/capture_error.h"
+#include "capture/enum_names.h"
 #include "capture/exr_file.h"
 #include "capture/frame_validation.h"
 #include "capture/json_text.h"
@@ -15,6 +16,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <iterator>
 #include <limits>
@@ -112,6 +114,107 @@ Camera toGlint(const SourceCamera& current, const SourceCamera* previous, const 
     return c;
 }
 
+std::string shortNumber(double v) {
+    char text[32];
+    std::snprintf(text, sizeof(text), "%.6g", v);
+    return text;
+}
+
+// Device depth of the view-space point (0, 0, -t) under p, and the clip w it has there.
+double clipW(const Mat4& p, double t) {
+    return -p.m[14] * t + p.m[15];
+}
+double depthAt(const Mat4& p, double t) {
+    return (-p.m[10] * t + p.m[11]) / clipW(p, t);
+}
+
+// What depthAt can be off by when the matrix was computed and stored in float (as exporters
+// such as Blender's do): 8 float ulps (2^-24 relative) on each term of the quotient.
+double depthTolerance(const Mat4& p, double t) {
+    const double numerator = std::abs(p.m[10] * t) + std::abs(p.m[11]);
+    const double denominator = std::abs(p.m[14] * t) + std::abs(p.m[15]);
+    return 8.0 * 0x1p-24 * (numerator + std::abs(depthAt(p, t)) * denominator) / std::abs(clipW(p, t));
+}
+
+// How the matrix maps the view-space +y axis at the centre of the near plane: +1 up, -1 down,
+// 0 not at all.
+int yDirection(const Mat4& p, double t) {
+    const double w = clipW(p, t), y = -p.m[6] * t + p.m[7];
+    const double slope = p.m[5] * w - y * p.m[13]; // d(y / w)/dy times w^2
+    return slope > 0.0 ? 1 : slope < 0.0 ? -1 : 0;
+}
+
+// The depths a projection must give the near and far planes (far: at infinity for
+// reversed_infinite), checked to float precision; the reason it does not, or nothing.
+std::optional<std::string> depthRowProblem(const Mat4& p, double nearZ, double farZ, bool infinite,
+                                           double nearDepth, double farDepth) {
+    if (!(clipW(p, nearZ) > 0.0) || (!infinite && !(clipW(p, farZ) > 0.0)))
+        return std::string("gives the near or far plane a clip w <= 0 (the view looks down -z: is the "
+                           "matrix transposed? \"vectors\" says how matrices are stored)");
+    const double atNear = depthAt(p, nearZ);
+    double atFar = 0.0, farTolerance = 0.0;
+    if (infinite) {
+        if (p.m[14] == 0.0) return std::string("is orthographic: reversed_infinite needs a perspective");
+        atFar = p.m[10] / p.m[14]; // the limit of depthAt as t grows
+        farTolerance = 8.0 * 0x1p-24 * (std::abs(p.m[10]) + std::abs(atFar * p.m[14])) / std::abs(p.m[14]);
+    } else {
+        atFar = depthAt(p, farZ);
+        farTolerance = depthTolerance(p, farZ);
+    }
+    if (std::abs(atNear - nearDepth) <= depthTolerance(p, nearZ) &&
+        std::abs(atFar - farDepth) <= farTolerance)
+        return std::nullopt;
+    const std::string farName = infinite ? "infinity" : "far " + shortNumber(farZ);
+    return "maps near " + shortNumber(nearZ) + " to depth " + shortNumber(atNear) + " and " + farName +
+           " to " + shortNumber(atFar) + ", expected " + shortNumber(nearDepth) + " and " +
+           shortNumber(farDepth);
+}
+
+// A side file's projection against the frame's declared near/far, depth convention and NDC y
+// direction: a matrix in another convention would replay without error and be wrong.
+std::optional<std::string> projectionProblem(const SourceCamera& s, const ChannelMap& map) {
+    const CameraMapping& c = map.camera;
+    const bool infinite = c.depth == DepthConvention::ReversedInfinite;
+    const std::string mapName = std::filesystem::path(map.path).filename().string();
+    if (s.kind == ProjectionKind::OpenGl) {
+        if (yDirection(s.projection, s.nearZ) <= 0)
+            return std::string("its y row (m[1][1] = ") + shortNumber(s.projection.m[5]) +
+                   ") sends view +y down; an OpenGL projection sends it up (glint flips it when "
+                   "camera.ndc_y_down is true), so this looks like a Vulkan-style matrix: give it as "
+                   "projection with camera.ndc_y_down = true";
+        // Without a far plane (reversed_infinite) the entry has no far to check the row against.
+        const double atNear = depthAt(s.projection, s.nearZ);
+        if (infinite && (!(clipW(s.projection, s.nearZ) > 0.0) ||
+                         std::abs(atNear + 1.0) > depthTolerance(s.projection, s.nearZ)))
+            return "an OpenGL projection's depth row maps near " + shortNumber(s.nearZ) + " to depth " +
+                   shortNumber(atNear) + ", expected -1";
+        if (auto p = infinite ? std::optional<std::string>{}
+                              : depthRowProblem(s.projection, s.nearZ, s.farZ, false, -1.0, 1.0))
+            return "an OpenGL projection's depth row " + *p +
+                   " from the entry's near and far; give the near and far the matrix was made with, or "
+                   "give a matrix already in glint's convention as projection";
+        return std::nullopt;
+    }
+    if (s.kind != ProjectionKind::Given) return std::nullopt;
+    const bool reversed = c.depth != DepthConvention::Standard;
+    const std::string convention =
+        "camera.depth_convention = \"" + std::string(toString(c.depth)) + "\" in " + mapName;
+    if (auto p = depthRowProblem(s.projection, s.nearZ, s.farZ, infinite, reversed ? 1.0 : 0.0,
+                                 reversed ? 0.0 : 1.0))
+        return "used as is, it " + *p + " for " + convention +
+               " (an OpenGL projection, depth -1 to 1, goes in projection_gl)";
+    const int y = yDirection(s.projection, s.nearZ);
+    if (y != (c.ndcYDown ? -1 : 1))
+        return std::string("used as is, it sends view +y ") +
+               (y > 0   ? "up"
+                : y < 0 ? "down"
+                        : "nowhere") +
+               " in NDC (m[1][1] = " + shortNumber(s.projection.m[5]) + "), expected " +
+               (c.ndcYDown ? "down" : "up") + " for camera.ndc_y_down = " + (c.ndcYDown ? "true" : "false") +
+               " in " + mapName;
+    return std::nullopt;
+}
+
 // Index of the frame among its capture folder's frames, matched by name.
 std::size_t positionInSequence(const std::string& framePath, const ChannelMap& map) {
     const std::string name = std::filesystem::path(framePath).filename().string();
@@ -123,6 +226,7 @@ std::size_t positionInSequence(const std::string& framePath, const ChannelMap& m
 
 struct SideFileReader {
     std::filesystem::path file;
+    const ChannelMap& map;
     bool rowVectors = false;
 
     [[noreturn]] void fail(const std::string& key, const std::string& problem) const {
@@ -191,6 +295,10 @@ struct SideFileReader {
         if (mapping.depth != DepthConvention::ReversedInfinite) s.farZ = number(entry, prefix, "far");
         if (entry.contains("prev_view_projection"))
             s.prevViewProjection = matrix(entry.at("prev_view_projection"), prefix + ".prev_view_projection");
+        if (s.nearZ > 0.0 && (mapping.depth == DepthConvention::ReversedInfinite || s.farZ > s.nearZ))
+            if (auto problem = projectionProblem(s, map))
+                fail(prefix + (s.kind == ProjectionKind::OpenGl ? ".projection_gl" : ".projection"),
+                     *problem);
         return s;
     }
 
@@ -211,7 +319,9 @@ bool isFirstFrame(const std::string& framePath, const ChannelMap& map, std::size
 
 Json parseJsonFile(const std::filesystem::path& file) {
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(file, ec)) fail(file, "camera side file does not exist");
+    if (!std::filesystem::is_regular_file(file, ec))
+        fail(file, "camera side file does not exist (camera.file in the map names it; its format: "
+                   "docs/replay.md, \"The camera side file\")");
     std::ifstream in(file, std::ios::binary);
     const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
     if (!in && !in.eof()) fail(file, "cannot read the camera side file");
@@ -223,7 +333,7 @@ Camera sideFileCamera(const std::string& framePath, const ChannelMap& map, std::
     std::filesystem::path file(map.camera.file);
     if (file.is_relative()) file = std::filesystem::path(mappedCaptureFolder(framePath, map)) / file;
     const Json root = parseJsonFile(file);
-    SideFileReader r{file};
+    SideFileReader r{file, map};
     if (!root.is_object()) r.fail("(top level)", "expected an object with \"frames\"");
     for (const auto& [key, value] : root.items()) {
         if (key == "format" && value != "glint-camera") r.fail("format", "expected \"glint-camera\"");
@@ -251,7 +361,10 @@ Camera sideFileCamera(const std::string& framePath, const ChannelMap& map, std::
             if (!f.is_string()) r.fail("frames[" + std::to_string(i) + "].file", "expected a string");
             if (f.get<std::string>() == name) index = i;
         }
-        if (index == frames.size()) r.fail("frames", "no entry for frame '" + name + "'");
+        if (index == frames.size())
+            r.fail("frames", "no entry for frame '" + name + "' (a file beside the frames that is not one: " +
+                                 "list the frames with frames = \"...\" in " + map.path +
+                                 ", docs/replay.md, \"Top level\")");
     } else if (frames.size() > 1) {
         index = positionInSequence(framePath, map);
         if (index >= frames.size())

@@ -63,7 +63,17 @@ CaptureSource::CaptureSource(const std::string& path, const std::string& mapPath
         if (!std::filesystem::exists(p)) throw std::invalid_argument(path + ": no such file or folder");
         if (!mapPath.empty()) {
             impl_->map = capture::loadChannelMap(mapPath);
-            impl_->mappedFiles = capture::mappedSequenceFiles(path, *impl_->map);
+            std::vector<std::string> ignored;
+            impl_->mappedFiles = capture::mappedSequenceFiles(path, *impl_->map, &ignored);
+            if (!ignored.empty()) {
+                std::string names;
+                for (std::size_t i = 0; i < ignored.size() && i < 4; ++i)
+                    names += (i ? ", " : "") + ignored[i];
+                if (ignored.size() > 4) names += ", ...";
+                std::fprintf(stderr,
+                             "glint: %s: note: %zu file%s that the map's frames do not match left out (%s)\n",
+                             path.c_str(), ignored.size(), ignored.size() == 1 ? "" : "s", names.c_str());
+            }
             if (impl_->mappedFiles.empty())
                 throw std::invalid_argument(path + ": no frames to read through " + mapPath);
             if (auto environment = capture::loadMappedEnvironment(*impl_->map, path)) {
@@ -164,8 +174,12 @@ std::vector<std::string> CaptureSource::checkEffects(const capture::Frame& frame
             channels += (channels.empty() ? "" : ", ") + channel;
         message += "; the file lacks " + channels + " (material.base_color in " + impl_->map->path +
                    "): render that pass (Blender: Diffuse Color, docs/replay.md)" + off;
-    } else if (!off.empty()) {
-        message += "; " + off.substr(2);
+    } else {
+        message += impl_->map ? "; map it in " + impl_->map->path + " (docs/replay.md, \"The map file\")"
+                              : "; the layers each effect reads: docs/capture-format.md, \"Required layers\"";
+        if (missing->layer == "shadow")
+            message += "; from Blender: docs/replay.md, \"Shadow visibility from Blender\"";
+        message += off;
     }
     throw std::invalid_argument(message);
 }

@@ -50,16 +50,16 @@ struct SimulateOptions {
 
 // glint run / dump / check: a capture replayed through its effects (docs/replay.md).
 struct ReplayOptions {
-    std::string capture;                 // frame .exr, sequence folder, or foreign EXR(s) with mapPath
-    std::string mapPath;                 // --map: channel map of a foreign capture
-    std::string geometry;                // --geometry: a glTF of the capture's scene (docs/replay.md)
-    std::string outDir;                  // run, dump
-    std::string expectedDir;             // check
-    std::vector<std::string> effects;    // empty: the capture's declared effects
-    std::vector<std::string> settings;   // "name=value"
-    PresetChoice preset;                 // --preset, --preset-file: applied before `settings`
-    std::string frames;                  // run: "a..b"; dump/check: the frame to look at ("" = last)
-    std::string pass = "all";            // dump/check: a pass name, "effect/pass" or "all"
+    std::string capture;               // frame .exr, sequence folder, or with mapPath a foreign EXR or folder
+    std::string mapPath;               // --map: channel map of a foreign capture
+    std::string geometry;              // --geometry: a glTF of the capture's scene (docs/replay.md)
+    std::string outDir;                // run, dump
+    std::string expectedDir;           // check
+    std::vector<std::string> effects;  // empty: the capture's declared effects
+    std::vector<std::string> settings; // "name=value"
+    PresetChoice preset;               // --preset, --preset-file: applied before `settings`
+    std::string frames;                // run: "a..b"; dump/check: the frame to look at ("" = last)
+    std::string pass = "all";          // dump/check: a pass name, "effect/pass" or "all"
     std::vector<std::string> tolerances; // check: "pass=abs,rel[,fraction]"
     bool json = false;                   // run: also print the summary as JSON on stdout
     std::string secondReference;         // run: the same capture rendered with another seed (noise floor)
@@ -99,7 +99,7 @@ struct ReportOptions {
 
 // glint view (cli_view.cpp, docs/viewer.md): a window replaying a capture live.
 struct ViewOptions {
-    std::string capture;  // frame .exr, sequence folder, foreign EXR(s) with mapPath, or scene .toml
+    std::string capture;  // frame .exr, sequence folder, a foreign EXR or folder with mapPath, or scene .toml
     std::string mapPath;  // --map
     std::string geometry; // --geometry
     std::vector<std::string> effects;  // empty: the capture's declared effects

@@ -298,7 +298,8 @@ report::Section runSection(const std::filesystem::path& dir, const nlohmann::jso
         const nlohmann::json lastErrors = frames.back().value("errors", nlohmann::json::object());
         const nlohmann::json lastNoise = frames.back().value("referenceNoise", nlohmann::json::object());
         for (const auto& [effect, values] : summary.at("error").items()) {
-            const double noisy = values.value("noisyLast", -1.0);
+            const double noisyValue = valueOr(values, "noisyLast"); // null: none, or nothing scored
+            const double noisy = std::isnan(noisyValue) ? -1.0 : noisyValue;
             // null: that frame's error mask held no pixel (glint run wrote nothing to score).
             const auto scored = [](const nlohmann::json& value) {
                 return value.is_number() ? fixed(value.get<double>(), 4) : std::string("no pixels scored");

@@ -73,6 +73,12 @@ bool isShadowPreview(const std::string& name) {
     return name == "shadows/noisy" || name == "shadows/denoised" || name == "shadows/reference";
 }
 
+// A score where the frame's mask held pixels to score, null where it held none (docs/replay.md:
+// never a 0 that reads as a perfect result, nor a -1 that reads as a number).
+nlohmann::json scoredOrNull(bool scored, double value) {
+    return scored ? nlohmann::json(value) : nlohmann::json(nullptr);
+}
+
 double median(std::vector<double> values) {
     if (values.empty()) return -1.0;
     std::sort(values.begin(), values.end());
@@ -177,11 +183,13 @@ int runRun(const ReplayOptions& options) {
                 const capture::Frame secondFrame = second->frame(index);
                 for (const replay::ReferenceError& noise :
                      replay::referenceNoise(frame, result, secondFrame, roughnessThreshold)) {
-                    record["referenceNoise"][noise.effect] = {{"mean", noise.mean},
-                                                              {"rmse", noise.rmse},
-                                                              {"maeClamped", noise.maeClamped},
-                                                              {"rmseClamped", noise.rmseClamped}};
-                    noiseFloors[noise.effect] = noise.pixels > 0 ? noise.mean : -1.0;
+                    const bool any = noise.pixels > 0;
+                    record["referenceNoise"][noise.effect] = {
+                        {"mean", scoredOrNull(any, noise.mean)},
+                        {"rmse", scoredOrNull(any, noise.rmse)},
+                        {"maeClamped", scoredOrNull(any, noise.maeClamped)},
+                        {"rmseClamped", scoredOrNull(any, noise.rmseClamped)}};
+                    noiseFloors[noise.effect] = any ? noise.mean : std::numeric_limits<double>::quiet_NaN();
                     // The second reference itself, for scores computed outside glint
                     // (scripts/run_flip.py's FLIP floor): EXR only.
                     writeImageFiles(dir, noise.effect + "_reference2", noise.effect + "/reference2",
@@ -197,17 +205,21 @@ int runRun(const ReplayOptions& options) {
                                 false);
                 errors[error.effect].push_back(error.pixels > 0 ? error.mean
                                                                 : std::numeric_limits<double>::quiet_NaN());
-                noisyErrors[error.effect] = error.noisyMean;
-                record["errors"][error.effect] = {{"image", error.image},
-                                                  {"pixels", error.pixels},
-                                                  {"mean", error.mean},
-                                                  {"rmse", error.rmse},
-                                                  {"penumbra", error.penumbra},
-                                                  {"nonFinite", error.nonFinite},
-                                                  {"maeClamped", error.maeClamped},
-                                                  {"rmseClamped", error.rmseClamped}};
-                if (error.noisyMean >= 0.0) record["errors"][error.effect]["noisyMean"] = error.noisyMean;
-                if (error.noisyRmse >= 0.0) record["errors"][error.effect]["noisyRmse"] = error.noisyRmse;
+                const bool any = error.pixels > 0;
+                noisyErrors[error.effect] = any && error.noisyMean >= 0.0 ? error.noisyMean : -1.0;
+                record["errors"][error.effect] = {
+                    {"image", error.image},
+                    {"pixels", error.pixels},
+                    {"mean", scoredOrNull(any, error.mean)},
+                    {"rmse", scoredOrNull(any, error.rmse)},
+                    {"penumbra", scoredOrNull(error.penumbra >= 0.0, error.penumbra)},
+                    {"nonFinite", error.nonFinite},
+                    {"maeClamped", scoredOrNull(any, error.maeClamped)},
+                    {"rmseClamped", scoredOrNull(any, error.rmseClamped)}};
+                if (error.noisyMean >= 0.0)
+                    record["errors"][error.effect]["noisyMean"] = scoredOrNull(any, error.noisyMean);
+                if (error.noisyRmse >= 0.0)
+                    record["errors"][error.effect]["noisyRmse"] = scoredOrNull(any, error.noisyRmse);
                 if (error.visibility) {
                     // null where no receiver is a moving edge (the first frame, or nothing moved).
                     const auto orNull = [](const std::optional<double>& value) {
@@ -260,19 +272,19 @@ int runRun(const ReplayOptions& options) {
             return std::isnan(value) ? nlohmann::json(nullptr) : nlohmann::json(value);
         };
         for (const auto& [effect, values] : errors) {
-            const double noisy = std::isnan(values.back()) ? -1.0 : noisyErrors[effect];
+            const double noisy = noisyErrors[effect]; // -1: none (not denoised, or nothing scored)
             std::printf("error of %s against the reference: first frame %s, last frame %s", effect.c_str(),
                         scored(values.front()).c_str(), scored(values.back()).c_str());
             if (noisy >= 0.0) std::printf(" (its noisy input %.4f)", noisy);
-            if (noiseFloors.contains(effect) && noiseFloors[effect] >= 0.0)
+            if (noiseFloors.contains(effect) && !std::isnan(noiseFloors[effect]))
                 std::printf(" (reference noise floor %.4f)", noiseFloors[effect]);
             if (std::isnan(values.back())) std::printf(" (no pixel of the last frame is in its error mask)");
             std::printf("\n");
             summary["error"][effect] = {{"first", scoredJson(values.front())},
                                         {"last", scoredJson(values.back())},
-                                        {"noisyLast", noisy}};
+                                        {"noisyLast", scoredOrNull(noisy >= 0.0, noisy)}};
             if (noiseFloors.contains(effect))
-                summary["error"][effect]["referenceNoiseLast"] = noiseFloors[effect];
+                summary["error"][effect]["referenceNoiseLast"] = scoredJson(noiseFloors[effect]);
         }
         if (nonFiniteFrames > 0) std::printf("non-finite output pixels in %zu frame(s)\n", nonFiniteFrames);
         std::filesystem::create_directories(out);

@@ -39,7 +39,8 @@ int main(int argc, char** argv) {
     std::string infoPath, infoMap;
     bool headerOnly = false;
     CLI::App* info = app.add_subcommand("info", "Describe a frame capture (.exr) or a sequence folder");
-    info->add_option("capture", infoPath, "frame file, sequence folder, or foreign EXR(s) with --map")
+    info->add_option("capture", infoPath,
+                     "frame file, sequence folder, or with --map one foreign EXR or a folder of them")
         ->required();
     info->add_option("--map", infoMap, "channel map of a foreign capture (docs/replay.md)");
     info->add_flag("--header-only", headerOnly, "read headers only; skip pixels and non-finite counts");
@@ -126,7 +127,8 @@ int main(int argc, char** argv) {
     auto replayOptions = [&presetOptions](CLI::App* command, glint::cli::ReplayOptions& options) {
         command
             ->add_option("capture", options.capture,
-                         "frame .exr, sequence folder, or foreign EXR(s) with --map")
+                         "frame .exr, sequence folder, or with --map one foreign EXR or a folder of them "
+                         "(one path)")
             ->required();
         command->add_option("--map", options.mapPath, "channel map of a foreign capture (docs/replay.md)");
         command->add_option(
@@ -170,8 +172,9 @@ int main(int argc, char** argv) {
         "view",
         "A window replaying a capture live: effects, settings and every pass's images (docs/viewer.md)");
     viewCommand
-        ->add_option("capture", view.capture,
-                     "frame .exr, sequence folder, foreign EXR(s) with --map, or scene .toml")
+        ->add_option(
+            "capture", view.capture,
+            "frame .exr, sequence folder, with --map one foreign EXR or a folder of them, or scene .toml")
         ->required();
     viewCommand->add_option("--map", view.mapPath, "channel map of a foreign capture (docs/replay.md)");
     viewCommand->add_option("--geometry", view.geometry,

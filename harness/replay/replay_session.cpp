@@ -321,11 +321,15 @@ void Session::readImages(const Running& running, const capture::Frame& frame,
     // channel 0), so an import can be checked against what the capture meant.
     for (const InputDesc& input : descriptor.inputs) {
         const vk::Image* image = input.kind == InputKind::Environment ? nullptr : inputs_->find(input.kind);
-        if (!image || !shown(name + "/input_" + input.resource)) continue;
+        // Named by what it holds: the material input carries roughness (channel 0) alone.
+        const std::string imageName =
+            name + "/input_" +
+            (input.kind == InputKind::Material ? std::string("roughness") : input.resource);
+        if (!image || !shown(imageName)) continue;
         std::vector<float> texels = gpu::readbackImage(context_, *image);
         const auto channels = static_cast<std::uint32_t>(texels.size() / (std::size_t{width_} * height_));
-        result.images.push_back({name + "/input_" + input.resource, name + "/input",
-                                 report::Image{width_, height_, channels, std::move(texels)}});
+        result.images.push_back(
+            {imageName, name + "/input", report::Image{width_, height_, channels, std::move(texels)}});
     }
     for (gpu::DecodedOutput& out : outputs)
         if (out.intermediate) add(out);

@@ -6,6 +6,7 @@
 #include "scene/scene_geometry.h"
 #include "scene/scene_shaders.h"
 
+#include "capture/enum_names.h"
 #include "capture/motion_convention.h"
 
 #include <gpu/gpu_plan_runner.h>
@@ -209,14 +210,24 @@ struct Resources {
     }
 };
 
-// Surface pixels whose device depth came out exactly the background's. Standard depth with a
-// small near plane leaves float depth no room near the far plane (near 0.001, far 1e4: a
-// surface at 9990 gets exactly 1.0f), so the ray caster draws a surface there (its normal faces
-// the ray instead of being -view, its roughness and material are the surface's) that every
-// consumer of the depth reads as sky. A surface facing the ray head-on with roughness 1 and no
-// material layers cannot be told from the sky and is not counted.
+// The passes' background test (docs/conventions.md §2.2): depth within 1e-6 of the far value,
+// outside [0, 1] or not finite.
+constexpr float kBackgroundEpsilon = 1e-6f;
+bool backgroundDepth(float d, bool reversed) {
+    if (!std::isfinite(d)) return true;
+    return reversed ? (d <= kBackgroundEpsilon || d > 1.0f) : (d >= 1.0f - kBackgroundEpsilon || d < 0.0f);
+}
+
+// Surface pixels whose device depth the background test takes for the sky. A surface at view
+// depth z has depth n(f - z) / (z (f - n)) from the far value in both conventions (standard:
+// 1 - d; reversed: d), so a small near plane puts distant surfaces within 1e-6 of it (near
+// 0.001: everything beyond about 1000), whichever the convention; standard depth also rounds to
+// exactly 1.0f there. The ray caster draws a surface at such a pixel (its normal faces the ray
+// instead of being -view, its roughness and material are the surface's) that every consumer of
+// the depth reads as sky. A surface facing the ray head-on with roughness 1 and no material
+// layers cannot be told from the sky and is not counted.
 std::size_t surfacesAtBackgroundDepth(const capture::Frame& f, const capture::Mat4& viewProjection,
-                                      const Vec3& eye, float background, bool ndcYDown) {
+                                      const Vec3& eye, bool reversed, bool ndcYDown) {
     const capture::Layer* depth = capture::findLayer(f, "depth");
     const capture::Layer* normal = capture::findLayer(f, "normal");
     const capture::Layer* roughness = capture::findLayer(f, "roughness");
@@ -228,7 +239,7 @@ std::size_t surfacesAtBackgroundDepth(const capture::Frame& f, const capture::Ma
     for (std::uint32_t y = 0; y < f.height; ++y)
         for (std::uint32_t x = 0; x < f.width; ++x) {
             const std::size_t i = std::size_t{y} * f.width + x;
-            if (depth->pixels[i] != background) continue;
+            if (!backgroundDepth(depth->pixels[i], reversed)) continue;
             bool surface = (roughness && roughness->pixels[i] != 1.0f);
             if (material)
                 for (std::size_t c = 0; c < 4; ++c) surface = surface || material->pixels[i * 4 + c] != 0.0f;
@@ -264,25 +275,26 @@ std::size_t surfacesAtBackgroundDepth(const capture::Frame& f, const capture::Ma
 std::string backgroundDepthWarning(const Scene& scene, std::size_t pixels, std::uint32_t frames) {
     if (pixels == 0) return {};
     const CameraDesc& c = scene.camera;
+    const bool infinite = c.depth == capture::DepthConvention::ReversedInfinite;
     std::ostringstream s;
     s << scene.file.string() << ": warning: " << pixels << " surface pixel" << (pixels == 1 ? "" : "s")
       << " on " << frames << " of " << scene.frameCount << " frame" << (scene.frameCount == 1 ? "" : "s")
-      << (pixels == 1 ? " has" : " have") << " device depth "
-      << (c.depth == capture::DepthConvention::Standard ? 1 : 0) << ", the background's (";
-    switch (c.depth) {
-    case capture::DepthConvention::Standard:
-        s << "standard depth, near " << c.nearZ << ", far " << c.farZ;
-        break;
-    case capture::DepthConvention::Reversed:
-        s << "reversed depth, near " << c.nearZ << ", far " << c.farZ;
-        break;
-    case capture::DepthConvention::ReversedInfinite:
-        s << "reversed_infinite depth, near " << c.nearZ;
-        break;
-    }
-    s << "), so they replay as sky while their other layers show a surface; "
-      << (c.depth == capture::DepthConvention::Standard ? "use depth = \"reversed\" or " : "")
-      << "set camera.far well beyond the farthest surface";
+      << (pixels == 1 ? " has" : " have") << " device depth within 1e-6 of the background's "
+      << (c.depth == capture::DepthConvention::Standard ? 1 : 0) << " (" << capture::toString(c.depth)
+      << " depth, near " << c.nearZ;
+    if (!infinite) s << ", far " << c.farZ;
+    s << "), so they replay as sky while their other layers show a surface; ";
+    // The depth's distance from the far value, n (f - z) / (z (f - n)) (n / z without a far
+    // plane), is the same in both conventions: only the near plane, and a far plane well beyond
+    // the surfaces, move it. With f >= 2z it is at least n / (2z).
+    if (infinite)
+        s << "a surface at view depth z keeps its depth above 1e-6 only while near / z > 1e-6: raise "
+             "camera.near above 1e-6 times the farthest surface's view depth";
+    else
+        s << "a surface at view depth z keeps its depth apart only while near * (far - z) / (z * (far - "
+             "near)) "
+             "> 1e-6, in either depth convention: raise camera.near above 2e-6 times the farthest surface's "
+             "view depth, with camera.far at least twice that depth";
     return s.str();
 }
 
@@ -413,8 +425,8 @@ Simulation simulate(const gpu::Context& context, const Scene& scene) {
             f.layers.push_back(
                 toLayer(out, gpu::readbackImage(context, image), vk::formatChannelCount(image.format)));
         }
-        const std::size_t lost =
-            surfacesAtBackgroundDepth(f, vp, cam.eye, c.backgroundDepth, scene.camera.ndcYDown);
+        const std::size_t lost = surfacesAtBackgroundDepth(
+            f, vp, cam.eye, scene.camera.depth != capture::DepthConvention::Standard, scene.camera.ndcYDown);
         sim.surfacesAtBackgroundDepth += lost;
         framesWithLostSurfaces += lost > 0;
         sim.frames.push_back(std::move(f));

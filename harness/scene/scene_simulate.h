@@ -25,8 +25,8 @@ struct Simulation {
     std::vector<std::string> layers;                 // layers written into every frame
     std::vector<PassTime> passes;                    // passes run for every frame, in order
     std::size_t primitives = 0;                      // of the first frame
-    // Surface pixels (over all frames) whose device depth is exactly the background's: float
-    // depth could not tell them from the far plane, so they replay as sky.
+    // Surface pixels (over all frames) whose device depth the background test (within 1e-6 of
+    // the far value, docs/conventions.md §2.2) takes for the sky: they replay as sky.
     std::size_t surfacesAtBackgroundDepth = 0;
     std::vector<std::string> warnings; // one line each, naming the scene file; for stderr
 };

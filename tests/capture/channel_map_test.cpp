@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <functional>
 #include <limits>
@@ -403,10 +404,123 @@ TEST_CASE("a malformed camera side file is a one-line error naming it and the pr
     cameras = blenderCameras();
     cameras["frames"][1]["file"] = "9999.exr";
     CHECK(sideError(cameras.dump()).find("no entry for frame '0002.exr'") != std::string::npos);
+    CHECK(sideError(cameras.dump()).find("frames = \"...\" in " + blenderMapPath()) != std::string::npos);
     fs::remove(dir / "camera.json");
-    CHECK(errorOf([&] {
-              readMappedFrame(frame, map, 1);
-          }).find("camera.json: camera side file does not exist") != std::string::npos);
+    const std::string missing = errorOf([&] { readMappedFrame(frame, map, 1); });
+    CHECK(missing.find("camera.json: camera side file does not exist") != std::string::npos);
+    CHECK(missing.find("docs/replay.md, \"The camera side file\"") != std::string::npos);
+}
+
+TEST_CASE("a side-file projection that does not match the entry's near/far, the map's depth convention "
+          "or its y direction is a one-line error naming the entry, what was found and what was expected",
+          "[capture][channel_map]") {
+    // The shipped Blender map: reversed depth, ndc_y_down = false. Frame 0002.exr is entry 1,
+    // sample camera 1 (near 0.1, far 100).
+    const fs::path dir = writeBlenderCapture("channel_map_projection_check");
+    const ChannelMap map = loadChannelMap(blenderMapPath());
+    const std::string frame = (dir / "0002.exr").string();
+    const Camera c = sampleCamera(kWidth, kHeight, 1);
+    auto withEntry = [&](const std::function<void(nlohmann::json&)>& edit) {
+        nlohmann::json cameras = blenderCameras();
+        edit(cameras["frames"][1]);
+        writeText(dir / "camera.json", cameras.dump());
+    };
+    auto error = [&] {
+        const std::string message = errorOf([&] { readMappedFrame(frame, map, 1); });
+        CHECK(test::isOneLine(message));
+        CHECK(message.find((dir / "camera.json").string() + ": frames[1].") == 0);
+        return message;
+    };
+    // The OpenGL matrix given as glint's projection: near at -1 and far at +1 (exactly, in
+    // double) where reversed depth wants 1 and 0.
+    withEntry([&](nlohmann::json& e) {
+        e["projection"] = e["projection_gl"];
+        e.erase("projection_gl");
+    });
+    std::string message = error();
+    CHECK(message.find("frames[1].projection: used as is, it maps near 0.1 to depth -1 and far 100 to 1, "
+                       "expected 1 and 0 for camera.depth_convention = \"reversed\" in blender.toml") !=
+          std::string::npos);
+
+    // A Vulkan-style matrix (y row negated) as projection_gl.
+    Mat4 flipped = openGlProjection(c);
+    for (std::size_t i = 4; i < 8; ++i) flipped.m[i] = -flipped.m[i];
+    withEntry([&](nlohmann::json& e) { e["projection_gl"] = rows(flipped); });
+    message = error();
+    CHECK(message.find("frames[1].projection_gl: its y row") != std::string::npos);
+    CHECK(message.find("sends view +y down") != std::string::npos);
+
+    // The OpenGL matrix of far 100 declared with far 50: at 50 it gives
+    // ((f + n) 50 - 2 f n) / ((f - n) 50) with f = 100, n = 0.1, not +1.
+    withEntry([&](nlohmann::json& e) { e["far"] = 50.0; });
+    char found[32];
+    std::snprintf(found, sizeof found, "%.6g", (100.1 * 50.0 - 20.0) / (99.9 * 50.0));
+    message = error();
+    CHECK(message.find("frames[1].projection_gl: an OpenGL projection's depth row maps near 0.1 to depth -1 "
+                       "and far 50 to " +
+                       std::string(found) + ", expected -1 and 1") != std::string::npos);
+
+    // glint's reversed projection passes as is; with its y row negated it sends +y down.
+    withEntry([&](nlohmann::json& e) {
+        e["projection"] = rows(reversedProjection(c));
+        e.erase("projection_gl");
+    });
+    CHECK(maxDifference(readMappedFrame(frame, map, 1).camera.projection, reversedProjection(c)) < 1e-12);
+    Mat4 down = reversedProjection(c);
+    for (std::size_t i = 4; i < 8; ++i) down.m[i] = -down.m[i];
+    withEntry([&](nlohmann::json& e) {
+        e["projection"] = rows(down);
+        e.erase("projection_gl");
+    });
+    message = error();
+    CHECK(message.find("frames[1].projection: used as is, it sends view +y down in NDC") !=
+          std::string::npos);
+    CHECK(message.find("expected up for camera.ndc_y_down = false in blender.toml") != std::string::npos);
+}
+
+TEST_CASE("a map's frames pattern or list picks the frames of a folder and reports the other files",
+          "[capture][channel_map]") {
+    CHECK(matchesFramePattern("0001.exr", "####.exr"));
+    CHECK_FALSE(matchesFramePattern("001.exr", "####.exr"));
+    CHECK(matchesFramePattern("shot_12.exr", "*#.exr"));
+    CHECK_FALSE(matchesFramePattern("calib_depth.exr", "*#.exr"));
+    CHECK(matchesFramePattern("a1b.exr", "?#?.exr"));
+    CHECK(matchesFramePattern("x.exr", "*"));
+
+    // The shipped Blender map (frames = "*#.exr") on a render folder with a calibration image.
+    const fs::path dir = writeBlenderCapture("channel_map_frames");
+    writeBlenderFrame(dir, "calib_depth.exr", 0);
+    const ChannelMap blender = loadChannelMap(blenderMapPath());
+    std::vector<std::string> ignored;
+    const std::vector<std::string> frames = mappedSequenceFiles(dir.string(), blender, &ignored);
+    REQUIRE(frames.size() == 2);
+    CHECK(fs::path(frames[1]).filename() == "0002.exr");
+    CHECK(ignored == std::vector<std::string>{"calib_depth.exr"});
+    CHECK(readMappedFrame(frames[1], blender, 1).width == kWidth);
+
+    // A list of names, in any order, plays in natural order; a pattern that matches nothing is
+    // one line naming the folder, the pattern and the map.
+    const std::string text = readText(blenderMapPath());
+    const std::size_t at = text.find("frames = \"*#.exr\"");
+    REQUIRE(at != std::string::npos);
+    auto mapWith = [&](const std::string& line) {
+        std::string edited = text;
+        edited.replace(at, std::string("frames = \"*#.exr\"").size(), line);
+        writeText(dir / "listed.toml", edited);
+        return loadChannelMap((dir / "listed.toml").string());
+    };
+    ignored.clear();
+    const std::vector<std::string> listed =
+        mappedSequenceFiles(dir.string(), mapWith("frames = [\"0002.exr\", \"0001.exr\"]"), &ignored);
+    REQUIRE(listed.size() == 2);
+    CHECK(fs::path(listed[0]).filename() == "0001.exr");
+    CHECK(ignored == std::vector<std::string>{"calib_depth.exr"});
+    const ChannelMap none = mapWith("frames = \"take_*.exr\"");
+    const std::string message = errorOf([&] { mappedSequenceFiles(dir.string(), none); });
+    CHECK(message == dir.string() + ": holds no frames that match frames = \"take_*.exr\" in " +
+                         (dir / "listed.toml").string());
+    CHECK(errorOf([&] { mapWith("frames = \"renders/*.exr\""); }).find("frames: 'renders/*.exr' is a path") !=
+          std::string::npos);
 }
 
 TEST_CASE("a header camera comes from OpenEXR's worldToCamera and the previous file's header",

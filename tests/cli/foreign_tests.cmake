@@ -20,3 +20,16 @@ add_test(NAME "cli: a Blender render replays with and without composite; outputs
           -P "${CMAKE_CURRENT_SOURCE_DIR}/cli/foreign_run.cmake")
 set_tests_properties("cli: a Blender render replays with and without composite; outputs carry its frame numbers"
   PROPERTIES LABELS gpu FIXTURES_REQUIRED cli_samples)
+glint_cli_test(NAME "run's help says the capture is one path, a foreign EXR or a folder of them" LABELS unit EXIT 0
+  STDOUT "capture.*with --map one foreign EXR or a folder of them"
+  COMMAND run --help)
+find_program(GLINT_PYTHON3 NAMES python3)
+if(GLINT_PYTHON3)
+  add_test(NAME "cli: docs/replay.md's camera recipe turns a plain camera JSON into a capture that replays"
+    COMMAND "${CMAKE_COMMAND}" "-DGLINT=$<TARGET_FILE:glint>" "-DPYTHON=${GLINT_PYTHON3}"
+            "-DDOC=${PROJECT_SOURCE_DIR}/docs/replay.md" "-DSAMPLE=${GLINT_CLI_SAMPLE_DIR}/blender_plain"
+            "-DMAP=${GLINT_BLENDER_MAP}" "-DOUT=${PROJECT_BINARY_DIR}/test-output/cli/camera_recipe"
+            -P "${CMAKE_CURRENT_SOURCE_DIR}/cli/camera_recipe.cmake")
+  set_tests_properties("cli: docs/replay.md's camera recipe turns a plain camera JSON into a capture that replays"
+    PROPERTIES LABELS gpu FIXTURES_REQUIRED cli_samples)
+endif()

@@ -18,7 +18,7 @@ glint_cli_test(NAME "run on a truncated capture prints one line and exits 2" LAB
   STDERR_ONE_LINE "truncated.exr"
   COMMAND run "${GLINT_CLI_SAMPLE_DIR}/truncated.exr" --out "${PROJECT_BINARY_DIR}/test-output/cli/run_truncated")
 glint_cli_test(NAME "run of an effect the capture cannot feed names the missing layer" LABELS gpu EXIT 2
-  STDERR_ONE_LINE "effect 'shadows' needs the capture layer 'shadow'"
+  STDERR_ONE_LINE "effect 'shadows' needs the capture layer 'shadow'.*docs/capture-format.md, .Required layers.; from Blender: docs/replay.md, .Shadow visibility from Blender.$"
   COMMAND run "${GLINT_CLI_SAMPLE_DIR}/sample" --effects shadows --out "${PROJECT_BINARY_DIR}/test-output/cli/run_bad")
 glint_cli_test(NAME "run of an unknown effect is a usage error" LABELS gpu EXIT 2
   STDERR_ONE_LINE "unknown effect 'nosuch'"

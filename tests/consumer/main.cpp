@@ -6,10 +6,12 @@
 #include <glint/glint_depth_pyramid.h>
 #include <glint/glint_sssr_tables.h>
 #include <glint/vulkan/vk_effect.h>
+#include <glint/vulkan/vk_reflect.h>
 #include <glint/vulkan/vk_resources.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -76,7 +78,48 @@ int tableMismatches() {
     return mismatches;
 }
 
+std::vector<std::uint32_t> readSpirv(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    std::vector<std::uint32_t> words(bytes.size() / 4);
+    std::memcpy(words.data(), bytes.data(), words.size() * 4);
+    return words;
+}
+
+// The engine entry files put no two resources on one Vulkan binding, and the collision example
+// (b0/s0 and t1/u1 in one space, which spirv-val accepts) is caught with both pairs named.
+int bindingProblems() {
+    const std::string dir = GLINT_CONSUMER_SPIRV_DIR;
+    int problems = 0;
+    for (const char* entry : {"engine_shadow_filter", "engine_sssr_intersect"})
+        for (const std::string& line :
+             glint::vk::sharedBindings(readSpirv(dir + "/" + entry + ".spv"), entry)) {
+            std::fprintf(stderr, "consumer: %s\n", line.c_str());
+            ++problems;
+        }
+    const std::vector<std::string> caught = glint::vk::sharedBindings(
+        readSpirv(dir + "/engine_binding_collision.spv"), "engine_binding_collision");
+    const auto names = [&](const char* a, const char* b, const char* slot) {
+        return std::any_of(caught.begin(), caught.end(), [&](const std::string& line) {
+            return line.find(std::string("'") + a + "'") != std::string::npos &&
+                   line.find(std::string("'") + b + "'") != std::string::npos &&
+                   line.find(slot) != std::string::npos;
+        });
+    };
+    if (caught.size() != 2 || !names("EngineConstants", "EngineLinearClamp", "set 1, binding 0") ||
+        !names("EngineMoments", "EngineFiltered", "set 1, binding 1")) {
+        std::fprintf(stderr,
+                     "consumer: the binding collisions of engine_binding_collision were not both found "
+                     "(%zu reported)\n",
+                     caught.size());
+        for (const std::string& line : caught) std::fprintf(stderr, "  %s\n", line.c_str());
+        ++problems;
+    }
+    return problems;
+}
+
 int main() {
+    if (const int problems = bindingProblems(); problems != 0) return 1;
     if (const int mismatches = tableMismatches(); mismatches != 0) {
         std::fprintf(stderr, "consumer: the installed tables differ from the library's in %d places\n",
                      mismatches);

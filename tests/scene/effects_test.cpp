@@ -80,15 +80,16 @@ TEST_CASE("A reflections-only scene traces no shadow layers", "[scene][gpu]") {
 }
 
 // A wall at 9990 across the whole view, tilted 5 degrees (so that no pixel sees it head-on) and
-// a near sphere; `depth` and `effects` vary.
-Scene farWallScene(const std::string& depth, const std::string& effects) {
+// a near sphere; `depth`, `effects` and the clip planes vary.
+Scene farWallScene(const std::string& depth, const std::string& effects, const std::string& nearZ = "0.001",
+                   const std::string& farZ = "10000") {
     return parseScene("effects = [" + effects + R"(]
 resolution = [48, 27]
 [camera]
 position = [0, 0, 0]
 target = [0, 0, -1]
-near = 0.001
-far = 10000
+near = )" + nearZ + R"(
+far = )" + farZ + R"(
 depth = ")" + depth + R"("
 [[lights]]
 direction = [0, 1, 1]
@@ -109,27 +110,25 @@ radius = 1
                       "far_wall.toml");
 }
 
-TEST_CASE("Surface pixels whose depth rounds to the background's are counted and warned about",
-          "[scene][gpu]") {
-    const Scene scene = farWallScene("standard", "\"reflections\"");
-    const Simulation sim = simulate(test::testContext(), scene);
-    const capture::Frame& frame = sim.frames.at(0);
-    // An independent bound: pixels whose primary ray (cast on the CPU, depth in double) hits a
-    // surface whose standard depth lies within 1e-6 of 1, i.e. within a few float ulps (6e-8
-    // below 1, 1.2e-7 above) plus the ray caster's float error on clip.z / clip.w (~1e-7). That
-    // includes the wall's part beyond the far plane: with near 0.001 every depth from about 7700
-    // to infinity is within 1e-7 of 1, and the ray caster keeps a hit whose float depth is <= 1.
-    // No other surface pixel can come out as exactly 1.0f; the sphere (depth 1 - 2.5e-4) never does.
+// The wall's pixels by a CPU ray per pixel centre (tests/reference BVH, the eye at the origin),
+// with each pixel's device depth in double from the scene's own projection: the pixels whose
+// depth lies within `window` of the far value, and those of them not next to a sphere pixel
+// (where the GPU's float ray may take the other object).
+struct WallPixels {
+    std::size_t withinWindow = 0, clearOfSphere = 0, sphere = 0;
+};
+WallPixels wallPixels(const Scene& scene, double window) {
     const FrameCamera cam = cameraAt(scene, 0);
     const Bvh bvh = buildBvh(buildGeometry(scene, {}, 0).primitives);
     const capture::Mat4 vp = capture::viewProjection(cam.camera);
     const capture::Mat4 inv = *capture::inverse(vp);
-    std::size_t candidates = 0, sphere = 0;
+    const bool reversed = scene.camera.depth != capture::DepthConvention::Standard;
+    std::vector<int> kind(std::size_t{scene.width} * scene.height, 0); // 0 none, 1 wall in window, 2 sphere
     for (std::uint32_t y = 0; y < scene.height; ++y)
         for (std::uint32_t x = 0; x < scene.width; ++x) {
             const capture::Vec4 q = capture::transform(
                 inv, {2.0 * (x + 0.5) / scene.width - 1.0, 1.0 - 2.0 * (y + 0.5) / scene.height, 0.5, 1.0});
-            const double d[3] = {q.x / q.w, q.y / q.w, q.z / q.w}; // the eye is the origin
+            const double d[3] = {q.x / q.w, q.y / q.w, q.z / q.w};
             const double len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
             const Ray ray{{0.0f, 0.0f, 0.0f},
                           {static_cast<float>(d[0] / len), static_cast<float>(d[1] / len),
@@ -140,34 +139,86 @@ TEST_CASE("Surface pixels whose depth rounds to the background's are counted and
             const capture::Vec4 clip = capture::transform(
                 vp, {static_cast<double>(ray.direction[0]) * t, static_cast<double>(ray.direction[1]) * t,
                      static_cast<double>(ray.direction[2]) * t, 1.0});
-            const double depth = clip.z / clip.w;
-            sphere += t < 10.0;
-            candidates += std::abs(depth - 1.0) < 1e-6;
+            const double fromFar = reversed ? clip.z / clip.w : 1.0 - clip.z / clip.w;
+            int& k = kind[std::size_t{y} * scene.width + x];
+            k = t < 10.0 ? 2 : std::abs(fromFar) < window ? 1 : 0;
         }
-    REQUIRE(sphere > 0);
-    REQUIRE(candidates > sphere);
+    WallPixels w;
+    for (std::uint32_t y = 0; y < scene.height; ++y)
+        for (std::uint32_t x = 0; x < scene.width; ++x) {
+            const int k = kind[std::size_t{y} * scene.width + x];
+            w.sphere += k == 2;
+            if (k != 1) continue;
+            ++w.withinWindow;
+            bool nearSphere = false;
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) {
+                    const auto xx = static_cast<std::int64_t>(x) + dx, yy = static_cast<std::int64_t>(y) + dy;
+                    if (xx >= 0 && yy >= 0 && xx < scene.width && yy < scene.height)
+                        nearSphere =
+                            nearSphere ||
+                            kind[static_cast<std::size_t>(yy) * scene.width + static_cast<std::size_t>(xx)] ==
+                                2;
+                }
+            w.clearOfSphere += !nearSphere;
+        }
+    return w;
+}
+
+TEST_CASE("Surface pixels the background test takes for the sky are counted and warned about in both "
+          "depth conventions, and the advice clears them",
+          "[scene][gpu]") {
+    // Near 0.001, far 10000: the wall (view depth 9550 to 10430) lies within about 5e-9 of the
+    // far value in either convention, far inside the 1e-6 cut-off. The window 1e-6 plus the ray
+    // caster's float error on clip.z / clip.w (~1e-7) bounds the count from above; the wall
+    // beyond the far plane is in the window too (the ray caster keeps a hit whose float depth
+    // reaches the far value), so there is no lower bound beyond "some".
+    const Scene scene = farWallScene("standard", "\"reflections\"");
+    const Simulation sim = simulate(test::testContext(), scene);
+    const WallPixels wall = wallPixels(scene, 1.1e-6);
+    REQUIRE(wall.sphere > 0);
     CHECK(sim.surfacesAtBackgroundDepth > 0);
-    CHECK(sim.surfacesAtBackgroundDepth <= candidates);
-    std::size_t atBackground = 0;
-    for (float depth : capture::findLayer(frame, "depth")->pixels) atBackground += depth == 1.0f;
-    CHECK(sim.surfacesAtBackgroundDepth <= atBackground);
+    CHECK(sim.surfacesAtBackgroundDepth <= wall.withinWindow);
     REQUIRE(sim.warnings.size() == 1);
     CHECK(sim.warnings[0] ==
           "far_wall.toml: warning: " + std::to_string(sim.surfacesAtBackgroundDepth) +
-              " surface pixels on 1 of 1 frame have device depth 1, the background's (standard "
-              "depth, near 0.001, far 10000), so they replay as sky while their other layers "
-              "show a surface; use depth = \"reversed\" or set camera.far well beyond the "
-              "farthest surface");
+              " surface pixels on 1 of 1 frame have device depth within 1e-6 of the background's 1 "
+              "(standard depth, near 0.001, far 10000), so they replay as sky while their other layers "
+              "show a surface; a surface at view depth z keeps its depth apart only while near * (far - z) "
+              "/ (z * (far - near)) > 1e-6, in either depth convention: raise camera.near above 2e-6 "
+              "times the farthest surface's view depth, with camera.far at least twice that depth");
 
     // Without material layers the normal alone tells the wall from the sky (it never faces the
     // ray head-on): the same pixels are found.
     const Simulation shadows = simulate(test::testContext(), farWallScene("standard", "\"shadows\""));
     CHECK(shadows.surfacesAtBackgroundDepth == sim.surfacesAtBackgroundDepth);
 
-    // Reversed depth keeps float precision far away (the wall's depth is about 1e-10, not 0).
-    const Simulation reversed = simulate(test::testContext(), farWallScene("reversed", "\"reflections\""));
-    CHECK(reversed.surfacesAtBackgroundDepth == 0);
-    CHECK(reversed.warnings.empty());
+    // Far 1e6, well beyond the wall: its depth lies n (f - z) / (z (f - n)) ~ 1e-7 from the far
+    // value in both conventions (reversed: ~1e-7, not 0), still under the cut-off, so every wall
+    // pixel is sky. Bounds: the wall pixels within the window, and those clear of the sphere.
+    for (const char* depth : {"standard", "reversed"}) {
+        CAPTURE(depth);
+        const Scene farScene = farWallScene(depth, "\"reflections\"", "0.001", "1000000");
+        const Simulation beyond = simulate(test::testContext(), farScene);
+        const WallPixels w = wallPixels(farScene, 1.1e-6);
+        REQUIRE(w.clearOfSphere > 0);
+        CHECK(beyond.surfacesAtBackgroundDepth >= w.clearOfSphere);
+        CHECK(beyond.surfacesAtBackgroundDepth <= w.withinWindow);
+        REQUIRE(beyond.warnings.size() == 1);
+        CHECK(beyond.warnings[0].find(std::string("background's ") + (depth[0] == 's' ? "1" : "0") + " (" +
+                                      depth + " depth, near 0.001, far 1e+06)") != std::string::npos);
+    }
+
+    // The advice followed: near 0.1 (above 2e-6 of 10430) and far 1e6 put the wall about 1e-5
+    // from the far value, beyond the cut-off: no pixel is lost and nothing warns.
+    for (const char* depth : {"standard", "reversed"}) {
+        CAPTURE(depth);
+        const Scene cleared = farWallScene(depth, "\"reflections\"", "0.1", "1000000");
+        REQUIRE(wallPixels(cleared, 1.1e-6).withinWindow == 0);
+        const Simulation ok = simulate(test::testContext(), cleared);
+        CHECK(ok.surfacesAtBackgroundDepth == 0);
+        CHECK(ok.warnings.empty());
+    }
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }
 

@@ -115,4 +115,50 @@ ReflectedShader reflectComputeShader(std::span<const uint32_t> spirv, const std:
     }
 }
 
+std::vector<std::string> sharedBindings(std::span<const uint32_t> spirv, const std::string& moduleName) {
+    if (spirv.empty()) throw std::runtime_error(moduleName + ": empty SPIR-V module");
+    try {
+        spirv_cross::Compiler compiler(spirv.data(), spirv.size());
+        const spirv_cross::ShaderResources r = compiler.get_shader_resources();
+        struct Slot {
+            uint32_t set, binding;
+            std::string name, kind;
+        };
+        std::vector<Slot> slots;
+        const auto add = [&](const spirv_cross::SmallVector<spirv_cross::Resource>& resources,
+                             const char* kind) {
+            for (const spirv_cross::Resource& resource : resources) {
+                std::string name = compiler.get_name(resource.id);
+                if (name.empty()) name = resource.name;
+                slots.push_back({compiler.get_decoration(resource.id, spv::DecorationDescriptorSet),
+                                 compiler.get_decoration(resource.id, spv::DecorationBinding), name, kind});
+            }
+        };
+        add(r.uniform_buffers, "uniform buffer");
+        add(r.storage_buffers, "storage buffer");
+        add(r.storage_images, "storage image");
+        add(r.separate_images, "sampled image");
+        add(r.separate_samplers, "sampler");
+        add(r.sampled_images, "combined image sampler");
+        add(r.acceleration_structures, "acceleration structure");
+        std::stable_sort(slots.begin(), slots.end(), [](const Slot& a, const Slot& b) {
+            return a.set != b.set ? a.set < b.set : a.binding < b.binding;
+        });
+        std::vector<std::string> problems;
+        for (std::size_t i = 1; i < slots.size(); ++i) {
+            const Slot& a = slots[i - 1];
+            const Slot& b = slots[i];
+            if (a.set != b.set || a.binding != b.binding) continue;
+            problems.push_back(moduleName + ": '" + a.name + "' (" + a.kind + ") and '" + b.name + "' (" +
+                               b.kind + ") share descriptor set " + std::to_string(a.set) + ", binding " +
+                               std::to_string(a.binding) +
+                               "; Vulkan gives a binding one descriptor type: give each register class its "
+                               "own range (docs/integration.md, 5.2)");
+        }
+        return problems;
+    } catch (const spirv_cross::CompilerError& error) {
+        throw std::runtime_error(moduleName + ": SPIR-V reflection failed: " + error.what());
+    }
+}
+
 } // namespace glint::vk

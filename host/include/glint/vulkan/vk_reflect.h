@@ -37,4 +37,12 @@ struct ReflectedShader {
 // descriptor set other than 0, push constants, or a resource kind the backend does not bind.
 ReflectedShader reflectComputeShader(std::span<const uint32_t> spirv, const std::string& moduleName);
 
+// Every pair of resources a module puts on the same descriptor set and binding, in any set: one
+// line each naming the module, both variables and the slot. HLSL registers of different classes
+// (b0, t0, u0, s0 in one space) land on one binding unless shifted; that compiles and passes
+// spirv-val, but Vulkan gives a binding one descriptor type (docs/integration.md, 5.2). Empty
+// when every resource has a slot of its own. Throws std::runtime_error naming the module when
+// the SPIR-V cannot be parsed.
+std::vector<std::string> sharedBindings(std::span<const uint32_t> spirv, const std::string& moduleName);
+
 } // namespace glint::vk
