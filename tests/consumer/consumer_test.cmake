@@ -50,7 +50,8 @@ foreach(version IN LISTS accepted rejected)
   execute_process(COMMAND "${CMAKE_COMMAND}" -S "${WORK}/${name}" -B "${WORK}/${name}/build" -G Ninja
                           "-DCMAKE_PREFIX_PATH=${prefix}"
                   RESULT_VARIABLE result OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(version IN_LIST accepted)
+  list(FIND accepted "${version}" accepted_index)
+  if(accepted_index GREATER -1)
     if(NOT result EQUAL 0 OR NOT out MATCHES "glint ${v_MAJOR}\\.${v_MINOR}\\.${v_PATCH}")
       message(FATAL_ERROR "find_package(glint ${version}) failed against ${v_MAJOR}.${v_MINOR}.${v_PATCH}:\n${out}\n${err}")
     endif()
