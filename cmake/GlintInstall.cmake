@@ -1,4 +1,4 @@
-# Install rules and the CMake package: find_package(glint CONFIG [COMPONENTS hlsl core vulkan]).
+# Install rules and the CMake package: find_package(glint [0.9] CONFIG [COMPONENTS hlsl core vulkan]).
 #   glint::hlsl    INTERFACE: the HLSL library headers and entry files (include/glint-hlsl), which
 #                  also hold the constants headers C++ and HLSL share
 #   glint::core    the Vulkan-free plans (static), needs no Vulkan or SPIRV-Cross
@@ -45,11 +45,14 @@ install(FILES ${glint_glsl} DESTINATION "${CMAKE_INSTALL_DATADIR}/glint/glsl")
 set(GLINT_PACKAGE_GLSLANG "${GLINT_GLSLANG}")
 set(GLINT_PACKAGE_DXC "${GLINT_DXC}")
 set(GLINT_PACKAGE_SPIRV_VAL "${GLINT_SPIRV_VAL}")
-configure_package_config_file("${PROJECT_SOURCE_DIR}/cmake/glintConfig.cmake.in"
-                              "${PROJECT_BINARY_DIR}/package/glintConfig.cmake"
+configure_package_config_file("${PROJECT_SOURCE_DIR}/cmake/glint-config.cmake.in"
+                              "${PROJECT_BINARY_DIR}/package/glint-config.cmake"
                               INSTALL_DESTINATION "${GLINT_CMAKE_DIR}"
                               PATH_VARS CMAKE_INSTALL_INCLUDEDIR CMAKE_INSTALL_DATADIR)
-write_basic_package_version_file("${PROJECT_BINARY_DIR}/package/glintConfigVersion.cmake"
+# find_package(glint 0.9 CONFIG) accepts 0.9.x at or above the request and nothing else: below
+# 1.0 a minor release may break the callback API (docs/integration.md, "Versions"), so
+# SameMinorVersion; from 1.0 on this becomes SameMajorVersion.
+write_basic_package_version_file("${PROJECT_BINARY_DIR}/package/glint-config-version.cmake"
                                  VERSION "${PROJECT_VERSION}" COMPATIBILITY SameMinorVersion)
-install(FILES "${PROJECT_BINARY_DIR}/package/glintConfig.cmake"
-              "${PROJECT_BINARY_DIR}/package/glintConfigVersion.cmake" DESTINATION "${GLINT_CMAKE_DIR}")
+install(FILES "${PROJECT_BINARY_DIR}/package/glint-config.cmake"
+              "${PROJECT_BINARY_DIR}/package/glint-config-version.cmake" DESTINATION "${GLINT_CMAKE_DIR}")

@@ -182,7 +182,7 @@ function(glint_check_hlsl_header header)
     OUTPUT "${output}"
     COMMAND "${CMAKE_COMMAND}" "-DCOMMAND=${strict}" -P "${PROJECT_SOURCE_DIR}/cmake/GlintStrictCompile.cmake"
     COMMAND "${GLINT_SPIRV_VAL}" --target-env ${GLINT_SPIRV_TARGET_ENV} "${output}"
-    DEPENDS "${header}" ${ARG_STUBS} ${GLINT_HLSL_HEADERS}
+    DEPENDS "${header}" ${ARG_STUBS} ${GLINT_HLSL_CHECK_STUBS} ${GLINT_HLSL_HEADERS}
     COMMENT "HLSL header check ${stem}"
     VERBATIM)
   set_property(GLOBAL APPEND PROPERTY GLINT_HLSL_CHECK_OUTPUTS "${output}")

@@ -1,9 +1,6 @@
-// Stub callbacks for the header check of glint_reflections_denoiser_common.hlsli.
-RWStructuredBuffer<float4> g_glint_check;
-uint GLINT_RD_LoadTile(uint index) { return asuint(g_glint_check[index].x); }
-float GLINT_RD_LoadDepth(int2 pixel) { return g_glint_check[pixel.x].y; }
-float3 GLINT_RD_LoadNormal(int2 pixel) { return g_glint_check[pixel.y].xyz; }
-float GLINT_RD_LoadRoughness(int2 pixel) { return g_glint_check[pixel.x].w; }
+// Header check of glint_reflections_denoiser_common.hlsli: its callbacks are the shared stubs in
+// check/stubs/reflections_denoiser.stubs.hlsli (each defined once for every check).
+#include "check/stubs/reflections_denoiser.stubs.hlsli"
 
 // An entry point, so the check compiles the header's functions (a module without one is an
 // error for DXC and a warning glslang's check treats as one).

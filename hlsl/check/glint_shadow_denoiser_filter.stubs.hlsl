@@ -1,31 +1,8 @@
-// Stub callbacks for the header check of glint_shadow_denoiser_filter.hlsli. The check compiles
-// the header without tile skipping; the entry's "list" permutations compile it with.
-RWStructuredBuffer<float4> g_glint_check;
-
-float2 GLINT_SHADOW_DENOISER_LoadMeanVariance(int2 pixel)
-{
-    return g_glint_check[pixel.x].xy;
-}
-
-float GLINT_SHADOW_DENOISER_LoadDepth(int2 pixel)
-{
-    return g_glint_check[pixel.y].z;
-}
-
-float3 GLINT_SHADOW_DENOISER_LoadNormal(int2 pixel)
-{
-    return g_glint_check[pixel.x + pixel.y].xyz;
-}
-
-float GLINT_SHADOW_DENOISER_LoadBlockerDistance(int2 pixel)
-{
-    return g_glint_check[pixel.x].w;
-}
-
-void GLINT_SHADOW_DENOISER_StoreFiltered(int2 pixel, float2 meanVariance)
-{
-    g_glint_check[pixel.x] = float4(meanVariance, 0.0, 0.0);
-}
+// Header check of glint_shadow_denoiser_filter.hlsli: its callbacks are the shared stubs in
+// check/stubs/shadow_denoiser.stubs.hlsli (each defined once for every check).
+// The check compiles the header without tile skipping; the entry's "list" permutations compile
+// it with.
+#include "check/stubs/shadow_denoiser.stubs.hlsli"
 
 [numthreads(8, 8, 1)] void main(uint3 groupId : SV_GroupID, uint3 groupThreadId : SV_GroupThreadID,
                                 uint groupIndex : SV_GroupIndex)

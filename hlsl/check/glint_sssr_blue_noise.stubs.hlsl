@@ -1,9 +1,8 @@
-// Stub callbacks for the header check of glint_sssr_blue_noise.hlsli.
-cbuffer g_glint_check_constants { GLINT_SssrConstants g_glint_sssr; };
-RWStructuredBuffer<float2> g_glint_check;
+// Header check of glint_sssr_blue_noise.hlsli: its callbacks are the shared stubs in
+// check/stubs/sssr.stubs.hlsli (each defined once for every check).
+#include "check/stubs/sssr.stubs.hlsli"
 
-float2 GLINT_SSSR_LoadBlueNoiseSource(int2 texel) { return g_glint_check[texel.x * 128 + texel.y]; }
-void GLINT_SSSR_StoreBlueNoise(int2 texel, float2 sample) { g_glint_check[texel.y * 128 + texel.x] = sample; }
+cbuffer g_glint_check_constants { GLINT_SssrConstants g_glint_sssr; };
 
 [numthreads(8, 8, 1)] void main(uint3 dispatchId : SV_DispatchThreadID)
 {

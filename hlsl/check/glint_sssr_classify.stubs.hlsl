@@ -1,31 +1,8 @@
-// Stub callbacks for the header check of glint_sssr_classify.hlsli.
-cbuffer g_glint_check_constants { GLINT_SssrConstants g_glint_sssr; };
-RWStructuredBuffer<float4> g_glint_check;
-RWStructuredBuffer<uint> g_glint_check_words;
+// Header check of glint_sssr_classify.hlsli: its callbacks are the shared stubs in
+// check/stubs/sssr.stubs.hlsli (each defined once for every check).
+#include "check/stubs/sssr.stubs.hlsli"
 
-float GLINT_SSSR_LoadDepth(int2 pixel, int mip) { return g_glint_check[pixel.x + mip].x; }
-float3 GLINT_SSSR_LoadNormal(int2 pixel) { return g_glint_check[pixel.y].xyz; }
-float4 GLINT_SSSR_LoadMaterial(int2 pixel) { return g_glint_check[pixel.x * 2]; }
-float2 GLINT_SSSR_LoadMotion(int2 pixel) { return g_glint_check[pixel.x + 1].zw; }
-float GLINT_SSSR_SampleVarianceHistory(float2 uv) { return g_glint_check[uint(uv.x * 8.0)].w; }
-float3 GLINT_SSSR_SampleEnvironment(float3 direction, float lod) { return direction * lod; }
-void GLINT_SSSR_StoreRoughness(int2 pixel, float alpha) { g_glint_check[pixel.x].x = alpha; }
-void GLINT_SSSR_StoreRadiance(int2 pixel, float4 value) { g_glint_check[pixel.y] = value; }
-void GLINT_SSSR_StoreConfidence(int2 pixel, float confidence) { g_glint_check[pixel.x].w = confidence; }
-uint GLINT_SSSR_AddRays(uint count)
-{
-    uint previous;
-    InterlockedAdd(g_glint_check_words[0], count, previous);
-    return previous;
-}
-void GLINT_SSSR_StoreRay(uint index, uint entry) { g_glint_check_words[index + 4] = entry; }
-uint GLINT_SSSR_AddTile()
-{
-    uint previous;
-    InterlockedAdd(g_glint_check_words[2], 1u, previous);
-    return previous;
-}
-void GLINT_SSSR_StoreTile(uint index, uint entry) { g_glint_check_words[index + 8] = entry; }
+cbuffer g_glint_check_constants { GLINT_SssrConstants g_glint_sssr; };
 
 [numthreads(8, 8, 1)] void main(uint3 groupId : SV_GroupID, uint3 groupThreadId : SV_GroupThreadID)
 {

@@ -1,9 +1,6 @@
-// Stub callbacks for the header check of glint_sssr_indirect_args.hlsli.
-RWStructuredBuffer<uint> g_glint_check;
-
-uint GLINT_SSSR_LoadCounter(uint index) { return g_glint_check[index]; }
-void GLINT_SSSR_StoreCounter(uint index, uint value) { g_glint_check[index] = value; }
-void GLINT_SSSR_StoreArgument(uint index, uint value) { g_glint_check[index + 4] = value; }
+// Header check of glint_sssr_indirect_args.hlsli: its callbacks are the shared stubs in
+// check/stubs/sssr.stubs.hlsli (each defined once for every check).
+#include "check/stubs/sssr.stubs.hlsli"
 
 [numthreads(1, 1, 1)] void main()
 {

@@ -1,21 +1,10 @@
-// Stub callbacks for the header check of glint_sssr_intersect.hlsli (no permutation defines;
-// the entry's permutations compile the thickness-aware, debug and stored-ray variants).
-cbuffer g_glint_check_constants { GLINT_SssrConstants g_glint_sssr; };
-RWStructuredBuffer<float4> g_glint_check;
-RWStructuredBuffer<uint> g_glint_check_words;
+// Header check of glint_sssr_intersect.hlsli: its callbacks are the shared stubs in
+// check/stubs/sssr.stubs.hlsli (each defined once for every check).
+// No permutation defines: the entry's permutations compile the thickness-aware, debug and
+// stored-ray variants.
+#include "check/stubs/sssr.stubs.hlsli"
 
-float GLINT_SSSR_LoadDepth(int2 texel, int mip) { return g_glint_check[texel.x + mip].x; }
-float3 GLINT_SSSR_LoadNormal(int2 pixel) { return g_glint_check[pixel.y].xyz; }
-float GLINT_SSSR_LoadRoughness(int2 pixel) { return g_glint_check[pixel.x].y; }
-float2 GLINT_SSSR_LoadBlueNoise(int2 pixel) { return g_glint_check[pixel.x & 127].zw; }
-float3 GLINT_SSSR_LoadColor(int2 pixel) { return g_glint_check[pixel.x + pixel.y].xyz; }
-float3 GLINT_SSSR_SampleColor(float2 uv) { return g_glint_check[uint(uv.x * 4.0)].xyz; }
-float2 GLINT_SSSR_LoadMotion(int2 pixel) { return g_glint_check[pixel.y + 2].xy; }
-float3 GLINT_SSSR_SampleEnvironment(float3 direction, float lod) { return direction * lod; }
-uint GLINT_SSSR_LoadRayCount() { return g_glint_check_words[1]; }
-uint GLINT_SSSR_LoadRay(uint index) { return g_glint_check_words[index + 4]; }
-void GLINT_SSSR_StoreRadiance(int2 pixel, float4 value) { g_glint_check[pixel.x] = value; }
-void GLINT_SSSR_StoreConfidence(int2 pixel, float confidence) { g_glint_check[pixel.y].w = confidence; }
+cbuffer g_glint_check_constants { GLINT_SssrConstants g_glint_sssr; };
 
 [numthreads(64, 1, 1)] void main(uint3 groupId : SV_GroupID, uint groupIndex : SV_GroupIndex)
 {

@@ -5,6 +5,17 @@
 #include "glint/shadow_denoiser/glint_shadow_denoiser_constants.h"
 #include "glint/shadow_denoiser/glint_shadow_denoiser_filter.hlsli"
 
+// Written against glint 0.9: a release that may change the callback API stops the build here
+// (docs/integration.md, "Versions" and "Migration").
+#if GLINT_VERSION_MAJOR != 0 || GLINT_VERSION_MINOR != 9
+#error "engine entry written against glint 0.9.x"
+#endif
+// The headers' version is the installed package's (tests/consumer/CMakeLists.txt passes it).
+#if GLINT_VERSION_MAJOR != GLINT_CONSUMER_PACKAGE_MAJOR || GLINT_VERSION_MINOR != GLINT_CONSUMER_PACKAGE_MINOR || \
+    GLINT_VERSION_PATCH != GLINT_CONSUMER_PACKAGE_PATCH
+#error "glint_version.h and the CMake package disagree on glint's version"
+#endif
+
 static const float PI = 3.14159265;
 float Luminance(float3 c) { return dot(c, float3(0.2126, 0.7152, 0.0722)); }
 

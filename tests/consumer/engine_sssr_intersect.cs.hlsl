@@ -6,6 +6,17 @@
 #include "glint/sssr/glint_sssr_constants.h"
 #include "glint/sssr/glint_sssr_intersect.hlsli"
 
+// Written against glint 0.9: a release that may change the callback API stops the build here
+// (docs/integration.md, "Versions" and "Migration").
+#if GLINT_VERSION_MAJOR != 0 || GLINT_VERSION_MINOR != 9
+#error "engine entry written against glint 0.9.x"
+#endif
+// The headers' version is the installed package's (tests/consumer/CMakeLists.txt passes it).
+#if GLINT_VERSION_MAJOR != GLINT_CONSUMER_PACKAGE_MAJOR || GLINT_VERSION_MINOR != GLINT_CONSUMER_PACKAGE_MINOR || \
+    GLINT_VERSION_PATCH != GLINT_CONSUMER_PACKAGE_PATCH
+#error "glint_version.h and the CMake package disagree on glint's version"
+#endif
+
 cbuffer EngineReflectionConstants : register(b0, space5) { GLINT_SssrConstants EngineSssr; };
 Texture2D<float> EngineDepth : register(t1, space5);
 Texture2D<float> EngineHiZ : register(t2, space5);

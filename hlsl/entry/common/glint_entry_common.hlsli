@@ -15,6 +15,13 @@
 // glslang: [[spv::format_rgba16f]] (it ignores vk::image_format). DXC -spirv:
 // [[vk::image_format("rgba16f")]] (it rejects spv::format_* under -WX). DXIL: nothing (typed
 // UAVs carry their format in the resource).
+//
+//   GLINT_BINDING(3, 0) GLINT_FLOAT4_STORAGE(GLINT_RD_HALF_STORAGE) g_glint_output;
+//
+// GLINT_FLOAT4_STORAGE(is16) / GLINT_FLOAT_STORAGE(is16): the storage image of a pass whose
+// 16-bit permutation narrows what it stores: RWTexture2D<float4> / RWTexture2D<float> declared
+// rgba16f / r16f when is16 is 1 and rgba32f / r32f when it is 0. is16 is the permutation's
+// macro, defined as 0 or 1: the permutations' macros below are 0 unless the build sets them.
 #ifndef GLINT_ENTRY_COMMON_HLSLI
 #define GLINT_ENTRY_COMMON_HLSLI
 
@@ -32,5 +39,20 @@
 #define GLINT_BINDING(slot, set) [[vk::binding(slot, set)]]
 #define GLINT_IMAGE_FORMAT(format) [[spv::format_##format]]
 #endif
+
+#ifndef GLINT_RD_HALF_STORAGE
+#define GLINT_RD_HALF_STORAGE 0
+#endif
+#ifndef GLINT_SSSR_HALF_STORAGE
+#define GLINT_SSSR_HALF_STORAGE 0
+#endif
+#define GLINT_ENTRY_JOIN_(a, b) a##b
+#define GLINT_ENTRY_JOIN(a, b) GLINT_ENTRY_JOIN_(a, b)
+#define GLINT_FLOAT4_STORAGE(is16) GLINT_ENTRY_JOIN(GLINT_FLOAT4_STORAGE_, is16)
+#define GLINT_FLOAT4_STORAGE_0 GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4>
+#define GLINT_FLOAT4_STORAGE_1 GLINT_IMAGE_FORMAT(rgba16f) RWTexture2D<float4>
+#define GLINT_FLOAT_STORAGE(is16) GLINT_ENTRY_JOIN(GLINT_FLOAT_STORAGE_, is16)
+#define GLINT_FLOAT_STORAGE_0 GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float>
+#define GLINT_FLOAT_STORAGE_1 GLINT_IMAGE_FORMAT(r16f) RWTexture2D<float>
 
 #endif // GLINT_ENTRY_COMMON_HLSLI

@@ -5,11 +5,7 @@
 
 GLINT_BINDING(5, 0) Texture2D<float4> g_glint_resolved;
 GLINT_BINDING(6, 0) Texture2D<float> g_glint_variance;
-#if GLINT_RD_HALF_STORAGE
-GLINT_BINDING(7, 0) GLINT_IMAGE_FORMAT(rgba16f) RWTexture2D<float4> g_glint_output;
-#else
-GLINT_BINDING(7, 0) GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_output;
-#endif
+GLINT_BINDING(7, 0) GLINT_FLOAT4_STORAGE(GLINT_RD_HALF_STORAGE) g_glint_output;
 
 float3 GLINT_RD_LoadResolved(int2 pixel) { return g_glint_resolved.Load(int3(pixel, 0)).rgb; }
 float GLINT_RD_LoadVariance(int2 pixel) { return g_glint_variance.Load(int3(pixel, 0)); }

@@ -7,11 +7,7 @@
 // The clamped sample carries the temporal variance in alpha (reproject writes both), so the
 // prefilter needs no variance image.
 GLINT_BINDING(7, 0) Texture2D<float4> g_glint_clamped;
-#if GLINT_RD_HALF_STORAGE
-GLINT_BINDING(8, 0) GLINT_IMAGE_FORMAT(rgba16f) RWTexture2D<float4> g_glint_prefiltered;
-#else
-GLINT_BINDING(8, 0) GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_prefiltered;
-#endif
+GLINT_BINDING(8, 0) GLINT_FLOAT4_STORAGE(GLINT_RD_HALF_STORAGE) g_glint_prefiltered;
 
 float4 GLINT_RD_LoadClamped(int2 pixel) { return g_glint_clamped.Load(int3(pixel, 0)); }
 void GLINT_RD_StorePrefiltered(int2 pixel, float4 value) { g_glint_prefiltered[pixel] = value; }

@@ -6,11 +6,7 @@
 GLINT_BINDING(5, 0) Texture2D<float4> g_glint_clamped;
 GLINT_BINDING(6, 0) Texture2D<float4> g_glint_rays;
 GLINT_BINDING(7, 0) Texture2D<float> g_glint_variance;
-#if GLINT_RD_HALF_STORAGE
-GLINT_BINDING(8, 0) GLINT_IMAGE_FORMAT(rgba16f) RWTexture2D<float4> g_glint_reconstructed;
-#else
-GLINT_BINDING(8, 0) GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_reconstructed;
-#endif
+GLINT_BINDING(8, 0) GLINT_FLOAT4_STORAGE(GLINT_RD_HALF_STORAGE) g_glint_reconstructed;
 
 float4 GLINT_RD_LoadClamped(int2 pixel) { return g_glint_clamped.Load(int3(pixel, 0)); }
 float4 GLINT_RD_LoadRay(int2 pixel) { return g_glint_rays.Load(int3(pixel, 0)); }

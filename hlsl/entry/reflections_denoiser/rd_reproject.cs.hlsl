@@ -11,26 +11,10 @@ GLINT_BINDING(9, 0) Texture2D<float4> g_glint_history_radiance;
 // The radiance history carries the final variance in alpha (the resolve writes both), so that
 // a history tap is one fetch fewer.
 GLINT_BINDING(10, 0) Texture2D<float> g_glint_history_length;
-#if GLINT_RD_HALF_STORAGE
-GLINT_BINDING(11, 0) GLINT_IMAGE_FORMAT(rgba16f) RWTexture2D<float4> g_glint_clamped;
-#else
-GLINT_BINDING(11, 0) GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_clamped;
-#endif
-#if GLINT_RD_HALF_STORAGE
-GLINT_BINDING(12, 0) GLINT_IMAGE_FORMAT(rgba16f) RWTexture2D<float4> g_glint_reprojected;
-#else
-GLINT_BINDING(12, 0) GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_reprojected;
-#endif
-#if GLINT_RD_HALF_STORAGE
-GLINT_BINDING(13, 0) GLINT_IMAGE_FORMAT(r16f) RWTexture2D<float> g_glint_variance;
-#else
-GLINT_BINDING(13, 0) GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float> g_glint_variance;
-#endif
-#if GLINT_RD_HALF_STORAGE
-GLINT_BINDING(14, 0) GLINT_IMAGE_FORMAT(r16f) RWTexture2D<float> g_glint_length;
-#else
-GLINT_BINDING(14, 0) GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float> g_glint_length;
-#endif
+GLINT_BINDING(11, 0) GLINT_FLOAT4_STORAGE(GLINT_RD_HALF_STORAGE) g_glint_clamped;
+GLINT_BINDING(12, 0) GLINT_FLOAT4_STORAGE(GLINT_RD_HALF_STORAGE) g_glint_reprojected;
+GLINT_BINDING(13, 0) GLINT_FLOAT_STORAGE(GLINT_RD_HALF_STORAGE) g_glint_variance;
+GLINT_BINDING(14, 0) GLINT_FLOAT_STORAGE(GLINT_RD_HALF_STORAGE) g_glint_length;
 GLINT_BINDING(15, 0) GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_guides;
 GLINT_BINDING(16, 0) GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_average;
 GLINT_BINDING(17, 0) RWStructuredBuffer<uint> g_glint_tile_mask;

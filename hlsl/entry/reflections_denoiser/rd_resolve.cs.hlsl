@@ -7,26 +7,10 @@
 GLINT_BINDING(7, 0) Texture2D<float4> g_glint_prefiltered;
 GLINT_BINDING(8, 0) Texture2D<float4> g_glint_reprojected;
 // Read, and written back after the anti-lag.
-#if GLINT_RD_HALF_STORAGE
-GLINT_BINDING(9, 0) GLINT_IMAGE_FORMAT(r16f) RWTexture2D<float> g_glint_length;
-#else
-GLINT_BINDING(9, 0) GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float> g_glint_length;
-#endif
-#if GLINT_RD_HALF_STORAGE
-GLINT_BINDING(10, 0) GLINT_IMAGE_FORMAT(rgba16f) RWTexture2D<float4> g_glint_output;
-#else
-GLINT_BINDING(10, 0) GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_output;
-#endif
-#if GLINT_RD_HALF_STORAGE
-GLINT_BINDING(11, 0) GLINT_IMAGE_FORMAT(rgba16f) RWTexture2D<float4> g_glint_radiance_history;
-#else
-GLINT_BINDING(11, 0) GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_radiance_history;
-#endif
-#if GLINT_RD_HALF_STORAGE
-GLINT_BINDING(12, 0) GLINT_IMAGE_FORMAT(r16f) RWTexture2D<float> g_glint_variance;
-#else
-GLINT_BINDING(12, 0) GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float> g_glint_variance;
-#endif
+GLINT_BINDING(9, 0) GLINT_FLOAT_STORAGE(GLINT_RD_HALF_STORAGE) g_glint_length;
+GLINT_BINDING(10, 0) GLINT_FLOAT4_STORAGE(GLINT_RD_HALF_STORAGE) g_glint_output;
+GLINT_BINDING(11, 0) GLINT_FLOAT4_STORAGE(GLINT_RD_HALF_STORAGE) g_glint_radiance_history;
+GLINT_BINDING(12, 0) GLINT_FLOAT_STORAGE(GLINT_RD_HALF_STORAGE) g_glint_variance;
 
 float4 GLINT_RD_LoadPrefiltered(int2 pixel) { return g_glint_prefiltered.Load(int3(pixel, 0)); }
 float4 GLINT_RD_LoadReprojected(int2 pixel) { return g_glint_reprojected.Load(int3(pixel, 0)); }

@@ -17,21 +17,9 @@ GLINT_BINDING(4, 0) Texture2D<float2> g_glint_motion;
 GLINT_BINDING(5, 0) Texture2D<float> g_glint_variance_history;
 GLINT_BINDING(6, 0) Texture2D<float4> g_glint_environment;
 GLINT_BINDING(7, 0) SamplerState g_glint_linear_clamp;
-#if GLINT_SSSR_HALF_STORAGE
-GLINT_BINDING(8, 0) GLINT_IMAGE_FORMAT(r16f) RWTexture2D<float> g_glint_roughness;
-#else
-GLINT_BINDING(8, 0) GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float> g_glint_roughness;
-#endif
-#if GLINT_SSSR_HALF_STORAGE
-GLINT_BINDING(9, 0) GLINT_IMAGE_FORMAT(rgba16f) RWTexture2D<float4> g_glint_radiance;
-#else
-GLINT_BINDING(9, 0) GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_radiance;
-#endif
-#if GLINT_SSSR_HALF_STORAGE
-GLINT_BINDING(10, 0) GLINT_IMAGE_FORMAT(r16f) RWTexture2D<float> g_glint_confidence;
-#else
-GLINT_BINDING(10, 0) GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float> g_glint_confidence;
-#endif
+GLINT_BINDING(8, 0) GLINT_FLOAT_STORAGE(GLINT_SSSR_HALF_STORAGE) g_glint_roughness;
+GLINT_BINDING(9, 0) GLINT_FLOAT4_STORAGE(GLINT_SSSR_HALF_STORAGE) g_glint_radiance;
+GLINT_BINDING(10, 0) GLINT_FLOAT_STORAGE(GLINT_SSSR_HALF_STORAGE) g_glint_confidence;
 GLINT_BINDING(11, 0) RWStructuredBuffer<uint> g_glint_counters;
 GLINT_BINDING(13, 0) RWStructuredBuffer<uint> g_glint_tile_list;
 

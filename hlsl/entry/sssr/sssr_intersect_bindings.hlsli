@@ -29,16 +29,8 @@ GLINT_BINDING(10, 0) RWStructuredBuffer<uint> g_glint_counters;
 GLINT_BINDING(10, 0) StructuredBuffer<uint> g_glint_counters;
 #endif
 GLINT_BINDING(11, 0) StructuredBuffer<uint> g_glint_ray_list;
-#if GLINT_SSSR_HALF_STORAGE
-GLINT_BINDING(12, 0) GLINT_IMAGE_FORMAT(rgba16f) RWTexture2D<float4> g_glint_radiance;
-#else
-GLINT_BINDING(12, 0) GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_radiance;
-#endif
-#if GLINT_SSSR_HALF_STORAGE
-GLINT_BINDING(13, 0) GLINT_IMAGE_FORMAT(r16f) RWTexture2D<float> g_glint_confidence;
-#else
-GLINT_BINDING(13, 0) GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float> g_glint_confidence;
-#endif
+GLINT_BINDING(12, 0) GLINT_FLOAT4_STORAGE(GLINT_SSSR_HALF_STORAGE) g_glint_radiance;
+GLINT_BINDING(13, 0) GLINT_FLOAT_STORAGE(GLINT_SSSR_HALF_STORAGE) g_glint_confidence;
 #if GLINT_SSSR_DEBUG_OUTPUT
 GLINT_BINDING(14, 0) GLINT_IMAGE_FORMAT(rgba32f) RWTexture2D<float4> g_glint_ray_info;
 void GLINT_SSSR_StoreRayInfo(int2 pixel, float4 info) { g_glint_ray_info[pixel] = info; }

@@ -5,6 +5,8 @@
 #ifndef GLINT_SHARED_TYPES_H
 #define GLINT_SHARED_TYPES_H
 
+#include "glint/common/glint_version.h"
+
 #ifdef __cplusplus
 #include <cstddef>
 #include <cstdint>
