@@ -37,6 +37,7 @@ const EffectDescriptor& roughnessEffect() {
         {"roughness.halfPrecisionOutput"},
         "",
         "",
+        {},
     };
     return descriptor;
 }
