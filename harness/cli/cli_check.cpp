@@ -2,14 +2,17 @@
 // (<dir>/<effect>/<pass>/<image>.exr, e.g. exported from an engine's own integration of the
 // headers), with per-pass tolerances, and a verdict table. Exit 1 when a pass differs.
 //
-// Default tolerances (absolute, relative, fraction of pixels allowed to differ) follow what
-// each pass computes: reductions, packing, lists and classes are exact on every GPU; float
-// filters differ in the last bits between compilers; the intersection's hit or miss may flip
-// on a few pixels where a ray grazes a depth edge and the GPUs round differently.
+// Default tolerances (absolute, relative, fraction of pixels allowed to differ) are each
+// effect's (EffectEvaluation::tolerances, glint_effect.h) and follow what each pass computes:
+// reductions, packing, lists and classes are exact on every GPU; float filters differ in the
+// last bits between compilers; the intersection's hit or miss may flip on a few pixels where a
+// ray grazes a depth edge and the GPUs round differently. A pass no row names is exact.
 #include "cli_capture.h"
 #include "cli_commands.h"
 
 #include "report/report_metrics.h"
+
+#include <glint/glint_effect.h>
 
 #include <cstdio>
 #include <map>
@@ -22,22 +25,21 @@ struct Tolerance {
     double absolute = 0.0, relative = 0.0, fraction = 0.0;
 };
 
-// The float passes of the reflections and of the hybrid (intersection, ray tracing, shading,
-// the denoiser): a hit may flip where a ray grazes a depth edge, and the flip carries into the
-// passes after it. Their classifications, lists, inputs and pyramid are exact.
-bool reflectionFloatPass(const std::string& pass) {
-    for (const std::string effect : {"reflections/", "hybrid/"})
-        if (pass.rfind(effect, 0) == 0)
-            return pass != effect + "classify" && pass != effect + "input" &&
-                   pass != effect + "depth_pyramid";
-    return false;
-}
-
+// The first of the effect's tolerance rows that names `pass` ("<effect>/<pass>"); exact
+// without one.
 Tolerance defaultTolerance(const std::string& pass) {
-    if (reflectionFloatPass(pass)) return {1e-3, 1e-2, 0.01};
-    if (pass == "shadows/classify" || pass.rfind("shadows/filter", 0) == 0) return {1e-4, 1e-3, 0.001};
-    if (pass == "reflections/classify") return {1e-6, 1e-6, 0.0};
-    return {}; // inputs, the depth pyramid, shadow prepare, the hybrid's classification: exact
+    const std::size_t slash = pass.find('/');
+    const EffectDescriptor* effect = slash == std::string::npos ? nullptr : findEffect(pass.substr(0, slash));
+    if (!effect) return {};
+    const std::string name = pass.substr(slash + 1);
+    for (const PassTolerance& row : effect->evaluation.tolerances) {
+        const bool prefix = !row.pass.empty() && row.pass.back() == '*';
+        const bool matches = prefix
+                                 ? name.compare(0, row.pass.size() - 1, row.pass, 0, row.pass.size() - 1) == 0
+                                 : name == row.pass;
+        if (matches) return {row.absolute, row.relative, row.fraction};
+    }
+    return {};
 }
 
 std::map<std::string, Tolerance> parseTolerances(const std::vector<std::string>& texts) {

@@ -12,9 +12,11 @@
 namespace glint::cli {
 namespace {
 
-bool endsWith(const std::string& text, const std::string& suffix) {
-    return text.size() >= suffix.size() &&
-           text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+// Whether `output` is `pattern`, or `pattern` followed by digits (a mip level).
+bool outputMatches(const std::string& output, const std::string& pattern) {
+    if (output.compare(0, pattern.size(), pattern) != 0) return false;
+    return std::all_of(output.begin() + static_cast<std::ptrdiff_t>(pattern.size()), output.end(),
+                       [](char c) { return c >= '0' && c <= '9'; });
 }
 
 // The range of the finite samples (for depth and pyramid levels, whose interesting span is
@@ -45,12 +47,29 @@ float percentile99(const report::Image& image) {
 } // namespace
 
 report::PngMapping previewMapping(const std::string& name, const report::Image& image) {
-    for (const char* categorical : {"ray_class", "tile_class", "ray_list", "tile_list", "/mask"})
-        if (endsWith(name, categorical)) return report::Categories{};
-    if (endsWith(name, "error")) return report::Heat{name.rfind("shadows", 0) == 0 ? 0.5f : 1.0f};
-    if (endsWith(name, "iterations") || endsWith(name, "variance") || endsWith(name, "hit_distance"))
+    const std::size_t slash = name.find('/');
+    const EffectDescriptor* effect = slash == std::string::npos ? nullptr : findEffect(name.substr(0, slash));
+    const std::string output = slash == std::string::npos ? name : name.substr(slash + 1);
+    // The images glint run adds to an effect's outputs: its error mask and its error map.
+    if (output == "mask" && effect && !effect->evaluation.scored.empty()) return report::Categories{};
+    if (output == "error" && effect && !effect->evaluation.scored.empty())
+        return report::Heat{effect->evaluation.scored.front().errorHeatScale};
+    const OutputPreview* preview = nullptr;
+    if (effect)
+        for (const OutputPreview& row : effect->evaluation.previews)
+            if (!preview && outputMatches(output, row.output)) preview = &row;
+    switch (preview ? preview->preview : Preview::Colour) {
+    case Preview::Categories:
+        return report::Categories{};
+    case Preview::Heat:
+        return report::Heat{preview->scale};
+    case Preview::HeatPercentile99:
         return report::Heat{percentile99(image)};
-    if (name.find("mip") != std::string::npos || endsWith(name, "roughness")) return finiteRange(image);
+    case Preview::FiniteRange:
+        return finiteRange(image);
+    case Preview::Colour:
+        break;
+    }
     if (image.channels >= 3) return report::Tonemap{1.0f};
     return report::Linear{0.0f, 1.0f};
 }

@@ -11,7 +11,9 @@
 
 namespace glint::cli {
 
-// The preview mapping for an image by its name ("reflections/ray_class" -> categories, ...).
+// The preview mapping for an image by its name "<effect>/<output>": the effect's evaluation's
+// (OutputPreview, glint_effect.h; a scored effect's "error" a heat map to its errorHeatScale and
+// its "mask" categories), else tone-mapped colour for 3 or more channels and grey over [0, 1].
 report::PngMapping previewMapping(const std::string& name, const report::Image& image);
 
 // Channel names of the EXR: R,G,B(,A) for colour, Y for one channel, X,Y for two.

@@ -19,7 +19,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <ctime>
 #include <fstream>
 #include <iterator>
@@ -94,34 +93,47 @@ std::string convergence(double floor, const nlohmann::json& last, double noisy) 
     return "no: floor " + fixed(floor, 4) + " is not below a quarter of " + fixed(difference, 4);
 }
 
-// The roughness threshold the run scored reflections with: the last roughnessThreshold=
-// setting it names, else the default.
-double roughnessThresholdOf(const nlohmann::json& summary) {
-    double threshold = defaultSettings(effectRegistry()).real("roughnessThreshold");
-    for (const auto& setting : summary.value("settings", nlohmann::json::array())) {
-        const std::string text = setting.get<std::string>();
-        static const std::string kKey = "roughnessThreshold=";
-        if (text.rfind(kKey, 0) == 0) threshold = std::strtod(text.c_str() + kKey.size(), nullptr);
-    }
-    return threshold;
+// The pixels `scored`'s error is measured over, in words: the descriptor's, or from its kind;
+// `threshold` is the value of the mask's setting summary.json recorded (NaN: not recorded, a
+// summary written before maskThreshold).
+std::string maskWords(const ScoredOutput& scored, double threshold) {
+    if (!scored.maskInWords.empty()) return scored.maskInWords;
+    if (scored.mask.pixels == ErrorMask::Pixels::Surface) return "every pixel with a surface";
+    return "the glossy pixels (a surface with GGX alpha below " + scored.mask.setting +
+           (std::isnan(threshold) ? ", its value not recorded)" : " = " + fixed(threshold, 2) + ")");
 }
 
-// What "error" means for `effect`, in words (replay/replay_error.h is the definition).
-std::string metricSentence(const std::string& effect, const nlohmann::json& summary) {
-    if (effect == "shadows")
-        return "Error of shadows: the mean of |visibility - reference visibility| (both in [0, 1], "
-               "so no clamp is needed) over every pixel with a surface; the sky, where nothing "
-               "receives a shadow, is left out and drawn lit in the shadow images. The error over "
-               "moving edges is the same mean over the pixels with a surface whose reference changed "
-               "by more than " +
-               fixed(replay::kMovingEdgeChange, 2) +
+// What "error" means for `effect`, in words (replay/replay_error.h is the definition), from its
+// scored output's metric and mask; `values` is summary.json's error.<effect>.
+std::string metricSentence(const std::string& effect, const nlohmann::json& values) {
+    const ScoredOutput* scored = replay::scoredOutput(effect);
+    if (!scored)
+        return "Error of " + effect + ": not scored by this glint (its descriptor names no scored output).";
+    const std::string mask = maskWords(*scored, valueOr(values, "maskThreshold"));
+    switch (scored->metric) {
+    case ErrorMetric::Visibility:
+        return "Error of " + effect +
+               ": the mean of |visibility - reference visibility| (both in [0, 1], so no clamp is needed) "
+               "over " +
+               mask + ". The error over moving edges is the same mean over the " +
+               (scored->mask.pixels == ErrorMask::Pixels::Surface ? "pixels with a surface"
+                                                                  : "glossy pixels") +
+               " whose reference changed by more than " + fixed(replay::kMovingEdgeChange, 2) +
                " since the previous frame at the same pixel (none on the first frame).";
+    case ErrorMetric::Absolute:
+        return "Error of " + effect +
+               ": per pixel, the luminance of |output - reference| (per channel, not clamped), averaged "
+               "over " +
+               mask + ". The table adds the mean absolute error of values clamped to [0, " +
+               fixed(replay::kMaeClamp, 0) + "] and the unclamped RMSE, on the same mask.";
+    case ErrorMetric::RelativeLuminance:
+        break;
+    }
     return "Error of " + effect +
            ": per pixel, the luminance of |output - reference| (per RGB channel, radiance not "
-           "clamped) divided by max(luminance(reference), 0.05), averaged over the glossy pixels "
-           "(a surface with GGX alpha below roughnessThreshold = " +
-           fixed(roughnessThresholdOf(summary), 2) +
-           "). The table adds the mean absolute error of "
+           "clamped) divided by max(luminance(reference), 0.05), averaged over " +
+           mask +
+           ". The table adds the mean absolute error of "
            "radiance clamped to [0, " +
            fixed(replay::kMaeClamp, 0) + "] and the unclamped RMSE, on the same mask.";
 }
@@ -239,7 +251,7 @@ report::Section runSection(const std::filesystem::path& dir, const nlohmann::jso
     if (summary.contains("error")) {
         section.text += "\n\n" + referenceSentence(summary);
         for (const auto& [effect, values] : summary.at("error").items()) {
-            section.text += "\n" + metricSentence(effect, summary);
+            section.text += "\n" + metricSentence(effect, values);
             section.plots.push_back(errorPlot(effect, frames));
             if (anyFrameHas(effect, frames, "movingEdge"))
                 section.plots.push_back(movingEdgePlot(effect, frames));
@@ -282,7 +294,9 @@ report::Section runSection(const std::filesystem::path& dir, const nlohmann::jso
     section.text += "\nImages of the last frame (" + frameName + ").";
     for (const auto& effect : summary.at("effects")) {
         const std::string name = effect.get<std::string>();
-        for (const char* image : {"input", "noisy", "denoised", "composite", "reference", "error", "mip1"}) {
+        const EffectDescriptor* descriptor = findEffect(name);
+        if (!descriptor) continue;
+        for (const std::string& image : descriptor->evaluation.reportImages) {
             const std::filesystem::path png = frameDir / (name + "_" + image + ".png");
             if (std::filesystem::exists(png)) section.figures.push_back({name + " " + image, png.string()});
         }

@@ -38,17 +38,18 @@ void progress(std::size_t done, std::size_t total) {
     std::fflush(stderr);
 }
 
-// Shadow previews (noisy, denoised, reference) show every pixel outside the shadow error mask
-// (the non-receivers: no surface) as lit, 1, the value the visibility input and the denoiser
-// give them (docs/shadow_denoiser.md, "Non-receivers"), so the three images differ only where
-// receivers do. The EXR files keep the values as written.
-void writeShadowPreview(const std::filesystem::path& dir, const replay::NamedImage& image,
-                        const std::vector<std::uint8_t>& receivers) {
+// The previews a scored output's evaluation names (ScoredOutput::outsideMaskShownAs: the
+// shadows' noisy, denoised and reference) show every pixel outside its error mask as the value
+// the effect gives them there (the shadows' non-receivers lit, 1: docs/shadow_denoiser.md,
+// "Non-receivers"), so the images differ only inside the mask. The EXR files keep the values
+// as written.
+void writeMaskedPreview(const std::filesystem::path& dir, const replay::NamedImage& image,
+                        const std::vector<std::uint8_t>& mask, float outside) {
     report::Image preview = image.image;
-    for (std::size_t i = 0; i < receivers.size(); ++i)
-        if (!receivers[i])
+    for (std::size_t i = 0; i < mask.size(); ++i)
+        if (!mask[i])
             for (std::uint32_t c = 0; c < preview.channels; ++c)
-                preview.pixels[i * preview.channels + c] = 1.0f;
+                preview.pixels[i * preview.channels + c] = outside;
     report::writePng((dir / (fileStem(image.name) + ".png")).string(), preview,
                      previewMapping(image.name, preview));
 }
@@ -69,8 +70,14 @@ nlohmann::json simulationOf(const std::string& capture) {
     return simulation;
 }
 
-bool isShadowPreview(const std::string& name) {
-    return name == "shadows/noisy" || name == "shadows/denoised" || name == "shadows/reference";
+// The scored output whose previews show `name` ("<effect>/<output>") masked, or none.
+const ScoredOutput* maskedPreview(const std::string& name) {
+    const std::size_t slash = name.find('/');
+    if (slash == std::string::npos) return nullptr;
+    const ScoredOutput* scored = replay::scoredOutput(name.substr(0, slash));
+    if (!scored) return nullptr;
+    const std::vector<std::string>& shown = scored->outsideMaskShownAs;
+    return std::find(shown.begin(), shown.end(), name.substr(slash + 1)) != shown.end() ? scored : nullptr;
 }
 
 // A score where the frame's mask held pixels to score, null where it held none (docs/replay.md:
@@ -137,8 +144,9 @@ int runRun(const ReplayOptions& options) {
         std::map<std::string, std::vector<double>> passTimes;
         // effect -> mean error per frame; NaN where the frame's mask held no pixel (nothing scored)
         std::map<std::string, std::vector<double>> errors;
-        std::map<std::string, double> noisyErrors; // effect -> its noisy input's, last frame
-        std::map<std::string, double> noiseFloors; // effect -> reference noise floor, last frame
+        std::map<std::string, double> noisyErrors;    // effect -> its noisy input's, last frame
+        std::map<std::string, double> noiseFloors;    // effect -> reference noise floor, last frame
+        std::map<std::string, double> maskThresholds; // effect -> its error mask's threshold
         std::size_t nonFiniteFrames = 0;
 
         const std::size_t total = range.last - range.first + 1;
@@ -160,15 +168,15 @@ int runRun(const ReplayOptions& options) {
                                   {"folder", folder},
                                   {"input", source.framePath(index)},
                                   {"images", nlohmann::json::array()}};
-            const float roughnessThreshold = sessionOptions.settings.real("roughnessThreshold");
-            std::vector<std::uint8_t> receivers;
+            const SettingValues& values = sessionOptions.settings;
+            std::map<const ScoredOutput*, std::vector<std::uint8_t>> masks; // of the masked previews
             for (const replay::NamedImage& image : result.images) {
-                const bool shadow = isShadowPreview(image.name);
-                writeImageFiles(dir, fileStem(image.name), image.name, image.image, !shadow);
-                if (shadow) {
-                    if (receivers.empty())
-                        receivers = replay::errorMask(frame, "shadows", roughnessThreshold);
-                    writeShadowPreview(dir, image, receivers);
+                const ScoredOutput* masked = maskedPreview(image.name);
+                writeImageFiles(dir, fileStem(image.name), image.name, image.image, !masked);
+                if (masked) {
+                    if (!masks.contains(masked))
+                        masks[masked] = replay::errorMask(frame, masked->mask, values);
+                    writeMaskedPreview(dir, image, masks[masked], masked->outsideMaskValue);
                 }
                 record["images"].push_back(image.name);
             }
@@ -182,7 +190,7 @@ int runRun(const ReplayOptions& options) {
             if (second) {
                 const capture::Frame secondFrame = second->frame(index);
                 for (const replay::ReferenceError& noise :
-                     replay::referenceNoise(frame, result, secondFrame, roughnessThreshold)) {
+                     replay::referenceNoise(frame, result, secondFrame, values)) {
                     const bool any = noise.pixels > 0;
                     record["referenceNoise"][noise.effect] = {
                         {"mean", scoredOrNull(any, noise.mean)},
@@ -196,13 +204,14 @@ int runRun(const ReplayOptions& options) {
                                     referenceImage(secondFrame, noise.effect), false);
                 }
             }
-            for (const replay::ReferenceError& error : replay::referenceErrors(
-                     frame, result, roughnessThreshold, previous ? &*previous : nullptr)) {
+            for (const replay::ReferenceError& error :
+                 replay::referenceErrors(frame, result, values, previous ? &*previous : nullptr)) {
+                const ScoredOutput& scored = *replay::scoredOutput(error.effect);
                 writeImageFiles(dir, error.effect + "_error", error.effect + "/error", error.map, true);
                 // The pixels the error was measured over, for scripts/run_flip.py: EXR only.
                 writeImageFiles(dir, error.effect + "_mask", error.effect + "/mask",
-                                maskImage(frame, replay::errorMask(frame, error.effect, roughnessThreshold)),
-                                false);
+                                maskImage(frame, replay::errorMask(frame, scored.mask, values)), false);
+                if (error.maskThreshold >= 0.0) maskThresholds[error.effect] = error.maskThreshold;
                 errors[error.effect].push_back(error.pixels > 0 ? error.mean
                                                                 : std::numeric_limits<double>::quiet_NaN());
                 const bool any = error.pixels > 0;
@@ -227,7 +236,7 @@ int runRun(const ReplayOptions& options) {
                     };
                     record["errors"][error.effect]["movingEdgePixels"] = error.movingEdgePixels;
                     record["errors"][error.effect]["movingEdge"] = orNull(error.movingEdge);
-                    if (result.find(error.effect + "/noisy"))
+                    if (!scored.noisy.empty() && result.find(error.effect + "/" + scored.noisy))
                         record["errors"][error.effect]["noisyMovingEdge"] = orNull(error.noisyMovingEdge);
                 }
                 if (error.nonFinite > 0.0) ++nonFiniteFrames;
@@ -285,6 +294,9 @@ int runRun(const ReplayOptions& options) {
                                         {"noisyLast", scoredOrNull(noisy >= 0.0, noisy)}};
             if (noiseFloors.contains(effect))
                 summary["error"][effect]["referenceNoiseLast"] = scoredJson(noiseFloors[effect]);
+            // The threshold of the error mask (a setting's value, ErrorMask in glint_effect.h).
+            if (maskThresholds.contains(effect))
+                summary["error"][effect]["maskThreshold"] = maskThresholds[effect];
         }
         if (nonFiniteFrames > 0) std::printf("non-finite output pixels in %zu frame(s)\n", nonFiniteFrames);
         std::filesystem::create_directories(out);

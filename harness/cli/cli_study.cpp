@@ -30,89 +30,35 @@ namespace glint::cli {
 namespace study {
 namespace {
 
-struct Point {
-    std::string label; // also the image's file name
-    std::vector<std::string> settings;
-};
+using Point = StudyPointDesc;
 
-// One setting at a time around the defaults (replay_settings.h names). What the issue asks for
-// and does not exist is left out rather than imitated: a shadow neighbourhood size (fixed in
-// the shader); the shadow denoiser's only filter-pass control is on/off. "ratio_estimator" is
-// the denoiser's alternative spatial path (ratio-estimator reconstruction + bilateral cleanup).
+// The effect's study (its descriptor's; resolve() admits only effects that have one).
+const EffectStudy& studyOf(const std::string& effect) {
+    const EffectDescriptor* descriptor = findEffect(effect);
+    if (!descriptor || !descriptor->evaluation.study)
+        throw std::invalid_argument("study: effect '" + effect + "' has no study in its descriptor");
+    return *descriptor->evaluation.study;
+}
+
+// One setting at a time around the defaults: the descriptor's points (--quick: those marked quick).
 std::vector<Point> pointsFor(const std::string& effect, bool quick) {
-    if (effect == "reflections") {
-        if (quick)
-            return {{"defaults", {}},
-                    {"no_denoiser", {"denoise=false"}},
-                    {"ratio_estimator", {"denoiser.spatialPath=ratio"}},
-                    {"spq_4", {"samplesPerQuad=4"}}};
-        return {{"defaults", {}},
-                {"no_denoiser", {"denoise=false"}},
-                {"ratio_estimator", {"denoiser.spatialPath=ratio"}},
-                {"iterations_32", {"maxTraversalIterations=32"}},
-                {"iterations_64", {"maxTraversalIterations=64"}},
-                {"iterations_256", {"maxTraversalIterations=256"}},
-                {"mip_1", {"mostDetailedMip=1"}},
-                {"mip_2", {"mostDetailedMip=2"}},
-                {"spq_2", {"samplesPerQuad=2"}},
-                {"spq_4", {"samplesPerQuad=4"}},
-                {"threshold_0.1", {"roughnessThreshold=0.1"}},
-                {"threshold_0.3", {"roughnessThreshold=0.3"}},
-                {"thickness_aware", {"thicknessAware=true"}},
-                {"half_res", {"halfResolution=true"}},
-                {"bias_0.3", {"importanceSampleBias=0.3"}},
-                {"bias_0.6", {"importanceSampleBias=0.6"}},
-                {"full_storage", {"halfPrecisionStorage=false"}}};
-    }
-    if (effect == "hybrid") {
-        // The three paths an engine with ray tracing chooses between, then the hybrid's own
-        // trade-offs (RT ray fraction in the traced_fraction column).
-        if (quick)
-            return {{"defaults", {}},
-                    {"ss_only", {"hybrid.rayTracing=false"}},
-                    {"rt_only", {"hybrid.screenSpace=false"}}};
-        return {{"defaults", {}},
-                {"ss_only", {"hybrid.rayTracing=false"}},
-                {"rt_only", {"hybrid.screenSpace=false"}},
-                {"no_denoiser", {"denoise=false"}},
-                {"screen_colour", {"hybrid.reshade=false"}},
-                {"mirrors_rt", {"hybrid.mirrorsRayTraced=true"}},
-                {"confidence_0.5", {"hybrid.confidenceThreshold=0.5"}},
-                {"rt_threshold_0.1", {"hybrid.rayTracingThreshold=0.1"}},
-                {"no_feedback", {"hybrid.feedback=false"}}};
-    }
-    if (quick) return {{"defaults", {}}, {"filter_off", {"shadows.filter=false"}}};
-    return {{"defaults", {}},
-            {"filter_off", {"shadows.filter=false"}},
-            {"no_tile_skip", {"shadows.skipClearedTiles=false"}},
-            {"no_anti_lag", {"shadows.antiLag=false"}},
-            {"no_penumbra_aware", {"shadows.penumbraAware=false"}},
-            {"filter_variance_0.0625", {"shadows.storedVarianceScale=0.0625"}},
-            {"filter_variance_4", {"shadows.storedVarianceScale=4"}},
-            {"depth_sigma_0.01", {"shadows.depthSigma=0.01"}},
-            {"depth_sigma_0.05", {"shadows.depthSigma=0.05"}},
-            {"normal_power_8", {"shadows.normalPower=8"}},
-            {"normal_power_64", {"shadows.normalPower=64"}}};
+    std::vector<Point> points;
+    for (const Point& point : studyOf(effect).points)
+        if (!quick || point.quick) points.push_back(point);
+    return points;
 }
 
 std::vector<std::string> defaultScenes(const std::string& effect, bool quick) {
-    if (effect == "reflections" || effect == "hybrid") {
-        if (quick) return {"harness/scenes/glossy_room.toml"};
-        return {"harness/scenes/glossy_room.toml", "harness/scenes/mirror_corridor.toml",
-                "harness/scenes/thin_pillars.toml"};
-    }
-    if (quick) return {"harness/scenes/courtyard_penumbra.toml"};
-    return {"harness/scenes/courtyard_penumbra.toml", "harness/scenes/glossy_room.toml",
-            "harness/scenes/thin_pillars.toml"};
+    const EffectStudy& study = studyOf(effect);
+    std::vector<std::string> scenes = study.scenes;
+    if (quick && scenes.size() > study.quickScenes) scenes.resize(study.quickScenes);
+    return scenes;
 }
 
-// References converge like 1/sqrt(spp); shadows are cheap enough for many more samples, and
-// binary visibility needs them (a 64-sample penumbra is still ~0.06 off).
+// References converge like 1/sqrt(spp); the descriptor says how many samples its reference needs.
 std::uint32_t referenceSpp(const Plan& plan, const std::string& effect) {
     if (plan.spp > 0) return plan.spp;
-    const bool reflections = effect != "shadows";
-    if (plan.quick) return reflections ? 4 : 16;
-    return reflections ? 64 : 256;
+    return plan.quick ? studyOf(effect).quickReferenceSpp : studyOf(effect).referenceSpp;
 }
 
 // The base settings with the point's applied over them; a name set twice keeps its last value
@@ -158,15 +104,22 @@ struct Row {
 
 // Runs every frame with readback and measures the last one against its reference (its moving
 // edges against the frame before it).
+// `maskSettings` give the mask its threshold. An effect that is not scored gets NaN errors.
 replay::ReferenceError lastFrameError(const gpu::Context& context, const SimulatedScene& scene,
-                                      const replay::SessionOptions& options, float maskThreshold,
-                                      replay::FrameResult& result) {
+                                      const replay::SessionOptions& options,
+                                      const SettingValues& maskSettings, replay::FrameResult& result) {
     replay::Session session(context, scene.frames.front(), scene.environment, options);
     for (const capture::Frame& frame : scene.frames) result = session.run(frame);
+    if (!replay::scoredOutput(options.effects.front())) {
+        replay::ReferenceError unscored;
+        unscored.effect = options.effects.front();
+        unscored.mean = unscored.rmse = unscored.maeClamped = unscored.rmseClamped = std::nan("");
+        return unscored;
+    }
     const capture::Frame* previous =
         scene.frames.size() > 1 ? &scene.frames[scene.frames.size() - 2] : nullptr;
     for (replay::ReferenceError& error :
-         replay::referenceErrors(scene.frames.back(), result, maskThreshold, previous))
+         replay::referenceErrors(scene.frames.back(), result, maskSettings, previous))
         if (error.effect == options.effects.front()) return error;
     throw std::runtime_error("study: scene " + scene.name + " has no " + options.effects.front() +
                              " reference");
@@ -176,12 +129,19 @@ replay::ReferenceError lastFrameError(const gpu::Context& context, const Simulat
 std::vector<Row> sweep(const gpu::Context& context, const Plan& plan, const std::string& effect,
                        const SimulatedScene& scene, const SimulatedScene* second) {
     const std::vector<Point> points = pointsFor(effect, plan.quick);
-    // One mask for every point: the largest threshold swept, so that a lower threshold is
-    // charged for the pixels it hands to the environment instead of dropping them.
-    float maskThreshold = 0.0f;
-    for (const Point& point : points)
-        maskThreshold = std::max(maskThreshold, settingsOf(effect, point).real("roughnessThreshold"));
-    const std::vector<std::uint8_t> mask = replay::errorMask(scene.frames.back(), effect, maskThreshold);
+    const ScoredOutput* scored = replay::scoredOutput(effect);
+    // One mask for every point: with a threshold, the largest swept, so that a lower threshold
+    // is charged for the pixels it hands to the environment instead of dropping them.
+    SettingValues maskSettings = settingsOf(effect, points.front());
+    if (scored && !scored->mask.setting.empty()) {
+        float threshold = 0.0f;
+        for (const Point& point : points)
+            threshold = std::max(threshold, settingsOf(effect, point).real(scored->mask.setting));
+        maskSettings.set(scored->mask.setting, threshold);
+    }
+    const std::vector<std::uint8_t> mask =
+        scored ? replay::errorMask(scene.frames.back(), scored->mask, maskSettings)
+               : std::vector<std::uint8_t>{};
     const std::filesystem::path folder = std::filesystem::path("images") / scene.name / effect;
     std::vector<Row> rows;
     for (const Point& point : points) {
@@ -194,12 +154,20 @@ std::vector<Row> sweep(const gpu::Context& context, const Plan& plan, const std:
                 .effect = effect,
                 .label = point.label,
                 .settings = options.settings.assignments()};
-        row.error = lastFrameError(context, scene, options, maskThreshold, result);
+        row.error = lastFrameError(context, scene, options, maskSettings, result);
         row.measurement = measureFrames(context, scene.frames, scene.environment, options, plan.runs);
+        row.referenceSpp = scored ? referenceSpp(plan, effect) : 0;
+        if (!scored) {
+            // Timed only: nothing to score it against.
+            std::printf("  %-16s %-22s %10.1f us   (not scored)\n", scene.name.c_str(), point.label.c_str(),
+                        row.measurement.total.medianUs);
+            std::fflush(stdout);
+            rows.push_back(std::move(row));
+            continue;
+        }
         row.output = (folder / (point.label + ".exr")).string();
         row.reference = (folder / "reference.exr").string();
         row.mask = (folder / "mask.exr").string();
-        row.referenceSpp = referenceSpp(plan, effect);
         writeMaskedRgb(plan.out / row.output, result.find(row.error.image)->image, mask);
         if (rows.empty()) {
             writeMaskedRgb(plan.out / row.reference, result.find(effect + "/reference")->image, mask);
@@ -207,8 +175,8 @@ std::vector<Row> sweep(const gpu::Context& context, const Plan& plan, const std:
             writeMaskedRgb(plan.out / row.mask,
                            {scene.frames.back().width, scene.frames.back().height, 1, ones}, mask);
             if (second) {
-                for (replay::ReferenceError& noise : replay::referenceNoise(
-                         scene.frames.back(), result, second->frames.back(), maskThreshold))
+                for (replay::ReferenceError& noise :
+                     replay::referenceNoise(scene.frames.back(), result, second->frames.back(), maskSettings))
                     if (noise.effect == effect) row.floor = std::move(noise);
                 writeMaskedRgb(plan.out / folder / "reference2.exr",
                                referenceImage(second->frames.back(), effect), mask);
@@ -231,11 +199,14 @@ std::vector<Row> sweep(const gpu::Context& context, const Plan& plan, const std:
     return rows;
 }
 
-// The hybrid's share of rays that went to the ray tracer (those that missed in screen space
-// first included), "" without its counters.
-std::string rayTracedShare(const Measurement& measurement) {
-    const std::optional<double> traced = counterNumber(measurement, "hybrid/ray_traced_rays");
-    const std::optional<double> answered = counterNumber(measurement, "hybrid/screen_space_answers");
+// The share of rays traced, as the effect's study names it (EffectStudy::tracedCounter): the
+// counter alone, or traced / (traced + answered); "" without its counters.
+std::string tracedShare(const std::string& effect, const Measurement& measurement) {
+    const EffectStudy& study = studyOf(effect);
+    if (study.tracedCounter.empty()) return "";
+    if (study.answeredCounter.empty()) return counterValue(measurement, effect + "/" + study.tracedCounter);
+    const std::optional<double> traced = counterNumber(measurement, effect + "/" + study.tracedCounter);
+    const std::optional<double> answered = counterNumber(measurement, effect + "/" + study.answeredCounter);
     if (!traced || !answered) return "";
     return formatNumber(*traced + *answered > 0.0 ? *traced / (*traced + *answered) : 0.0);
 }
@@ -266,9 +237,7 @@ void writeResults(const Plan& plan, const gpu::Context& context, const std::vect
            "output,"
            "reference,reference2,mask,device\n";
     for (const Row& row : rows) {
-        const std::string traced = row.effect == "hybrid"
-                                       ? rayTracedShare(row.measurement)
-                                       : counterValue(row.measurement, "reflections/traced_fraction");
+        const std::string traced = tracedShare(row.effect, row.measurement);
         csv << row.scene << "," << row.effect << "," << row.label << "," << joined(row.settings) << ","
             << row.measurement.total.medianUs << "," << row.measurement.total.minUs << ","
             << row.measurement.total.maxUs << "," << passesField(row.measurement) << "," << row.error.mean
@@ -326,12 +295,19 @@ Plan resolve(const StudyOptions& options) {
     Plan plan;
     plan.out = options.outDir;
     plan.quick = options.quick;
+    // "all": every scored effect with a study, in the registry's order.
+    std::vector<std::string> studied, all;
+    for (const EffectDescriptor* effect : effectRegistry())
+        if (effect->evaluation.study) {
+            studied.push_back(effect->name);
+            if (!effect->evaluation.scored.empty()) all.push_back(effect->name);
+        }
     if (options.effect == "all")
-        plan.effects = {"reflections", "shadows", "hybrid"};
-    else if (options.effect == "reflections" || options.effect == "shadows" || options.effect == "hybrid")
+        plan.effects = all;
+    else if (std::find(studied.begin(), studied.end(), options.effect) != studied.end())
         plan.effects = {options.effect};
     else
-        throw std::invalid_argument("study: --effect must be reflections, shadows, hybrid or all, got '" +
+        throw std::invalid_argument("study: --effect must be " + joined(studied, ", ") + " or all, got '" +
                                     options.effect + "'");
     plan.scenes = options.scenes;
     for (const std::string& scene : plan.scenes)
@@ -365,13 +341,11 @@ SimulatedScene simulateFor(const gpu::Context& context, const std::string& path,
     scene.width = width;
     scene.height = height;
     scene.frameCount = frames;
-    scene.effects = {effect == "reflections" ? scene::Effect::Reflections
-                     : effect == "hybrid"    ? scene::Effect::Hybrid
-                                             : scene::Effect::Shadows};
+    const EffectDescriptor& descriptor = *findEffect(effect);
+    scene.effects = {scene::effectNamed(studyOf(effect).simulateAs)};
     scene.reference = {};
-    if (referenceSpp > 0) {
-        scene.reference.reflections = effect != "shadows";
-        scene.reference.shadows = effect == "shadows";
+    if (referenceSpp > 0 && !descriptor.reference.empty()) {
+        scene::requestReference(scene.reference, descriptor.reference);
         scene.reference.samplesPerPixel = referenceSpp;
     }
     scene::Simulation simulation = scene::simulate(context, scene);
@@ -380,9 +354,7 @@ SimulatedScene simulateFor(const gpu::Context& context, const std::string& path,
 }
 
 std::vector<std::string> baseSettings(const std::string& effect) {
-    // SSSR alone leaves one noisy ray per quad; the effect an engine ships includes the denoiser.
-    if (effect == "reflections" || effect == "hybrid") return {"denoise=true"};
-    return {};
+    return studyOf(effect).baseSettings;
 }
 
 std::string joined(const std::vector<std::string>& items, const char* separator) {
@@ -448,11 +420,12 @@ int runStudy(const StudyOptions& options) {
             const std::vector<std::string> scenes =
                 plan.scenes.empty() ? study::defaultScenes(effect, plan.quick) : plan.scenes;
             for (const std::string& path : scenes) {
-                const std::uint32_t spp = study::referenceSpp(plan, effect);
+                const bool scored = replay::scoredOutput(effect) != nullptr;
+                const std::uint32_t spp = scored ? study::referenceSpp(plan, effect) : 0;
                 const study::SimulatedScene scene =
                     study::simulateFor(context, path, effect, plan.width, plan.height, plan.frames, spp);
                 std::optional<study::SimulatedScene> second;
-                if (plan.floors)
+                if (plan.floors && scored)
                     second = study::simulateFor(context, path, effect, plan.width, plan.height, plan.frames,
                                                 spp, study::kSecondReferenceSeedOffset);
                 std::vector<study::Row> more =

@@ -1,9 +1,10 @@
 // glint study --scaling: does the work follow what the frame calls for? Per effect, GPU time
 // against resolution (the scene simulated at 720p, 1080p, 1440p and 4K) and against the
-// fraction of pixels the effect works on (0, 25, 50, 100 %), made exact by rewriting the
-// frame's inputs in memory: for reflections the top rows are glossy and the rest fully rough,
-// for shadows the top rows hold 1-sample penumbra noise and the rest is fully lit. Writes
-// scaling.csv and scaling.json.
+// fraction of pixels the effect works on (0, 25, 50, 100 %), made exact by rewriting the input
+// its study names (EffectStudy::scalingInput) in memory: a material's top rows are glossy and
+// the rest fully rough, a shadow visibility's top rows hold 1-sample penumbra noise and the rest
+// is fully lit. An effect whose study names no scaling scene is not scaled. Writes scaling.csv
+// and scaling.json.
 #include "cli_study.h"
 
 #include "replay/replay_settings.h"
@@ -21,10 +22,13 @@ struct Size {
     std::uint32_t width, height;
 };
 
+const EffectStudy& studyOf(const std::string& effect) {
+    return *findEffect(effect)->evaluation.study; // resolve() admits only effects with a study
+}
+
 std::string sceneFor(const Plan& plan, const std::string& effect) {
     if (!plan.scenes.empty()) return plan.scenes.front();
-    return effect == "reflections" ? "harness/scenes/glossy_room.toml"
-                                   : "harness/scenes/courtyard_penumbra.toml";
+    return studyOf(effect).scalingScene;
 }
 
 std::uint32_t glossyRows(const capture::Frame& frame, double fraction) {
@@ -123,9 +127,9 @@ int runScaling(const Plan& plan, const gpu::Context& context) {
     std::printf("scaling: %u timed runs per point; fractions at %ux%u\n", plan.runs, plan.width, plan.height);
     std::vector<Row> rows;
     for (const std::string& effect : plan.effects) {
-        if (effect == "hybrid") {
-            // Its cost follows the fraction of rays it ray traces, which the sweep reports.
-            std::printf("scaling: the hybrid is not scaled (see the sweep's traced_fraction)\n");
+        const EffectStudy& study = studyOf(effect);
+        if (study.scalingScene.empty()) {
+            std::printf("scaling: %s is not scaled (its study names no scaling scene)\n", effect.c_str());
             continue;
         }
         const std::string path = sceneFor(plan, effect);
@@ -136,8 +140,17 @@ int runScaling(const Plan& plan, const gpu::Context& context) {
         const SimulatedScene scene = simulateFor(context, path, effect, plan.width, plan.height, frames, 0);
         for (const double fraction : {0.0, 0.25, 0.5, 1.0}) {
             SimulatedScene modified = scene;
-            for (capture::Frame& frame : modified.frames)
-                effect == "reflections" ? setGlossyRows(frame, fraction) : setPenumbraRows(frame, fraction);
+            for (capture::Frame& frame : modified.frames) {
+                if (study.scalingInput == InputKind::Material)
+                    setGlossyRows(frame, fraction);
+                else if (study.scalingInput == InputKind::ShadowVisibility)
+                    setPenumbraRows(frame, fraction);
+                else
+                    throw std::invalid_argument(
+                        "study: --scaling rewrites a Material or ShadowVisibility input, "
+                        "not the one " +
+                        effect + "'s study names");
+            }
             rows.push_back(measure(context, plan, effect, modified, "fraction", fraction));
         }
     }

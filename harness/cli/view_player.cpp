@@ -61,8 +61,7 @@ void Player::runFrame(bool cut) {
     const replay::FrameResult all = session_->read(frame_, {});
     viewNames_.clear();
     for (const replay::NamedImage& image : all.images) viewNames_.push_back(image.name);
-    for (const replay::ReferenceError& error :
-         replay::referenceErrors(frame_, all, pending_.settings.real("roughnessThreshold")))
+    for (const replay::ReferenceError& error : replay::referenceErrors(frame_, all, pending_.settings))
         viewNames_.push_back(error.effect + "/error");
 }
 
@@ -135,8 +134,7 @@ std::optional<report::Image> Player::image(const std::string& name) {
             return image == effect + "/reference" || image == effect + "/denoised" ||
                    image == effect + "/noisy";
         });
-        for (replay::ReferenceError& error :
-             replay::referenceErrors(frame_, inputs, pending_.settings.real("roughnessThreshold")))
+        for (replay::ReferenceError& error : replay::referenceErrors(frame_, inputs, pending_.settings))
             if (error.effect == effect) {
                 report::Image map = std::move(error.map);
                 errors_[effect] = error;

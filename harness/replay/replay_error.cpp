@@ -36,7 +36,8 @@ std::vector<std::uint8_t> surfaceMask(const capture::Frame& frame) {
     return mask;
 }
 
-std::vector<std::uint8_t> glossyMask(const capture::Frame& frame, float roughnessThreshold) {
+// Surface pixels whose GGX alpha is below `threshold`.
+std::vector<std::uint8_t> alphaBelowMask(const capture::Frame& frame, float threshold) {
     std::vector<std::uint8_t> mask = surfaceMask(frame);
     const capture::Layer* layer = capture::findLayer(frame, frame.roughness.layer);
     const int channel = layer ? capture::channelIndex(layer->channels, frame.roughness.channel) : -1;
@@ -45,17 +46,23 @@ std::vector<std::uint8_t> glossyMask(const capture::Frame& frame, float roughnes
     for (std::size_t i = 0; i < mask.size(); ++i) {
         const float r = layer->pixels[i * stride + static_cast<std::size_t>(channel)];
         const float alpha = frame.roughness.perceptual ? r * r : r;
-        mask[i] = mask[i] && alpha < roughnessThreshold;
+        mask[i] = mask[i] && alpha < threshold;
     }
     return mask;
 }
 
+double thresholdOf(const ErrorMask& mask, const SettingValues& settings) {
+    return mask.pixels == ErrorMask::Pixels::SurfaceAlphaBelow ? double{settings.real(mask.setting)} : -1.0;
+}
+
 ReferenceError compare(const std::string& effect, const NamedImage& output, const report::Image& reference,
-                       const std::vector<std::uint8_t>& mask, bool relative) {
+                       const std::vector<std::uint8_t>& mask, ErrorMetric metric) {
+    const bool relative = metric == ErrorMetric::RelativeLuminance;
+    const bool visibility = metric == ErrorMetric::Visibility;
     ReferenceError error;
     error.effect = effect;
     error.image = output.name;
-    error.visibility = !relative;
+    error.visibility = visibility;
     const report::Image& out = output.image;
     const std::uint32_t channels = std::min(out.channels, reference.channels);
     error.map = report::Image{out.width, out.height, 1,
@@ -89,7 +96,7 @@ ReferenceError compare(const std::string& effect, const NamedImage& output, cons
         clampedSum += pixelClamped / std::min(channels, 3u);
         clampedSquares += pixelClampedSquares / std::min(channels, 3u);
         ++error.pixels;
-        if (!relative && b[0] > 0.05f && b[0] < 0.95f) {
+        if (visibility && b[0] > 0.05f && b[0] < 0.95f) {
             penumbraSum += double{value};
             ++penumbraCount;
         }
@@ -127,23 +134,28 @@ void scoreMovingEdges(ReferenceError& error, const NamedImage& output, const Nam
                       const report::Image& reference, const report::Image& previous,
                       const std::vector<std::uint8_t>& mask) {
     const std::vector<std::uint8_t> moving = movingEdgeMask(reference, previous, mask);
-    const ReferenceError edges = compare(error.effect, output, reference, moving, false);
+    const ReferenceError edges = compare(error.effect, output, reference, moving, ErrorMetric::Visibility);
     error.movingEdgePixels = edges.pixels;
     if (edges.pixels == 0) return;
     error.movingEdge = edges.mean;
-    if (noisy) error.noisyMovingEdge = compare(error.effect, *noisy, reference, moving, false).mean;
-}
-
-// The effects whose outputs are reflections, scored on the glossy mask.
-bool isReflectionEffect(const std::string& effect) {
-    return effect == "reflections" || effect == "hybrid";
+    if (noisy)
+        error.noisyMovingEdge =
+            compare(error.effect, *noisy, reference, moving, ErrorMetric::Visibility).mean;
 }
 
 } // namespace
 
-std::vector<std::uint8_t> errorMask(const capture::Frame& frame, const std::string& effect,
-                                    float roughnessThreshold) {
-    return isReflectionEffect(effect) ? glossyMask(frame, roughnessThreshold) : surfaceMask(frame);
+std::vector<std::uint8_t> errorMask(const capture::Frame& frame, const ErrorMask& mask,
+                                    const SettingValues& settings) {
+    if (mask.pixels == ErrorMask::Pixels::SurfaceAlphaBelow)
+        return alphaBelowMask(frame, settings.real(mask.setting));
+    return surfaceMask(frame);
+}
+
+const ScoredOutput* scoredOutput(const std::string& effect) {
+    const EffectDescriptor* descriptor = findEffect(effect);
+    if (!descriptor || descriptor->evaluation.scored.empty()) return nullptr;
+    return &descriptor->evaluation.scored.front();
 }
 
 std::vector<std::uint8_t> movingEdgeMask(const report::Image& reference,
@@ -166,63 +178,56 @@ std::vector<std::uint8_t> movingEdgeMask(const report::Image& reference,
 }
 
 std::vector<ReferenceError> referenceErrors(const capture::Frame& frame, const FrameResult& result,
-                                            float roughnessThreshold, const capture::Frame* previous) {
+                                            const SettingValues& settings, const capture::Frame* previous) {
     std::vector<ReferenceError> errors;
-    for (const std::string effect : {"reflections", "hybrid"}) {
+    for (const EffectDescriptor* descriptor : effectRegistry()) {
+        const std::string& effect = descriptor->name;
+        const ScoredOutput* scored = scoredOutput(effect);
+        if (!scored) continue;
         const NamedImage* reference = result.find(effect + "/reference");
         if (!reference) continue;
-        const NamedImage* output = result.find(effect + "/denoised");
-        if (!output) output = result.find(effect + "/noisy");
-        const NamedImage* noisy = result.find(effect + "/noisy");
-        const std::vector<std::uint8_t> mask = glossyMask(frame, roughnessThreshold);
-        if (output) {
-            errors.push_back(compare(effect, *output, reference->image, mask, true));
-            if (noisy && noisy != output) {
-                const ReferenceError input = compare(effect, *noisy, reference->image, mask, true);
-                errors.back().noisyMean = input.mean;
-                errors.back().noisyRmse = input.rmse;
-            }
+        const NamedImage* output = nullptr;
+        for (const std::string& name : scored->final)
+            if (!output) output = result.find(effect + "/" + name);
+        if (!output) continue;
+        const NamedImage* noisy = scored->noisy.empty() ? nullptr : result.find(effect + "/" + scored->noisy);
+        if (noisy == output) noisy = nullptr;
+        const std::vector<std::uint8_t> mask = errorMask(frame, scored->mask, settings);
+        errors.push_back(compare(effect, *output, reference->image, mask, scored->metric));
+        errors.back().maskThreshold = thresholdOf(scored->mask, settings);
+        if (noisy) {
+            const ReferenceError input = compare(effect, *noisy, reference->image, mask, scored->metric);
+            errors.back().noisyMean = input.mean;
+            errors.back().noisyRmse = input.rmse;
         }
+        if (previous && scored->metric == ErrorMetric::Visibility)
+            if (const std::optional<report::Image> before = previousReference(*previous, frame, effect))
+                scoreMovingEdges(errors.back(), *output, noisy, reference->image, *before, mask);
     }
-    if (const NamedImage* reference = result.find("shadows/reference"))
-        if (const NamedImage* output = result.find("shadows/denoised")) {
-            const std::vector<std::uint8_t> mask = surfaceMask(frame);
-            errors.push_back(compare("shadows", *output, reference->image, mask, false));
-            const NamedImage* noisy = result.find("shadows/noisy");
-            if (noisy) {
-                const ReferenceError input = compare("shadows", *noisy, reference->image, mask, false);
-                errors.back().noisyMean = input.mean;
-                errors.back().noisyRmse = input.rmse;
-            }
-            if (previous)
-                if (const std::optional<report::Image> before =
-                        previousReference(*previous, frame, "shadows"))
-                    scoreMovingEdges(errors.back(), *output, noisy, reference->image, *before, mask);
-        }
     return errors;
 }
 
 std::vector<ReferenceError> referenceNoise(const capture::Frame& frame, const FrameResult& result,
-                                           const capture::Frame& second, float roughnessThreshold) {
+                                           const capture::Frame& second, const SettingValues& settings) {
     if (second.width != frame.width || second.height != frame.height)
         throw std::invalid_argument("second reference: its frame is " + std::to_string(second.width) + "x" +
                                     std::to_string(second.height) + ", the capture's " +
                                     std::to_string(frame.width) + "x" + std::to_string(frame.height));
     std::vector<ReferenceError> noise;
-    for (const std::string effect : {"reflections", "hybrid", "shadows"}) {
+    for (const EffectDescriptor* descriptor : effectRegistry()) {
+        const std::string& effect = descriptor->name;
+        const ScoredOutput* scored = scoredOutput(effect);
         const NamedImage* reference = result.find(effect + "/reference");
-        const EffectDescriptor* descriptor = findEffect(effect);
-        if (!reference || !descriptor || descriptor->reference.empty()) continue;
+        if (!scored || !reference || descriptor->reference.empty()) continue;
         const capture::Layer* layer = capture::findLayer(second, "reference." + descriptor->reference);
         if (!layer) continue;
         const std::uint32_t channels = std::min<std::uint32_t>(
             reference->image.channels, static_cast<std::uint32_t>(layer->channels.size()));
         const report::Image other{second.width, second.height, channels,
                                   layerChannels(second, layer->name, channels)};
-        const bool reflection = isReflectionEffect(effect);
-        const std::vector<std::uint8_t> mask =
-            reflection ? glossyMask(frame, roughnessThreshold) : surfaceMask(frame);
-        noise.push_back(compare(effect, *reference, other, mask, reflection));
+        const std::vector<std::uint8_t> mask = errorMask(frame, scored->mask, settings);
+        noise.push_back(compare(effect, *reference, other, mask, scored->metric));
+        noise.back().maskThreshold = thresholdOf(scored->mask, settings);
     }
     return noise;
 }

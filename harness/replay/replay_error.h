@@ -1,14 +1,18 @@
 // The error of an effect's final output against the capture's converged reference, over the
-// pixels the effect is responsible for:
-//   reflections  "denoised" (or "noisy" without the denoiser) against reference.reflection over
-//                glossy pixels (GGX alpha below the roughness threshold, depth not background);
-//                per-pixel error |out - ref| (luminance of the per-channel difference) divided by
-//                max(luminance(ref), 0.05), the metric the denoiser tests use
-//   shadows      "denoised" against reference.shadow over receivers (depth not background);
-//                per-pixel |out - ref|; `penumbra` is the mean over reference in (0.05, 0.95)
-// Moving edges (effects scored by |out - ref|, i.e. visibility): the mask's pixels where the
-// reference changed by more than kMovingEdgeChange since the previous frame of the sequence, at
-// the same pixel; the error of the output and of its noisy input over them.
+// pixels the effect is responsible for, as its descriptor's evaluation says (ScoredOutput,
+// glint_effect.h): the first of its `final` outputs the frame has against the output
+// "reference" (the capture's reference layer), over its mask, in its metric:
+//   RelativeLuminance  per-pixel |out - ref| (luminance of the per-channel difference) divided
+//                      by max(luminance(ref), 0.05), the metric the denoiser tests use (the
+//                      reflections, over glossy pixels: GGX alpha below roughnessThreshold)
+//   Absolute           per-pixel luminance of |out - ref|
+//   Visibility         per-pixel |out - ref| (the shadows, over receivers); `penumbra` is the
+//                      mean over reference in (0.05, 0.95)
+// Masks: Surface is every pixel whose depth is not the background; SurfaceAlphaBelow those of
+// them whose GGX alpha is below the setting the mask names.
+// Moving edges (Visibility): the mask's pixels where the reference changed by more than
+// kMovingEdgeChange since the previous frame of the sequence, at the same pixel; the error of
+// the output and of its noisy input over them.
 // Non-finite output pixels count in `nonFinite` and as error 1 in the map, never as NaN.
 // `maeClamped`: radiance (or visibility) clamped to [0, kMaeClamp] per channel, then the mean of
 // |out - ref| over the colour channels and the mask's pixels; bounded, so a few fireflies in
@@ -44,7 +48,9 @@ struct ReferenceError {
     double noisyMean = -1.0;  // the same mean for the effect's noisy input, when the output is denoised
     double noisyRmse = -1.0;  // and its rmse
     double nonFinite = 0.0;   // fraction of output pixels (all, not only the mask) that are not finite
-    bool visibility = false;  // scored by |out - ref| (penumbra and moving edges apply)
+    bool visibility = false;  // ErrorMetric::Visibility (penumbra and moving edges apply)
+    // The mask's threshold (ErrorMask::SurfaceAlphaBelow: the value of its setting), -1 without one.
+    double maskThreshold = -1.0;
     // Visibility effects: the moving-edge pixels (movingEdgeMask) and the mean |out - ref| over
     // them of the output and of its noisy input; 0 and empty without a previous frame or when no
     // pixel moved.
@@ -54,10 +60,14 @@ struct ReferenceError {
     report::Image map; // per-pixel error, 0 outside the mask
 };
 
-// The pixels the error of `effect` ("reflections" or "shadows") is measured over, as above:
-// 1 inside, 0 outside.
-std::vector<std::uint8_t> errorMask(const capture::Frame& frame, const std::string& effect,
-                                    float roughnessThreshold);
+// The pixels `mask` covers in `frame`, as above, its threshold read from `settings`: 1 inside,
+// 0 outside.
+std::vector<std::uint8_t> errorMask(const capture::Frame& frame, const ErrorMask& mask,
+                                    const SettingValues& settings);
+
+// The scored output of `effect` (the first of its descriptor's, which every tool scores), or
+// none for an effect that is not scored or not known.
+const ScoredOutput* scoredOutput(const std::string& effect);
 
 // The pixels of `mask` where the reference's first channel differs from the previous frame's
 // at the same pixel by more than `change`: 1 there, 0 elsewhere and where either is not finite.
@@ -67,12 +77,13 @@ std::vector<std::uint8_t> movingEdgeMask(const report::Image& reference,
                                          const std::vector<std::uint8_t>& mask,
                                          float change = kMovingEdgeChange);
 
-// One entry per effect whose output and reference are both in `result`. `previous`, the
-// sequence's frame before `frame` (none on its first frame), gives the visibility effects their
-// moving edges from its reference layer; a `previous` of another size throws
-// std::invalid_argument naming both sizes.
+// One entry per scored effect whose output and reference are both in `result`, in the
+// registry's order; `settings` give the masks their thresholds. `previous`, the sequence's frame
+// before `frame` (none on its first frame), gives the visibility effects their moving edges from
+// its reference layer; a `previous` of another size throws std::invalid_argument naming both
+// sizes.
 std::vector<ReferenceError> referenceErrors(const capture::Frame& frame, const FrameResult& result,
-                                            float roughnessThreshold,
+                                            const SettingValues& settings,
                                             const capture::Frame* previous = nullptr);
 
 // The noise of the capture's own references: for every effect referenceErrors scores, the
@@ -82,6 +93,6 @@ std::vector<ReferenceError> referenceErrors(const capture::Frame& frame, const F
 // reference `second` lacks is left out; a `second` of another size throws
 // std::invalid_argument naming both sizes.
 std::vector<ReferenceError> referenceNoise(const capture::Frame& frame, const FrameResult& result,
-                                           const capture::Frame& second, float roughnessThreshold);
+                                           const capture::Frame& second, const SettingValues& settings);
 
 } // namespace glint::replay

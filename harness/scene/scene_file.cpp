@@ -4,6 +4,8 @@
 
 #include <toml++/toml.h>
 
+#include <stdexcept>
+
 #include <cmath>
 #include <fstream>
 #include <initializer_list>
@@ -484,6 +486,23 @@ bool hasEffect(const Scene& scene, Effect effect) {
 bool needsReflections(const Scene& scene) {
     return hasEffect(scene, Effect::Reflections) || hasEffect(scene, Effect::Hybrid);
 }
+Effect effectNamed(std::string_view name) {
+    if (name == "reflections") return Effect::Reflections;
+    if (name == "shadows") return Effect::Shadows;
+    if (name == "hybrid") return Effect::Hybrid;
+    throw std::invalid_argument("no scene effect '" + std::string(name) + "' (reflections, shadows, hybrid)");
+}
+
+void requestReference(ReferenceDesc& reference, std::string_view layer) {
+    if (layer == "reflection")
+        reference.reflections = true;
+    else if (layer == "shadow")
+        reference.shadows = true;
+    else
+        throw std::invalid_argument("no scene renders the reference layer 'reference." + std::string(layer) +
+                                    "'");
+}
+
 bool needsShadows(const Scene& scene) {
     return hasEffect(scene, Effect::Shadows);
 }

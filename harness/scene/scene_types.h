@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace glint::scene {
@@ -139,5 +140,11 @@ bool hasEffect(const Scene& scene, Effect effect);
 // Reflection layers are needed by both reflections and hybrid reflections.
 bool needsReflections(const Scene& scene);
 bool needsShadows(const Scene& scene);
+// The effect a scene file's `effects` spells `name` ("reflections", "shadows", "hybrid");
+// std::invalid_argument for another name.
+Effect effectNamed(std::string_view name);
+// Asks for the reference a capture holds as the layer "reference.<layer>" ("reflection",
+// "shadow"); std::invalid_argument for a layer no scene renders.
+void requestReference(ReferenceDesc& reference, std::string_view layer);
 
 } // namespace glint::scene

@@ -60,7 +60,8 @@ file(WRITE "${OUT}/glossy_room/summary.json" [=[
                                 "noisyMean": 0.8}},
      "referenceNoise": {"reflections": {"mean": 0.0625, "rmse": 0.07, "maeClamped": 0.02}}}
   ],
-  "error": {"reflections": {"first": 0.5, "last": 0.3, "noisyLast": 0.8, "referenceNoiseLast": 0.0625}}
+  "error": {"reflections": {"first": 0.5, "last": 0.3, "noisyLast": 0.8, "referenceNoiseLast": 0.0625,
+                            "maskThreshold": 0.3}}
 }
 ]=])
 run_glint(0 report "${OUT}/glossy_room" --out "${OUT}/report.html" --anchors "${ANCHORS}")

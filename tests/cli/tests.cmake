@@ -121,6 +121,12 @@ glint_cli_test(NAME "bench of a capture at another resolution prints one line an
   STDERR_ONE_LINE "is 64x48, not the --resolution 32x32"
   COMMAND bench "${GLINT_CLI_SAMPLE_DIR}/sample" --resolution 32x32 --runs 1)
 
+# No effect's name is branched on in harness/replay or harness/cli (its descriptor says instead).
+add_test(NAME "cli: the harness compares no effect name (descriptors say how effects are judged)"
+  COMMAND "${CMAKE_COMMAND}" "-DSOURCE=${PROJECT_SOURCE_DIR}" -P "${CMAKE_CURRENT_SOURCE_DIR}/cli/effect_names.cmake")
+set_tests_properties("cli: the harness compares no effect name (descriptors say how effects are judged)"
+  PROPERTIES LABELS unit)
+
 # The lavapipe-sized study as a smoke test; run from the source root, where its scenes are.
 set(GLINT_STUDY_DIR "${PROJECT_BINARY_DIR}/test-output/study")
 add_test(NAME "cli: study --quick and its scaling runs write finite results under validation"

@@ -15,6 +15,13 @@ using namespace glint;
 
 namespace {
 
+// The run's settings: the defaults with the reflections' mask threshold at 0.2.
+SettingValues settings() {
+    SettingValues values = defaultSettings(effectRegistry());
+    values.set("roughnessThreshold", 0.2);
+    return values;
+}
+
 // Four pixels in a row: three receivers and one background pixel (standard depth 1).
 capture::Frame receivers(std::initializer_list<float> reference) {
     capture::Frame frame;
@@ -57,7 +64,7 @@ TEST_CASE(
     const replay::FrameResult result =
         shadows(row({0.5f, 0.75f, 0.6f, 0.3f}), row({1.0f, 0.0f, 1.0f, 1.0f}), referenceOf(current));
     const std::vector<replay::ReferenceError> errors =
-        replay::referenceErrors(current, result, 0.2f, &previous);
+        replay::referenceErrors(current, result, settings(), &previous);
     REQUIRE(errors.size() == 1);
     CHECK(errors[0].movingEdgePixels == 2);
     // Denoised: |0.5 - 0| = 0.5 and |0.6 - 0.8| = 0.2, mean 0.35. Noisy: 1 and 0.2, mean 0.6.
@@ -81,7 +88,7 @@ TEST_CASE(
     const replay::FrameResult result =
         shadows(row({0.5f, 0.75f, 0.6f, 0.3f}), row({1.0f, 0.0f, 1.0f, 1.0f}), referenceOf(current));
     // A sequence's first frame has no previous frame.
-    const std::vector<replay::ReferenceError> first = replay::referenceErrors(current, result, 0.2f);
+    const std::vector<replay::ReferenceError> first = replay::referenceErrors(current, result, settings());
     REQUIRE(first.size() == 1);
     CHECK(first[0].movingEdgePixels == 0);
     CHECK_FALSE(first[0].movingEdge.has_value());
@@ -89,7 +96,7 @@ TEST_CASE(
     // The same reference on the frame before: nothing moved, although the output is wrong.
     const capture::Frame still = receivers({0.0f, 0.75f, 0.8f, 0.0f});
     const std::vector<replay::ReferenceError> unmoved =
-        replay::referenceErrors(current, result, 0.2f, &still);
+        replay::referenceErrors(current, result, settings(), &still);
     REQUIRE(unmoved.size() == 1);
     CHECK(unmoved[0].movingEdgePixels == 0);
     CHECK_FALSE(unmoved[0].movingEdge.has_value());
@@ -97,7 +104,7 @@ TEST_CASE(
     // A previous frame without a shadow reference cannot tell what moved.
     capture::Frame unreferenced = receivers({1.0f, 1.0f, 1.0f, 1.0f});
     unreferenced.layers.pop_back();
-    CHECK(replay::referenceErrors(current, result, 0.2f, &unreferenced)[0].movingEdgePixels == 0);
+    CHECK(replay::referenceErrors(current, result, settings(), &unreferenced)[0].movingEdgePixels == 0);
 }
 
 TEST_CASE("the moving-edge mask keeps masked pixels whose first channel changed by more than the threshold") {
@@ -123,7 +130,7 @@ TEST_CASE("a previous frame of another size is refused, naming both sizes") {
     smaller.height = 2;
     const replay::FrameResult result =
         shadows(row({0.5f, 0.75f, 0.6f, 0.3f}), row({1.0f, 0.0f, 1.0f, 1.0f}), referenceOf(current));
-    CHECK_THROWS_WITH(replay::referenceErrors(current, result, 0.2f, &smaller),
+    CHECK_THROWS_WITH(replay::referenceErrors(current, result, settings(), &smaller),
                       Catch::Contains("2x2") && Catch::Contains("4x1"));
 }
 
@@ -148,7 +155,7 @@ TEST_CASE("reflections, scored by a relative error, get no moving edges") {
                                      {},
                                      {}};
     const std::vector<replay::ReferenceError> errors =
-        replay::referenceErrors(current, result, 0.2f, &previous);
+        replay::referenceErrors(current, result, settings(), &previous);
     REQUIRE(errors.size() == 1);
     CHECK(errors[0].movingEdgePixels == 0);
     CHECK_FALSE(errors[0].movingEdge.has_value());

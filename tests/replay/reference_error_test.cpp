@@ -13,6 +13,13 @@ using namespace glint;
 
 namespace {
 
+// The run's settings: the defaults with the reflections' mask threshold at 0.2.
+SettingValues settings() {
+    SettingValues values = defaultSettings(effectRegistry());
+    values.set("roughnessThreshold", 0.2);
+    return values;
+}
+
 // Four pixels in a row: three surfaces (roughness 0.1, 0.1, 0.9) and one background pixel.
 capture::Frame fourPixels() {
     capture::Frame frame;
@@ -46,7 +53,7 @@ TEST_CASE("clamped MAE and RMSE clamp both images to [0, 16] and score only glos
     // Pixel 0: out 20 -> 16, ref 4: |16 - 4| = 12. Pixel 1: out 1, ref 3: 2.
     const replay::FrameResult result =
         reflections(grey({20.0f, 1.0f, 100.0f, 50.0f}), grey({4.0f, 3.0f, 0.0f, 0.0f}));
-    const std::vector<replay::ReferenceError> errors = replay::referenceErrors(frame, result, 0.2f);
+    const std::vector<replay::ReferenceError> errors = replay::referenceErrors(frame, result, settings());
     REQUIRE(errors.size() == 1);
     CHECK(errors[0].pixels == 2);
     CHECK(errors[0].maeClamped == Approx((12.0 + 2.0) / 2.0));
@@ -60,7 +67,7 @@ TEST_CASE("a non-finite output pixel counts as the largest clamped difference") 
     const float nan = std::numeric_limits<float>::quiet_NaN();
     const replay::FrameResult result =
         reflections(grey({nan, 3.0f, 0.0f, 0.0f}), grey({4.0f, 3.0f, 0.0f, 0.0f}));
-    const std::vector<replay::ReferenceError> errors = replay::referenceErrors(frame, result, 0.2f);
+    const std::vector<replay::ReferenceError> errors = replay::referenceErrors(frame, result, settings());
     REQUIRE(errors.size() == 1);
     CHECK(errors[0].maeClamped == Approx(replay::kMaeClamp / 2.0));
     CHECK(errors[0].rmseClamped == Approx(replay::kMaeClamp / std::sqrt(2.0)));
@@ -76,7 +83,7 @@ TEST_CASE("the reference noise floor is the two references' difference over the 
     const replay::FrameResult result =
         reflections(grey({0.0f, 0.0f, 0.0f, 0.0f}), grey({4.0f, 3.0f, 0.0f, 0.0f}));
     const std::vector<replay::ReferenceError> noise =
-        replay::referenceNoise(fourPixels(), result, second, 0.2f);
+        replay::referenceNoise(fourPixels(), result, second, settings());
     REQUIRE(noise.size() == 1);
     CHECK(noise[0].effect == "reflections");
     CHECK(noise[0].pixels == 2); // the rough pixel's difference is outside the mask
@@ -87,7 +94,8 @@ TEST_CASE("the reference noise floor is the two references' difference over the 
     same.layers.push_back({"reference.reflection", {"R", "G", "B"}, {}});
     for (float v : {4.0f, 3.0f, 0.0f, 0.0f})
         same.layers.back().pixels.insert(same.layers.back().pixels.end(), {v, v, v});
-    const std::vector<replay::ReferenceError> none = replay::referenceNoise(fourPixels(), result, same, 0.2f);
+    const std::vector<replay::ReferenceError> none =
+        replay::referenceNoise(fourPixels(), result, same, settings());
     REQUIRE(none.size() == 1);
     CHECK(none[0].maeClamped == 0.0);
     CHECK(none[0].mean == 0.0);

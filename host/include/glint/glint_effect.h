@@ -4,7 +4,8 @@
 // the application images it reads (by what they hold, so a capture reader or an engine knows
 // what to bind), and a plan builder that turns a frame and the settings into passes and
 // resources (glint_pass.h). The plan also names the effect's outputs and counters and how to
-// decode them, so replay, dumps and tests read every effect the same way. Effects compose by
+// decode them, so replay, dumps and tests read every effect the same way. Its evaluation says
+// how the effect is scored, checked, previewed, reported and studied. Effects compose by
 // resource name: the reflections effect runs the reflections denoiser on SSSR's outputs, and a
 // value both share (the roughness threshold) is one setting. Nothing here touches a graphics API.
 #pragma once
@@ -15,6 +16,8 @@
 #include "glint/glint_types.h"
 
 #include <array>
+#include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -74,6 +77,99 @@ struct InputDesc {
     std::string shownAs; // non-empty: a tool shows this input as the effect's output of that name
 };
 
+// How a tool judges and shows an effect (glint's harness reads it the way it reads the settings
+// rows; docs/replay.md, docs/accuracy-vs-time.md). Plain data: nothing here runs.
+
+// How an output's error against its reference is measured per pixel.
+enum class ErrorMetric : std::uint8_t {
+    RelativeLuminance, // luminance of |out - ref| over max(luminance(ref), 0.05): radiance
+    Absolute,          // luminance of |out - ref|
+    Visibility,        // |out - ref| of values in [0, 1], with the error over penumbrae
+                       // (reference in (0.05, 0.95)) and over moving edges
+};
+
+// The pixels an output's error is measured over.
+struct ErrorMask {
+    enum class Pixels : std::uint8_t {
+        Surface,           // depth short of the background value
+        SurfaceAlphaBelow, // a surface whose GGX alpha is below the Float setting `setting`
+    };
+    Pixels pixels = Pixels::Surface;
+    std::string setting; // SurfaceAlphaBelow: the setting holding the threshold
+};
+
+// One scored output: the effect's output "final" against the capture's reference layer
+// (EffectDescriptor::reference, the output "reference"), with the output "noisy" scored alongside.
+struct ScoredOutput {
+    std::vector<std::string> final; // the first of these the frame has is scored ("denoised", "noisy")
+    std::string noisy;              // the noisy input, scored alongside (empty: none)
+    ErrorMetric metric = ErrorMetric::RelativeLuminance;
+    ErrorMask mask;
+    float errorHeatScale = 1.0f; // the error map's preview: heat from 0 to this
+    // Previews of these outputs show the pixels outside the mask as this value (the value the
+    // effect gives them), so that noisy, output and reference differ only inside it.
+    std::vector<std::string> outsideMaskShownAs;
+    float outsideMaskValue = 1.0f;
+    // The mask in words for a report ("over ..."); empty: said from its kind and threshold.
+    std::string maskInWords;
+};
+
+// How a tool previews an output as an 8-bit image.
+enum class Preview : std::uint8_t {
+    Colour,           // tone-mapped when it has 3 or more channels, else grey over [0, 1]
+    FiniteRange,      // grey over the range of its finite values (depths, roughness)
+    Categories,       // one colour per value (classes, lists)
+    Heat,             // heat map from 0 to `scale`
+    HeatPercentile99, // heat map from 0 to its 99th percentile of |value|
+};
+
+struct OutputPreview {
+    std::string output; // an output's name; one followed by digits (mip levels) matches too
+    Preview preview = Preview::Colour;
+    float scale = 1.0f; // Heat
+};
+
+// The tolerance of `glint check` for a pass: a pixel differs when |a - b| > absolute + relative
+// * |b|; the pass fails when more than `fraction` of its pixels differ.
+struct PassTolerance {
+    std::string pass; // the pass's name; one ending in '*' matches every pass it begins
+    double absolute = 0.0, relative = 0.0, fraction = 0.0;
+};
+
+// One point of the study's sweep: settings changed from the effect's base settings.
+struct StudyPointDesc {
+    std::string label; // also an image's file name
+    std::vector<std::string> settings;
+    bool quick = false; // in the --quick sweep
+};
+
+struct EffectStudy {
+    std::vector<std::string> baseSettings; // the effect as an engine ships it
+    std::vector<StudyPointDesc> points;    // the first is the base ("defaults")
+    std::vector<std::string> scenes;       // scene files, relative to the repository root
+    std::size_t quickScenes = 1;           // --quick studies the first this many
+    std::string simulateAs;                // the scene effect whose inputs are rendered
+    std::uint32_t referenceSpp = 64, quickReferenceSpp = 4;
+    // --scaling: the scene, and the input whose rows it rewrites to sweep the fraction of pixels
+    // the effect works on (Material: glossy rows; ShadowVisibility: penumbra rows). No scene:
+    // not scaled.
+    std::string scalingScene;
+    InputKind scalingInput = InputKind::Material;
+    // The share of rays traced, for study.csv's traced_fraction: the counter `traced` alone, or
+    // with `answered`, traced / (traced + answered).
+    std::string tracedCounter, answeredCounter;
+};
+
+struct EffectEvaluation {
+    std::vector<ScoredOutput> scored;      // empty: the effect is not scored
+    std::vector<OutputPreview> previews;   // outputs not listed: Preview::Colour
+    std::vector<PassTolerance> tolerances; // first match wins; passes not listed: exact
+    // The images of the last frame a report shows, by output name ("denoised", "mip1"; also
+    // "reference", "error" and inputs shown as outputs).
+    std::vector<std::string> reportImages;
+    std::optional<EffectStudy> study; // none: glint study does not sweep it
+};
+
 struct EffectDescriptor {
     std::string name; // as --effects spells it
     std::string help; // one line
@@ -91,6 +187,7 @@ struct EffectDescriptor {
     // The reference a capture may carry for the effect's final output ("reflection": the
     // capture layer "reference.reflection"), shown and scored as the output "reference".
     std::string reference;
+    EffectEvaluation evaluation;
 };
 
 // Every effect glint ships, in the order a tool runs them.

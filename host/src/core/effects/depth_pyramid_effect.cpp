@@ -38,6 +38,7 @@ const EffectDescriptor& depthPyramidEffect() {
         {"pyramid.closestAndFarthest"},
         "",
         "",
+        {.previews = {{"mip", Preview::FiniteRange}}, .reportImages = {"mip1"}},
     };
     return descriptor;
 }

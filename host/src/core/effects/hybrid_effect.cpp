@@ -101,6 +101,35 @@ Result planFrame(const FrameInfo& frame, const SettingValues& settings, EffectPl
 
 } // namespace
 
+namespace {
+
+// The three paths an engine with ray tracing chooses between, then the hybrid's own trade-offs
+// (the share of rays ray traced in study.csv's traced_fraction). Not scaled: its cost follows
+// that share, which the sweep reports.
+EffectEvaluation hybridEvaluation() {
+    EffectEvaluation evaluation = core::reflectionsEvaluation();
+    EffectStudy study;
+    study.baseSettings = {"denoise=true"};
+    study.points = {{"defaults", {}, true},
+                    {"ss_only", {"hybrid.rayTracing=false"}, true},
+                    {"rt_only", {"hybrid.screenSpace=false"}, true},
+                    {"no_denoiser", {"denoise=false"}},
+                    {"screen_colour", {"hybrid.reshade=false"}},
+                    {"mirrors_rt", {"hybrid.mirrorsRayTraced=true"}},
+                    {"confidence_0.5", {"hybrid.confidenceThreshold=0.5"}},
+                    {"rt_threshold_0.1", {"hybrid.rayTracingThreshold=0.1"}},
+                    {"no_feedback", {"hybrid.feedback=false"}}};
+    study.scenes = {"harness/scenes/glossy_room.toml", "harness/scenes/mirror_corridor.toml",
+                    "harness/scenes/thin_pillars.toml"};
+    study.simulateAs = "hybrid";
+    study.tracedCounter = "ray_traced_rays";
+    study.answeredCounter = "screen_space_answers";
+    evaluation.study = std::move(study);
+    return evaluation;
+}
+
+} // namespace
+
 const EffectDescriptor& hybridEffect() {
     static const EffectDescriptor descriptor{
         "hybrid",
@@ -111,6 +140,7 @@ const EffectDescriptor& hybridEffect() {
         {"composite", "halfPrecisionStorage", "denoise"},
         "",
         "reflection",
+        hybridEvaluation(),
     };
     return descriptor;
 }

@@ -21,6 +21,26 @@
 namespace glint {
 namespace core {
 
+EffectEvaluation reflectionsEvaluation() {
+    EffectEvaluation evaluation;
+    evaluation.scored = {{{"denoised", "noisy"},
+                          "noisy",
+                          ErrorMetric::RelativeLuminance,
+                          {ErrorMask::Pixels::SurfaceAlphaBelow, "roughnessThreshold"}}};
+    evaluation.previews = {
+        {"ray_class", Preview::Categories},      {"tile_class", Preview::Categories},
+        {"ray_list", Preview::Categories},       {"tile_list", Preview::Categories},
+        {"mask", Preview::Categories},           {"iterations", Preview::HeatPercentile99},
+        {"variance", Preview::HeatPercentile99}, {"hit_distance", Preview::HeatPercentile99},
+        {"pyramid_mip", Preview::FiniteRange},   {"roughness", Preview::FiniteRange}};
+    // Classification, inputs and the pyramid are exact; a hit may flip where a ray grazes a
+    // depth edge and the GPUs round differently, and the flip carries into every float pass
+    // after it.
+    evaluation.tolerances = {{"classify"}, {"input"}, {"depth_pyramid"}, {"*", 1e-3, 1e-2, 0.01}};
+    evaluation.reportImages = {"input", "noisy", "denoised", "composite", "reference", "error"};
+    return evaluation;
+}
+
 std::vector<SettingDesc> reflectionsSettings() {
     const SssrDesc s;
     const ReflectionsDenoiserDesc d;
@@ -202,6 +222,42 @@ Result planFrame(const FrameInfo& frame, const SettingValues& settings, EffectPl
     return planReflections(sssr, sssr.denoise ? &denoiser : nullptr, plan, error);
 }
 
+// One setting at a time around the defaults. "ratio_estimator" is the denoiser's alternative
+// spatial path (ratio-estimator reconstruction + bilateral cleanup).
+EffectEvaluation evaluation() {
+    EffectEvaluation evaluation = core::reflectionsEvaluation();
+    // The reflections' classification is exact up to the last bits of its float roughness.
+    evaluation.tolerances.front() = {"classify", 1e-6, 1e-6, 0.0};
+    EffectStudy study;
+    // SSSR alone leaves one noisy ray per quad; the effect an engine ships includes the denoiser.
+    study.baseSettings = {"denoise=true"};
+    study.points = {{"defaults", {}, true},
+                    {"no_denoiser", {"denoise=false"}, true},
+                    {"ratio_estimator", {"denoiser.spatialPath=ratio"}, true},
+                    {"iterations_32", {"maxTraversalIterations=32"}},
+                    {"iterations_64", {"maxTraversalIterations=64"}},
+                    {"iterations_256", {"maxTraversalIterations=256"}},
+                    {"mip_1", {"mostDetailedMip=1"}},
+                    {"mip_2", {"mostDetailedMip=2"}},
+                    {"spq_2", {"samplesPerQuad=2"}},
+                    {"spq_4", {"samplesPerQuad=4"}, true},
+                    {"threshold_0.1", {"roughnessThreshold=0.1"}},
+                    {"threshold_0.3", {"roughnessThreshold=0.3"}},
+                    {"thickness_aware", {"thicknessAware=true"}},
+                    {"half_res", {"halfResolution=true"}},
+                    {"bias_0.3", {"importanceSampleBias=0.3"}},
+                    {"bias_0.6", {"importanceSampleBias=0.6"}},
+                    {"full_storage", {"halfPrecisionStorage=false"}}};
+    study.scenes = {"harness/scenes/glossy_room.toml", "harness/scenes/mirror_corridor.toml",
+                    "harness/scenes/thin_pillars.toml"};
+    study.simulateAs = "reflections";
+    study.scalingScene = "harness/scenes/glossy_room.toml";
+    study.scalingInput = InputKind::Material;
+    study.tracedCounter = "traced_fraction";
+    evaluation.study = std::move(study);
+    return evaluation;
+}
+
 } // namespace
 
 Result planReflections(const SssrDesc& sssr, const ReflectionsDenoiserDesc* denoiser, EffectPlan& plan,
@@ -258,6 +314,7 @@ const EffectDescriptor& reflectionsEffect() {
          "denoiser.spatialPath"},
         "debugOutput",
         "reflection",
+        evaluation(),
     };
     return descriptor;
 }

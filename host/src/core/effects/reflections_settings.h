@@ -17,5 +17,9 @@ std::vector<InputDesc> reflectionsInputs();
 SssrDesc sssrDesc(const FrameInfo& frame, const SettingValues& settings);
 ReflectionsDenoiserDesc reflectionsDenoiserDesc(const FrameInfo& frame, const SettingValues& settings,
                                                 const SssrDesc& sssr);
+// How reflections are scored (against reference.reflection over the glossy pixels), previewed
+// and shown in a report, with the tolerances of the float passes (everything after the
+// intersection). The reflections and the hybrid share it; each adds its own study.
+EffectEvaluation reflectionsEvaluation();
 
 } // namespace glint::core

@@ -25,6 +25,21 @@ Result planRoughness(const FrameInfo& frame, const SettingValues& settings, Effe
     return Result::Ok;
 }
 
+// Not scored (no capture holds a reference roughness): checked, shown in a report and timed by
+// glint study --effect roughness at full and half precision.
+EffectEvaluation roughnessEvaluation() {
+    EffectEvaluation evaluation;
+    // One multiply per pixel: exact in R32F; R16F output rounds to its 11-bit mantissa.
+    evaluation.tolerances = {{"extract_roughness", 0.0, 1e-3, 0.0}};
+    evaluation.reportImages = {"alpha"};
+    EffectStudy study;
+    study.points = {{"defaults", {}, true}, {"half_output", {"roughness.halfPrecisionOutput=true"}, true}};
+    study.scenes = {"harness/scenes/glossy_room.toml"};
+    study.simulateAs = "reflections"; // renders the material layer it reads
+    evaluation.study = std::move(study);
+    return evaluation;
+}
+
 } // namespace
 
 const EffectDescriptor& roughnessEffect() {
@@ -37,6 +52,7 @@ const EffectDescriptor& roughnessEffect() {
         {"roughness.halfPrecisionOutput"},
         "",
         "",
+        roughnessEvaluation(),
     };
     return descriptor;
 }

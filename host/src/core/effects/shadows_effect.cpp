@@ -145,6 +145,53 @@ Result planShadows(const FrameInfo& frame, const SettingValues& settings, Effect
     return Result::Ok;
 }
 
+// Scored against reference.shadow over every receiver (a pixel with a surface); its previews
+// show the non-receivers lit, the value the visibility input and the denoiser give them
+// (docs/shadow_denoiser.md, "Non-receivers"). The sweep changes one setting at a time: the
+// neighbourhood size is fixed in the shader, and the filter's only control is on or off.
+EffectEvaluation shadowsEvaluation() {
+    EffectEvaluation evaluation;
+    evaluation.scored = {{.final = {"denoised"},
+                          .noisy = "noisy",
+                          .metric = ErrorMetric::Visibility,
+                          .mask = {ErrorMask::Pixels::Surface, ""},
+                          .errorHeatScale = 0.5f,
+                          .outsideMaskShownAs = {"noisy", "denoised", "reference"},
+                          .outsideMaskValue = 1.0f,
+                          .maskInWords = "every pixel with a surface; the sky, where nothing receives a "
+                                         "shadow, is left out and drawn lit in the shadow images"}};
+    evaluation.previews = {{"tile_class", Preview::Categories},
+                           {"mask", Preview::Categories},
+                           {"variance", Preview::HeatPercentile99}};
+    // Classification and the filter are float arithmetic that compilers round differently in
+    // the last bits; preparation and the inputs are exact.
+    evaluation.tolerances = {{"classify", 1e-4, 1e-3, 0.001}, {"filter*", 1e-4, 1e-3, 0.001}};
+    evaluation.reportImages = {"input", "noisy", "denoised", "composite", "reference", "error"};
+    EffectStudy study;
+    study.points = {{"defaults", {}, true},
+                    {"filter_off", {"shadows.filter=false"}, true},
+                    {"no_tile_skip", {"shadows.skipClearedTiles=false"}},
+                    {"no_anti_lag", {"shadows.antiLag=false"}},
+                    {"no_penumbra_aware", {"shadows.penumbraAware=false"}},
+                    {"filter_variance_0.0625", {"shadows.storedVarianceScale=0.0625"}},
+                    {"filter_variance_4", {"shadows.storedVarianceScale=4"}},
+                    {"depth_sigma_0.01", {"shadows.depthSigma=0.01"}},
+                    {"depth_sigma_0.05", {"shadows.depthSigma=0.05"}},
+                    {"normal_power_8", {"shadows.normalPower=8"}},
+                    {"normal_power_64", {"shadows.normalPower=64"}}};
+    study.scenes = {"harness/scenes/courtyard_penumbra.toml", "harness/scenes/glossy_room.toml",
+                    "harness/scenes/thin_pillars.toml"};
+    study.simulateAs = "shadows";
+    // Binary visibility needs many samples (a 64-sample penumbra is still ~0.06 off), and
+    // shadows are cheap enough for them.
+    study.referenceSpp = 256;
+    study.quickReferenceSpp = 16;
+    study.scalingScene = "harness/scenes/courtyard_penumbra.toml";
+    study.scalingInput = InputKind::ShadowVisibility;
+    evaluation.study = std::move(study);
+    return evaluation;
+}
+
 } // namespace
 
 const EffectDescriptor& shadowsEffect() {
@@ -164,6 +211,7 @@ const EffectDescriptor& shadowsEffect() {
          "shadows.penumbraAware"},
         "",
         "shadow",
+        shadowsEvaluation(),
     };
     return descriptor;
 }
