@@ -1,4 +1,4 @@
-# Script mode: no code in harness/replay or harness/cli compares against an effect's name. How an
+# Script mode: no code in harness/replay, harness/cli or harness/viewer compares against an effect's name. How an
 # effect is scored, checked, previewed, reported and studied is its descriptor's evaluation
 # (host/include/glint/glint_effect.h); a branch on a name would leave the next effect silently
 # unscored. Fails naming each file and line that holds an effect name as a string literal
@@ -9,7 +9,8 @@ cmake_minimum_required(VERSION 3.25)
 set(names reflections shadows hybrid depth_pyramid roughness sssr shadow_denoiser)
 set(found "")
 file(GLOB_RECURSE files RELATIVE "${SOURCE}" "${SOURCE}/harness/replay/*.cpp" "${SOURCE}/harness/replay/*.h"
-     "${SOURCE}/harness/cli/*.cpp" "${SOURCE}/harness/cli/*.h")
+     "${SOURCE}/harness/cli/*.cpp" "${SOURCE}/harness/cli/*.h" "${SOURCE}/harness/viewer/*.cpp"
+     "${SOURCE}/harness/viewer/*.h")
 list(JOIN names "|" alternatives)
 foreach(file IN LISTS files)
   file(STRINGS "${SOURCE}/${file}" lines)

@@ -157,7 +157,7 @@ set_tests_properties("cli: study.py adds FLIP and Pareto fronts to the quick stu
   PROPERTIES LABELS gpu FIXTURES_REQUIRED study_quick SKIP_REGULAR_EXPRESSION "SKIP:")
 
 # glint view (docs/viewer.md): its script reader and pictures, then the window under Xvfb.
-glint_add_test_suite(NAME view LABELS unit SOURCES cli/view_test.cpp LIBS glint_cli_support)
+glint_add_test_suite(NAME view LABELS unit SOURCES cli/view_test.cpp LIBS glint_viewer)
 add_executable(glint_compare_png cli/compare_png.cpp)
 target_link_libraries(glint_compare_png PRIVATE glint_report)
 glint_target_defaults(glint_compare_png)
