@@ -1,208 +1,311 @@
-// glint bench: GPU time of one effect at one setting, from timestamps around each dispatch,
-// median of many runs, with the device and driver it ran on. Never asserts a speed.
-#include "cli_bench_sssr.h"
+// glint bench <effects|captures...>: per-pass GPU times, replayed through replay::Session with
+// readback off: warm-up runs, then --runs measured runs of the last frame, sustained; median,
+// min and max per pass, with the device, driver and subgroup size, as a table and (--json) as
+// JSON. A target is a registered effect's name (the effect alone on the scene its descriptor's
+// evaluation names for benchmarks, or on --scene), a frame .exr, a sequence folder or a scene
+// .toml (its declared effects, or --effects). Scenes are simulated in memory at --size without
+// references.
+#include "cli_bench.h"
+#include "cli_capture.h"
 #include "cli_commands.h"
 
-#include "glint/glint_depth_pyramid.h"
-#include "glint/glint_gbuffer.h"
-#include "glint/glint_shadow_denoiser.h"
+#include "capture/enum_names.h"
+#include "capture/sequence_io.h"
+#include "scene/scene_file.h"
+#include "scene/scene_simulate.h"
 
-#include <gpu/gpu_context.h>
-#include <gpu/gpu_effect_runner.h>
 #include <gpu/gpu_sustained.h>
-#include <gpu/gpu_transfer.h>
 
 #include <algorithm>
-#include <cmath>
-#include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <map>
+#include <optional>
 #include <stdexcept>
 
 namespace glint::cli {
 namespace {
 
-// Smooth depth with some structure: a ramp plus ripples, all inside (0, 1).
-std::vector<float> syntheticDepth(uint32_t width, uint32_t height) {
-    std::vector<float> depth(std::size_t{width} * height);
-    for (uint32_t y = 0; y < height; ++y)
-        for (uint32_t x = 0; x < width; ++x)
-            depth[std::size_t{y} * width + x] = 0.5f + 0.3f * std::sin(0.05f * static_cast<float>(x)) *
-                                                           std::cos(0.07f * static_cast<float>(y));
-    return depth;
+// Frames held in memory for the round-robin: re-reading EXRs between runs would make a long
+// benchmark slow without changing what the GPU does.
+constexpr std::size_t kMaxFrames = 32;
+
+PassStats statsOf(const std::string& pass, std::vector<double> microseconds) {
+    std::sort(microseconds.begin(), microseconds.end());
+    return {pass, microseconds[microseconds.size() / 2], microseconds.front(), microseconds.back()};
 }
 
-// An application-side image the effect reads.
-struct Input {
-    std::string name;
-    VkFormat format = VK_FORMAT_UNDEFINED;
-    uint32_t channels = 1;
-    std::vector<float> texels;
-};
-
-struct Setup {
-    EffectPlan plan;
-    std::vector<Input> inputs;
-};
-
-// 1-sample visibility: a soft-edged band of shadow with per-pixel noise, so the denoiser's
-// tiles are a realistic mix of lit, shadowed and penumbra.
-std::vector<float> noisyVisibility(uint32_t width, uint32_t height) {
-    std::vector<float> visibility(std::size_t{width} * height);
-    for (uint32_t y = 0; y < height; ++y)
-        for (uint32_t x = 0; x < width; ++x) {
-            const float u = static_cast<float>(x) / static_cast<float>(width);
-            const float lit = std::clamp((u - 0.3f) * 4.0f, 0.0f, 1.0f);
-            uint32_t hash = (x * 73856093u) ^ (y * 19349663u);
-            hash ^= hash >> 13;
-            hash *= 0x5bd1e995u;
-            hash ^= hash >> 15;
-            const float random = static_cast<float>(hash & 0xFFFFu) / 65535.0f;
-            visibility[std::size_t{y} * width + x] = random < lit ? 1.0f : 0.0f;
-        }
-    return visibility;
+std::string sizeText(std::uint32_t width, std::uint32_t height) {
+    return std::to_string(width) + "x" + std::to_string(height);
 }
 
-Setup setupEffect(const BenchOptions& options) {
-    Setup setup;
-    std::string error;
-    const Extent2D size{options.width, options.height};
-    if (options.effect == "depth_pyramid") {
-        DepthPyramidDesc desc;
-        desc.size = size;
-        desc.depth = options.reversed ? DepthConvention::Reversed : DepthConvention::Standard;
-        desc.channels =
-            options.farthest ? DepthPyramidChannels::ClosestAndFarthest : DepthPyramidChannels::Closest;
-        desc.levelCount = options.levels;
-        desc.copyLevel0 = !options.skipLevel0;
-        if (planDepthPyramid(desc, setup.plan, &error) != Result::Ok) throw std::invalid_argument(error);
-        setup.inputs.push_back({"depth", VK_FORMAT_R32_SFLOAT, 1, syntheticDepth(size.width, size.height)});
-    } else if (options.effect == "roughness") {
-        RoughnessExtractionDesc desc;
-        desc.size = size;
-        desc.materialChannel = 1;
-        if (planRoughnessExtraction(desc, setup.plan, &error) != Result::Ok)
-            throw std::invalid_argument(error);
-        Input material{"material", VK_FORMAT_R32G32B32A32_SFLOAT, 4, {}};
-        for (float value : syntheticDepth(size.width, size.height))
-            material.texels.insert(material.texels.end(), {value, value, value, 1.0f});
-        setup.inputs.push_back(std::move(material));
-    } else if (options.effect == "shadow_denoiser") {
-        ShadowDenoiserDesc desc;
-        desc.size = size;
-        desc.frameIndex = 1;
-        if (planShadowDenoiser(desc, setup.plan, &error) != Result::Ok) throw std::invalid_argument(error);
-        const std::vector<float> depth = syntheticDepth(size.width, size.height);
-        Input normals{"shadow_normals", VK_FORMAT_R32G32B32A32_SFLOAT, 4, {}};
-        for (std::size_t i = 0; i < depth.size(); ++i)
-            normals.texels.insert(normals.texels.end(), {0.0f, 1.0f, 0.0f, 0.0f});
-        setup.inputs.push_back(
-            {"shadow_visibility", VK_FORMAT_R32_SFLOAT, 1, noisyVisibility(size.width, size.height)});
-        setup.inputs.push_back({"shadow_depth", VK_FORMAT_R32_SFLOAT, 1, depth});
-        setup.inputs.push_back({"shadow_previous_depth", VK_FORMAT_R32_SFLOAT, 1, depth});
-        setup.inputs.push_back(std::move(normals));
-        setup.inputs.push_back(
-            {"shadow_motion", VK_FORMAT_R32G32_SFLOAT, 2, std::vector<float>(depth.size() * 2, 0.0f)});
-    } else {
-        throw std::invalid_argument("bench: unknown effect '" + options.effect +
-                                    "' (depth_pyramid, roughness, shadow_denoiser, sssr)");
+struct Target {
+    std::string path;
+    std::string kind;                 // "effect", "frame", "sequence" or "scene"
+    std::vector<std::string> effects; // an effect target's one effect; empty: --effects or declared
+    std::vector<capture::Frame> frames;
+    capture::Environment environment;
+    std::optional<scene::Scene> scene; // simulated once the device is up
+    std::string sceneFile;             // the geometry for effects that ray trace
+};
+
+// A scene file at the bench's size, without references (only the inputs are timed).
+scene::Scene benchScene(const std::string& path, const BenchOptions& options) {
+    scene::Scene scene = scene::loadScene(path);
+    scene.width = options.width;
+    scene.height = options.height;
+    scene.reference = {};
+    if (!options.depth.empty()) scene.camera.depth = *capture::parseDepthConvention(options.depth);
+    return scene;
+}
+
+// A registered effect alone, on the scene its descriptor names for benchmarks (or --scene),
+// rendered with the inputs of the scene effect the descriptor names.
+Target effectTarget(const EffectDescriptor& effect, const BenchOptions& options) {
+    if (!options.effects.empty())
+        throw std::invalid_argument(
+            "bench: --effects applies to captures and scene files, not to the effect '" + effect.name + "'");
+    if (!effect.evaluation.bench)
+        throw std::invalid_argument("bench: the effect '" + effect.name +
+                                    "' names no bench scene; time it on a capture or scene file with "
+                                    "--effects " +
+                                    effect.name);
+    const EffectBench& bench = *effect.evaluation.bench;
+    Target target;
+    target.path = options.scene.empty() ? bench.scene : options.scene;
+    if (!std::filesystem::exists(target.path))
+        throw std::invalid_argument("bench: " + target.path + ": no such scene file (the effect '" +
+                                    effect.name +
+                                    "' is timed on it; run from the repository root or "
+                                    "give --scene FILE)");
+    target.kind = "effect";
+    target.effects = {effect.name};
+    target.sceneFile = target.path;
+    target.scene = benchScene(target.path, options);
+    target.scene->effects = {scene::effectNamed(bench.simulateAs)};
+    return target;
+}
+
+// Everything that can be wrong with a target is found here, before a device is created.
+Target openTarget(const std::string& path, const BenchOptions& options) {
+    if (const EffectDescriptor* effect = findEffect(path)) return effectTarget(*effect, options);
+    Target target;
+    target.path = path;
+    target.effects = options.effects;
+    const std::filesystem::path file(path);
+    if (!std::filesystem::exists(file)) {
+        // A bare word is more likely a mistyped effect than a missing capture.
+        if (path.find_first_of("/.") == std::string::npos)
+            throw std::invalid_argument("bench: unknown effect '" + path + "' (" + effectNames() +
+                                        ") and no capture of that name");
+        throw std::invalid_argument("bench: " + path + ": no such file or folder");
     }
-    return setup;
+    if (file.extension() == ".toml") {
+        target.kind = "scene";
+        target.sceneFile = path;
+        target.scene = benchScene(path, options);
+        return target;
+    }
+    if (std::filesystem::is_directory(file) && !std::filesystem::exists(file / capture::kManifestName))
+        throw std::invalid_argument("bench: " + path + ": no " + capture::kManifestName +
+                                    " (bench times glint captures and scenes; a foreign capture replays "
+                                    "with glint run --map FILE)");
+    const CaptureSource source(path);
+    target.kind = source.frameCount() > 1 || std::filesystem::is_directory(file) ? "sequence" : "frame";
+    target.environment = source.environment();
+    target.sceneFile = source.sceneFile();
+    for (std::size_t index = 0; index < std::min(source.frameCount(), kMaxFrames); ++index)
+        target.frames.push_back(source.frame(index));
+    const capture::Frame& first = target.frames.front();
+    if (options.sizeGiven && (first.width != options.width || first.height != options.height))
+        throw std::invalid_argument("bench: " + path + " is " + sizeText(first.width, first.height) +
+                                    ", not the --resolution " + sizeText(options.width, options.height) +
+                                    " asked for (captures are timed at their own size)");
+    try {
+        replay::effectsToRun(first, target.effects);
+    } catch (const std::invalid_argument& error) {
+        throw std::invalid_argument("bench: " + path + ": " + error.what());
+    }
+    return target;
+}
+
+// The target's own scene for the effects that ray trace (options.geometry, from --geometry, wins).
+replay::SessionOptions withScene(replay::SessionOptions options, const Target& target) {
+    options.scene = target.sceneFile;
+    return options;
+}
+
+void printCounters(std::FILE* out, const std::vector<replay::Counter>& counters) {
+    for (const replay::Counter& counter : counters)
+        std::fprintf(out, "  %-34s %12.4g\n", counter.name.c_str(), counter.value);
 }
 
 } // namespace
 
+Measurement measureFrames(const gpu::Context& context, const std::vector<capture::Frame>& frames,
+                          const capture::Environment& environment, replay::SessionOptions options,
+                          std::uint32_t runs) {
+    if (frames.empty() || runs == 0) throw std::invalid_argument("nothing to time: no frames or no runs");
+    options.readback = false;
+    replay::Session session(context, frames.front(), environment, options);
+    Measurement measurement;
+    measurement.runs = runs;
+    measurement.warmup = std::min(runs, 10u);
+    std::vector<std::string> order;
+    std::map<std::string, std::vector<double>> times;
+    std::vector<double> totals;
+    // Every frame once (uploads, histories), then the warm-up and the measured runs repeat the
+    // last frame, submitted so that the GPU never waits for the host: the clocks follow the
+    // load, and a GPU left idle between frames runs them several times slower
+    // (docs/performance.md).
+    for (const capture::Frame& frame : frames) session.run(frame);
+    const std::uint32_t all = measurement.warmup + runs;
+    const replay::SustainedResult sustained =
+        session.repeatSustained(gpu::kSustainedFramesPerBuffer, gpu::sustainedSubmissions(all));
+    const std::vector<replay::FrameResult>& results = sustained.frames;
+    measurement.wallPerRunUs = 1000.0 * sustained.wallMilliseconds / static_cast<double>(results.size());
+    measurement.counters = results.back().counters;
+    for (std::uint32_t run = measurement.warmup; run < all; ++run) {
+        const replay::FrameResult& result = results[run];
+        if (result.timings.empty()) continue;
+        double total = 0.0;
+        for (const replay::PassTime& time : result.timings) {
+            if (!times.contains(time.pass)) order.push_back(time.pass);
+            times[time.pass].push_back(1000.0 * time.milliseconds);
+            total += 1000.0 * time.milliseconds;
+        }
+        totals.push_back(total);
+    }
+    for (const std::string& pass : order) measurement.passes.push_back(statsOf(pass, times[pass]));
+    if (!totals.empty()) measurement.total = statsOf("total", totals);
+    measurement.memory = gpu::deviceMemoryUse(context);
+    return measurement;
+}
+
+nlohmann::json deviceJson(const gpu::Context& context) {
+    return {{"name", context.info.name},
+            {"driver", context.info.driverName + " " + context.info.driverInfo},
+            {"subgroupSize", context.device.subgroupSize}};
+}
+
+nlohmann::json measurementJson(const Measurement& measurement) {
+    auto stats = [](const PassStats& s) {
+        return nlohmann::json{
+            {"pass", s.pass}, {"medianUs", s.medianUs}, {"minUs", s.minUs}, {"maxUs", s.maxUs}};
+    };
+    nlohmann::json json{{"warmup", measurement.warmup},
+                        {"runs", measurement.runs},
+                        {"passes", nlohmann::json::array()},
+                        {"total", stats(measurement.total)},
+                        {"wallPerRunUs", measurement.wallPerRunUs},
+                        {"counters", nlohmann::json::object()}};
+    if (measurement.memory.known)
+        json["deviceMemoryMiB"] = static_cast<double>(measurement.memory.usedBytes) / 1048576.0;
+    for (const PassStats& pass : measurement.passes) json["passes"].push_back(stats(pass));
+    for (const replay::Counter& counter : measurement.counters)
+        json["counters"][counter.name] = counter.value;
+    return json;
+}
+
+void printMeasurement(std::FILE* out, const Measurement& measurement) {
+    if (measurement.passes.empty()) {
+        std::fprintf(out, "  (no timestamps on this queue)\n");
+        return;
+    }
+    std::fprintf(out, "  %-34s %12s %12s %12s\n", "pass", "median us", "min us", "max us");
+    for (const PassStats& pass : measurement.passes)
+        std::fprintf(out, "  %-34s %12.2f %12.2f %12.2f\n", pass.pass.c_str(), pass.medianUs, pass.minUs,
+                     pass.maxUs);
+    const PassStats& total = measurement.total;
+    std::fprintf(out, "  %-34s %12.2f %12.2f %12.2f\n", "total (sum of a run's passes)", total.medianUs,
+                 total.minUs, total.maxUs);
+    std::fprintf(out, "  %-34s %12.2f\n", "wall time a run (sustained)", measurement.wallPerRunUs);
+    if (measurement.memory.known)
+        std::fprintf(out, "  device-local memory in use: %.1f MiB of a %.1f MiB budget\n",
+                     static_cast<double>(measurement.memory.usedBytes) / 1048576.0,
+                     static_cast<double>(measurement.memory.budgetBytes) / 1048576.0);
+}
+
 int runBench(const BenchOptions& options) {
     if (options.width == 0 || options.height == 0 || options.runs == 0)
         throw std::invalid_argument("bench: size and runs must be positive");
-    gpu::ContextOptions contextOptions;
-    contextOptions.validation = options.validate;
-    contextOptions.synchronizationValidation = options.validate;
-    gpu::Context context = gpu::createContext(contextOptions);
-    if (options.effect == "sssr") {
-        int code = kExitUsage;
-        try {
-            code = runBenchSssr(options, context);
-        } catch (...) {
-            gpu::destroyContext(context);
-            throw;
+    if (!options.depth.empty() && !capture::parseDepthConvention(options.depth))
+        throw std::invalid_argument("bench: --depth must be standard, reversed or reversed_infinite, not '" +
+                                    options.depth + "'");
+    replay::SessionOptions sessionOptions;
+    sessionOptions.settings = replay::parseSettings(options.settings);
+    setGeometry(sessionOptions, {}, options.geometry); // withScene keeps it: it wins over the targets' scenes
+    std::vector<Target> targets;
+    for (const std::string& path : options.targets) targets.push_back(openTarget(path, options));
+    if (!options.scene.empty() &&
+        std::none_of(targets.begin(), targets.end(), [](const Target& t) { return t.kind == "effect"; }))
+        throw std::invalid_argument(
+            "bench: --scene applies to an effect named, not to captures and scene files");
+    // With the JSON on stdout, the table goes to stderr so that stdout parses.
+    std::FILE* out = options.json == "-" ? stderr : stdout;
+
+    return withContext(options.validate, [&](const gpu::Context& context) {
+        nlohmann::json report{{"device", deviceJson(context)},
+                              {"settings", options.settings},
+                              {"captures", nlohmann::json::array()}};
+        if (!options.preset.name.empty()) report["preset"] = options.preset.name;
+        std::fprintf(out, "device: %s, driver %s %s, subgroup %u\n", context.info.name.c_str(),
+                     context.info.driverName.c_str(), context.info.driverInfo.c_str(),
+                     context.device.subgroupSize);
+        if (options.preset.name.empty())
+            for (const std::string& setting : options.settings)
+                std::fprintf(out, "  set %s\n", setting.c_str());
+        for (Target& target : targets) {
+            if (target.scene) {
+                target.scene->frameCount =
+                    std::min<std::uint32_t>(target.scene->frameCount, static_cast<std::uint32_t>(kMaxFrames));
+                scene::Simulation simulation = scene::simulate(context, *target.scene);
+                target.frames = std::move(simulation.frames);
+                target.environment = simulation.environment.value_or(blackEnvironment());
+            }
+            const capture::Frame& first = target.frames.front();
+            const std::vector<std::string> effects = replay::effectsToRun(first, target.effects);
+            // --preset's bundles follow each target's own effects.
+            replay::SessionOptions targetOptions = withScene(sessionOptions, target);
+            targetOptions.effects = target.effects;
+            const std::vector<std::string> settings =
+                presetThenSettings(options.preset, effects, options.settings);
+            targetOptions.settings = replay::parseSettings(settings);
+            if (!options.preset.name.empty())
+                for (const std::string& setting : settings)
+                    std::fprintf(out, "  %s: set %s\n", target.path.c_str(), setting.c_str());
+            const Measurement measurement =
+                measureFrames(context, target.frames, target.environment, targetOptions, options.runs);
+            if (target.kind == "effect")
+                std::fprintf(out, "effect %s on %s: %ux%u, %zu frame(s), effects:", effects.front().c_str(),
+                             target.path.c_str(), first.width, first.height, target.frames.size());
+            else
+                std::fprintf(out, "%s %s: %ux%u, %zu frame(s), effects:", target.kind.c_str(),
+                             target.path.c_str(), first.width, first.height, target.frames.size());
+            for (const std::string& effect : effects) std::fprintf(out, " %s", effect.c_str());
+            std::fprintf(out, "; %u warm-up + %u measured runs\n", measurement.warmup, measurement.runs);
+            printMeasurement(out, measurement);
+            printCounters(out, measurement.counters);
+            nlohmann::json entry = measurementJson(measurement);
+            entry["capture"] = target.path;
+            entry["kind"] = target.kind;
+            entry["width"] = first.width;
+            entry["height"] = first.height;
+            entry["frames"] = target.frames.size();
+            entry["effects"] = effects;
+            entry["settings"] = settings;
+            report["captures"].push_back(entry);
         }
-        gpu::destroyContext(context);
-        const uint32_t errors = context.validation ? context.validation->errors.load() : 0u;
-        if (errors > 0) std::fprintf(stderr, "glint: %u validation errors\n", errors);
-        return errors > 0 ? kExitCheckFailed : code;
-    }
-    Setup setup = setupEffect(options);
-
-    std::vector<vk::Image> inputs;
-    std::map<std::string, const vk::Image*> external;
-    inputs.reserve(setup.inputs.size());
-    for (const Input& input : setup.inputs) {
-        inputs.push_back(vk::createImage2D(context.device, options.width, options.height, input.format));
-        gpu::uploadImage(context, inputs.back(), input.texels, input.channels);
-        external[input.name] = &inputs.back();
-    }
-    std::vector<std::string> passes;
-    std::vector<std::vector<double>> times; // times[run][pass]
-    {
-        // Owned resources start at zero: histories hold finite values when the timed frames
-        // do not reset them.
-        gpu::EffectRunner runner(context, setup.plan);
-        vk::ResourceTable table;
-        table.images = external;
-        // Warm-up runs settle pipeline creation; the measured runs are sustained
-        // (gpu::timeSustained) so that the clocks follow the load.
-        for (uint32_t run = 0; run < std::min(options.runs, 10u); ++run) runner.run(setup.plan, table);
-        passes = gpu::passNames(setup.plan);
-        if (context.device.timestamps) {
-            runner.beginFrames();
-            times = gpu::timeSustained(context, gpu::kSustainedFramesPerBuffer,
-                                       gpu::sustainedSubmissions(options.runs),
-                                       static_cast<uint32_t>(2 * passes.size()),
-                                       [&](VkCommandBuffer cmd, gpu::TimestampPool& timestamps, uint32_t) {
-                                           runner.record(cmd, setup.plan, table, &timestamps);
-                                       })
-                        .frames;
-            times.resize(options.runs);
+        if (options.json == "-") {
+            std::printf("%s\n", report.dump(2).c_str());
+        } else if (!options.json.empty()) {
+            std::ofstream file(options.json);
+            if (!(file << report.dump(2) << "\n"))
+                throw std::runtime_error("bench: " + options.json + ": cannot write");
+            std::fprintf(out, "wrote %s\n", options.json.c_str());
         }
-    }
-    const auto median = [&](std::size_t pass) {
-        std::vector<double> values;
-        for (const auto& run : times) values.push_back(run.at(pass));
-        std::sort(values.begin(), values.end());
-        return values.empty() ? -1.0 : values[values.size() / 2];
-    };
-
-    std::printf("device: %s, driver %s %s\n", context.info.name.c_str(), context.info.driverName.c_str(),
-                context.info.driverInfo.c_str());
-    std::printf("effect %s at %ux%u, %u runs%s%s\n", options.effect.c_str(), options.width, options.height,
-                options.runs, options.reversed ? ", reversed depth" : "",
-                options.farthest ? ", closest+farthest" : "");
-    if (options.effect == "depth_pyramid")
-        std::printf("levels %s%s\n", options.levels ? std::to_string(options.levels).c_str() : "full chain",
-                    options.skipLevel0 ? ", level 0 not copied" : "");
-    for (std::size_t pass = 0; pass < passes.size(); ++pass) {
-        std::vector<double> values;
-        for (const auto& run : times) values.push_back(run.at(pass));
-        std::sort(values.begin(), values.end());
-        if (values.empty()) {
-            std::printf("  %-20s no timestamps on this queue\n", passes[pass].c_str());
-            continue;
-        }
-        std::printf("  %-20s median %9.2f us   min %9.2f us   p90 %9.2f us\n", passes[pass].c_str(),
-                    1000.0 * median(pass), 1000.0 * values.front(), 1000.0 * values[values.size() * 9 / 10]);
-    }
-
-    if (passes.size() > 1 && !times.empty()) {
-        double total = 0.0;
-        for (std::size_t pass = 0; pass < passes.size(); ++pass) total += median(pass);
-        std::printf("  %-20s %9.2f us (sum of the medians)\n", "all passes", 1000.0 * total);
-    }
-
-    for (vk::Image& input : inputs) vk::destroyImage(context.device, input);
-    gpu::destroyContext(context);
-    const uint32_t errors = context.validation ? context.validation->errors.load() : 0u;
-    if (errors > 0) std::fprintf(stderr, "glint: %u validation errors\n", errors);
-    return errors > 0 ? kExitCheckFailed : kExitOk;
+        return kExitOk;
+    });
 }
 
 } // namespace glint::cli

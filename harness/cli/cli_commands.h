@@ -17,21 +17,18 @@ enum ExitCode : int {
     kExitUsage = 2,       // bad arguments or unreadable/malformed input
 };
 
+// glint bench (cli_bench.cpp).
 struct BenchOptions {
-    std::string effect;
     uint32_t width = 1920, height = 1080;
     uint32_t runs = 200;
-    uint32_t levels = 0; // depth pyramid: 0 = full chain
-    bool reversed = false;
-    bool farthest = false;
-    bool skipLevel0 = false;           // depth pyramid: leave level 0 unwritten
-    std::string scene;                 // sssr: the scene to simulate (default the glossy room)
-    std::vector<std::string> settings; // sssr and captures: "name=value" desc overrides
+    std::vector<std::string> settings; // "name=value"
     PresetChoice preset;               // --preset, --preset-file: applied before `settings`
     bool validate = false;
-    // Captures (cli_bench_capture.cpp): frame .exr files, sequence folders or scene .toml files
-    // named instead of a synthetic effect.
-    std::vector<std::string> captures;
+    // What is timed: registered effects' names (each alone on its descriptor's bench scene, or
+    // on `scene`), frame .exr files, sequence folders and scene .toml files.
+    std::vector<std::string> targets;
+    std::string scene;                // --scene FILE: the scene an effect named is timed on
+    std::string depth;                // --depth: the depth convention simulated scenes render
     std::vector<std::string> effects; // --effects; empty: the capture's declared effects
     std::string json;                 // --json FILE, "-" for stdout (the table then goes to stderr)
     bool sizeGiven = false;           // --size/--resolution named: captures must match it
@@ -84,9 +81,7 @@ struct StudyOptions {
     bool validate = false;
 };
 
-// True for the names `glint bench` times on synthetic inputs (depth_pyramid, roughness, ...).
-bool isSyntheticBenchEffect(const std::string& name);
-int runBenchCaptures(const BenchOptions& options);
+int runBench(const BenchOptions& options);
 int runStudy(const StudyOptions& options);
 
 // glint report: an HTML page from folders written by glint run.
@@ -124,7 +119,6 @@ int runRun(const ReplayOptions& options);
 int runDump(const ReplayOptions& options);
 int runCheck(const ReplayOptions& options);
 int runSimulate(const SimulateOptions& options);
-int runBench(const BenchOptions& options);
 // glint info: a glint capture, or with `mapPath` the frames of a foreign one as read through
 // that channel map.
 int runInfo(const std::string& path, bool loadPixels, const std::string& mapPath = {});

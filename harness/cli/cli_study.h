@@ -2,7 +2,7 @@
 // (cli_study_scaling.cpp) share: the resolved options, simulated scenes and table output.
 #pragma once
 
-#include "cli_bench_capture.h"
+#include "cli_bench.h"
 #include "cli_commands.h"
 #include "cli_presets.h"
 

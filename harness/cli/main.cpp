@@ -48,38 +48,35 @@ int main(int argc, char** argv) {
     glint::cli::BenchOptions bench;
     std::string benchSize = "1920x1080";
     CLI::App* benchCommand =
-        app.add_subcommand("bench", "GPU time of one effect (median of timestamped runs)");
-    // One synthetic effect name, or one or more captures (cli_bench_capture.cpp).
-    std::vector<std::string> benchTargets;
+        app.add_subcommand("bench", "Per-pass GPU times of effects (median of sustained timestamped runs)");
     benchCommand
-        ->add_option("effect", benchTargets,
-                     "depth_pyramid | roughness | shadow_denoiser | sssr, or captures: frame .exr, "
-                     "sequence folders, scene .toml")
+        ->add_option("targets", bench.targets,
+                     "effects (" + glint::cli::effectNames() +
+                         ": each alone on its bench scene), or captures: frame .exr, sequence folders, "
+                         "scene .toml")
         ->required();
     CLI::Option* benchSizeOption =
         benchCommand->add_option("--size,--resolution", benchSize, "render size WxH")->capture_default_str();
     benchCommand->add_option("--runs", bench.runs, "measured runs")->capture_default_str();
-    benchCommand->add_option("--levels", bench.levels, "depth pyramid levels (0 = full chain)");
-    benchCommand->add_flag("--reversed", bench.reversed, "reversed depth (closest = max)");
-    benchCommand->add_flag("--farthest", bench.farthest, "closest and farthest channels");
-    benchCommand->add_flag("--skip-level0", bench.skipLevel0,
-                           "depth pyramid: do not copy the input into level 0");
     benchCommand->add_option("--scene", bench.scene,
-                             "sssr: scene file to simulate (default: the glossy room)");
+                             "an effect named: the scene file to time it on (default: its bench scene, "
+                             "relative to the repository root)");
+    benchCommand->add_option("--depth", bench.depth,
+                             "standard | reversed | reversed_infinite: the depth convention simulated "
+                             "scenes render (default: the scene file's)");
     benchCommand->add_option("--set", bench.settings, "a setting, name=value (repeatable; glint settings)");
     presetOptions(benchCommand, bench.preset);
     benchCommand->footer(glint::cli::settingsHelp());
     benchCommand
         ->add_option("--effects", bench.effects,
-                     "captures: " + glint::cli::effectNames() + " (default: declared)")
+                     "captures and scene files: " + glint::cli::effectNames() + " (default: declared)")
         ->delimiter(',');
-    benchCommand->add_option("--json", bench.json,
-                             "captures: also write the results as JSON to FILE ('-': stdout)");
+    benchCommand->add_option("--json", bench.json, "also write the results as JSON to FILE ('-': stdout)");
     benchCommand->add_option(
         "--geometry", bench.geometry,
-        "captures: a glTF (.gltf/.glb, or anything assimp reads) of the captures' scene in "
-        "their world space, for the effects that ray trace (hybrid); wins over a "
-        "manifest's or scene file's own scene (docs/replay.md)");
+        "a glTF (.gltf/.glb, or anything assimp reads) of the targets' scene in their world "
+        "space, for the effects that ray trace (hybrid); wins over a manifest's or scene "
+        "file's own scene (docs/replay.md)");
 
     glint::cli::StudyOptions study;
     std::string studySize;
@@ -246,24 +243,6 @@ int main(int argc, char** argv) {
                 throw std::invalid_argument("bench: --size must read WxH, e.g. 1920x1080");
             bench.validate = validate;
             bench.sizeGiven = benchSizeOption->count() > 0;
-            if (benchTargets.size() == 1 && glint::cli::isSyntheticBenchEffect(benchTargets.front()))
-                bench.effect = benchTargets.front();
-            else
-                bench.captures = benchTargets;
-            if (!bench.captures.empty()) return glint::cli::runBenchCaptures(bench);
-            if (!bench.preset.name.empty() && bench.effect != "sssr")
-                throw std::invalid_argument(
-                    "bench: --preset applies to sssr, captures and scene files, not to "
-                    "the synthetic effect '" +
-                    bench.effect + "'");
-            if (!bench.settings.empty() && bench.effect != "sssr")
-                throw std::invalid_argument("bench: --set applies to sssr, captures and scene files, not to "
-                                            "the synthetic effect '" +
-                                            bench.effect + "' (its options are bench's own flags)");
-            if (!bench.geometry.empty())
-                throw std::invalid_argument("bench: --geometry is for captures and scene files, not the "
-                                            "synthetic effect '" +
-                                            bench.effect + "'");
             return glint::cli::runBench(bench);
         }
         if (*studyCommand) {

@@ -323,8 +323,8 @@ void Session::readImages(const Running& running, const capture::Frame& frame,
         const vk::Image* image = input.kind == InputKind::Environment ? nullptr : inputs_->find(input.kind);
         // Named by what it holds: the material input carries roughness (channel 0) alone.
         const std::string imageName =
-            name + "/input_" +
-            (input.kind == InputKind::Material ? std::string("roughness") : input.resource);
+            name + "/" +
+            (input.kind == InputKind::Material ? std::string("input_roughness") : "input_" + input.resource);
         if (!image || !shown(imageName)) continue;
         std::vector<float> texels = gpu::readbackImage(context_, *image);
         const auto channels = static_cast<std::uint32_t>(texels.size() / (std::size_t{width_} * height_));

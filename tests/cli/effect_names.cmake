@@ -1,22 +1,16 @@
-# Script mode: no code in harness/replay or harness/cli compares against an effect's name. How an
+# Script mode: no code in harness/replay, harness/cli or harness/viewer compares against an effect's name. How an
 # effect is scored, checked, previewed, reported and studied is its descriptor's evaluation
 # (host/include/glint/glint_effect.h); a branch on a name would leave the next effect silently
 # unscored. Fails naming each file and line that holds an effect name as a string literal
 # ("shadows") or one beginning "<effect>/" on a line that compares ("==", "!=", rfind,
-# starts_with, compare), outside comments, unless ALLOWED lists it.
+# starts_with, compare), outside comments.
 #   -DSOURCE=<repository root>
 cmake_minimum_required(VERSION 3.25)
 set(names reflections shadows hybrid depth_pyramid roughness sssr shadow_denoiser)
-# What remains, file:name, each to go (issue 40, item 2: one bench road).
-set(ALLOWED
-  "harness/cli/cli_bench.cpp:depth_pyramid" "harness/cli/cli_bench.cpp:roughness"
-  "harness/cli/cli_bench.cpp:shadow_denoiser" "harness/cli/cli_bench.cpp:sssr"
-  "harness/cli/cli_bench_capture.cpp:depth_pyramid" "harness/cli/cli_bench_capture.cpp:roughness"
-  "harness/cli/cli_bench_capture.cpp:shadow_denoiser" "harness/cli/cli_bench_capture.cpp:sssr"
-  "harness/cli/cli_bench_sssr.cpp:reflections" "harness/cli/main.cpp:sssr")
 set(found "")
 file(GLOB_RECURSE files RELATIVE "${SOURCE}" "${SOURCE}/harness/replay/*.cpp" "${SOURCE}/harness/replay/*.h"
-     "${SOURCE}/harness/cli/*.cpp" "${SOURCE}/harness/cli/*.h")
+     "${SOURCE}/harness/cli/*.cpp" "${SOURCE}/harness/cli/*.h" "${SOURCE}/harness/viewer/*.cpp"
+     "${SOURCE}/harness/viewer/*.h")
 list(JOIN names "|" alternatives)
 foreach(file IN LISTS files)
   file(STRINGS "${SOURCE}/${file}" lines)
@@ -34,9 +28,7 @@ foreach(file IN LISTS files)
     endif()
     foreach(hit IN LISTS hits)
       string(REGEX REPLACE "^\"([a-z_]+).*$" "\\1" name "${hit}")
-      if(NOT "${file}:${name}" IN_LIST ALLOWED)
-        string(APPEND found "\n  ${file}:${number}: \"${name}\": ${line}")
-      endif()
+      string(APPEND found "\n  ${file}:${number}: \"${name}\": ${line}")
     endforeach()
   endforeach()
 endforeach()

@@ -20,9 +20,8 @@ glint_cli_test(NAME "an unknown preset prints the known ones in one line and exi
 glint_cli_test(NAME "a preset file without a preset is a usage error" LABELS unit EXIT 2
   STDERR_ONE_LINE "^glint: --preset-file p.toml needs --preset NAME$"
   COMMAND dump "${GLINT_CLI_SAMPLE_DIR}/sample" --preset-file p.toml --out "${GLINT_PRESET_OUT}/dump_bad")
-glint_cli_test(NAME "a preset on a synthetic bench that takes no settings is a usage error" LABELS unit EXIT 2
-  STDERR_ONE_LINE "^glint: bench: --preset applies to sssr, captures and scene files, not to the synthetic effect 'depth_pyramid'$"
-  COMMAND bench depth_pyramid --size 16x16 --runs 1 --preset low)
-glint_cli_test(NAME "a setting on a synthetic bench that takes no settings is a usage error" LABELS unit EXIT 2
-  STDERR_ONE_LINE "^glint: bench: --set applies to sssr, captures and scene files, not to the synthetic effect 'shadow_denoiser' \\(its options are bench's own flags\\)$"
-  COMMAND bench shadow_denoiser --size 16x16 --runs 1 --set denoise=true)
+# An effect named alone gets its own preset bundle, as a capture's effects do.
+glint_cli_test(NAME "bench of an effect applies the preset's bundle for that effect" LABELS gpu EXIT 0
+  STDOUT "\"settings\": *\\[ *\"shadows.filter=false\" *\\]"
+  COMMAND --validate bench shadows --scene "${PROJECT_SOURCE_DIR}/harness/scenes/courtyard_penumbra.toml"
+          --resolution 32x18 --runs 2 --preset low --json -)

@@ -160,6 +160,13 @@ struct EffectStudy {
     std::string tracedCounter, answeredCounter;
 };
 
+// What `glint bench <effect>` times: the effect alone on a bundled scene, simulated at the
+// bench's size without references, with the inputs of the scene effect `simulateAs` rendered.
+struct EffectBench {
+    std::string scene;      // scene file, relative to the repository root
+    std::string simulateAs; // "reflections", "shadows" or "hybrid" (a scene file's `effects`)
+};
+
 struct EffectEvaluation {
     std::vector<ScoredOutput> scored;      // empty: the effect is not scored
     std::vector<OutputPreview> previews;   // outputs not listed: Preview::Colour
@@ -168,6 +175,7 @@ struct EffectEvaluation {
     // "reference", "error" and inputs shown as outputs).
     std::vector<std::string> reportImages;
     std::optional<EffectStudy> study; // none: glint study does not sweep it
+    std::optional<EffectBench> bench; // none: glint bench times it only on captures
 };
 
 struct EffectDescriptor {

@@ -125,6 +125,7 @@ EffectEvaluation hybridEvaluation() {
     study.tracedCounter = "ray_traced_rays";
     study.answeredCounter = "screen_space_answers";
     evaluation.study = std::move(study);
+    evaluation.bench = EffectBench{"harness/scenes/glossy_room.toml", "hybrid"};
     return evaluation;
 }
 

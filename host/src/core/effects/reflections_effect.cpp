@@ -255,6 +255,7 @@ EffectEvaluation evaluation() {
     study.scalingInput = InputKind::Material;
     study.tracedCounter = "traced_fraction";
     evaluation.study = std::move(study);
+    evaluation.bench = EffectBench{"harness/scenes/glossy_room.toml", "reflections"};
     return evaluation;
 }
 

@@ -25,8 +25,8 @@ Result planRoughness(const FrameInfo& frame, const SettingValues& settings, Effe
     return Result::Ok;
 }
 
-// Not scored (no capture holds a reference roughness): checked, shown in a report and timed by
-// glint study --effect roughness at full and half precision.
+// Not scored (no capture holds a reference roughness): checked, shown in a report, timed by
+// glint study --effect roughness at full and half precision and by glint bench roughness.
 EffectEvaluation roughnessEvaluation() {
     EffectEvaluation evaluation;
     // One multiply per pixel: exact in R32F; R16F output rounds to its 11-bit mantissa.
@@ -37,6 +37,7 @@ EffectEvaluation roughnessEvaluation() {
     study.scenes = {"harness/scenes/glossy_room.toml"};
     study.simulateAs = "reflections"; // renders the material layer it reads
     evaluation.study = std::move(study);
+    evaluation.bench = EffectBench{"harness/scenes/glossy_room.toml", "reflections"};
     return evaluation;
 }
 

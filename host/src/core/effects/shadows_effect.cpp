@@ -189,6 +189,7 @@ EffectEvaluation shadowsEvaluation() {
     study.scalingScene = "harness/scenes/courtyard_penumbra.toml";
     study.scalingInput = InputKind::ShadowVisibility;
     evaluation.study = std::move(study);
+    evaluation.bench = EffectBench{"harness/scenes/courtyard_penumbra.toml", "shadows"};
     return evaluation;
 }
 
