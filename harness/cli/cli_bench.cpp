@@ -16,7 +16,10 @@
 
 #include <gpu/gpu_sustained.h>
 
+#include <CLI/CLI.hpp>
+
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -226,7 +229,43 @@ void printMeasurement(std::FILE* out, const Measurement& measurement) {
                      static_cast<double>(measurement.memory.budgetBytes) / 1048576.0);
 }
 
-int runBench(const BenchOptions& options) {
+void addBenchOptions(CLI::App& command, BenchOptions& options) {
+    command
+        .add_option("targets", options.targets,
+                    "effects (" + effectNames() +
+                        ": each alone on its bench scene), or captures: frame .exr, sequence folders, "
+                        "scene .toml")
+        ->required();
+    command.add_option("--size,--resolution", options.size, "render size WxH")
+        ->capture_default_str()
+        ->each([&options](const std::string&) { options.sizeGiven = true; });
+    command.add_option("--runs", options.runs, "measured runs")->capture_default_str();
+    command.add_option("--scene", options.scene,
+                       "an effect named: the scene file to time it on (default: its bench scene, "
+                       "relative to the repository root)");
+    command.add_option("--depth", options.depth,
+                       "standard | reversed | reversed_infinite: the depth convention simulated "
+                       "scenes render (default: the scene file's)");
+    command.add_option("--set", options.settings, "a setting, name=value (repeatable; glint settings)");
+    addPresetOptions(command, options.preset);
+    command.footer(settingsHelp());
+    command
+        .add_option("--effects", options.effects,
+                    "captures and scene files: " + effectNames() + " (default: declared)")
+        ->delimiter(',');
+    command.add_option("--json", options.json, "also write the results as JSON to FILE ('-': stdout)");
+    command.add_option("--geometry", options.geometry,
+                       "a glTF (.gltf/.glb, or anything assimp reads) of the targets' scene in their world "
+                       "space, for the effects that ray trace (hybrid); wins over a manifest's or scene "
+                       "file's own scene (docs/replay.md)");
+}
+
+int runBench(BenchOptions options, bool validate) {
+    // An unknown preset or an unreadable preset file fails before any capture is read.
+    checkPresetChoice(options.preset);
+    if (std::sscanf(options.size.c_str(), "%ux%u", &options.width, &options.height) != 2)
+        throw std::invalid_argument("bench: --size must read WxH, e.g. 1920x1080");
+    options.validate = validate;
     if (options.width == 0 || options.height == 0 || options.runs == 0)
         throw std::invalid_argument("bench: size and runs must be positive");
     if (!options.depth.empty() && !capture::parseDepthConvention(options.depth))

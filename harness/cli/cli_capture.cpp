@@ -7,6 +7,8 @@
 #include "capture/sequence_io.h"
 #include "scene/scene_file.h"
 
+#include <CLI/CLI.hpp>
+
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
@@ -219,6 +221,23 @@ std::string frameFolderName(std::size_t number) {
     char name[32];
     std::snprintf(name, sizeof name, "frame_%04zu", number);
     return name;
+}
+
+void addReplayOptions(CLI::App& command, ReplayOptions& options) {
+    command
+        .add_option("capture", options.capture,
+                    "frame .exr, sequence folder, or with --map one foreign EXR or a folder of them "
+                    "(one path)")
+        ->required();
+    command.add_option("--map", options.mapPath, "channel map of a foreign capture (docs/replay.md)");
+    command.add_option("--geometry", options.geometry,
+                       "a glTF (.gltf/.glb, or anything assimp reads) of the capture's scene in its world "
+                       "space, for the effects that ray trace (hybrid): its meshes with their materials "
+                       "and its punctual lights; wins over the scene a manifest records (docs/replay.md)");
+    command.add_option("--effects", options.effects, effectNames() + " (default: declared)")->delimiter(',');
+    command.add_option("--set", options.settings, "a setting, name=value (repeatable; glint settings)");
+    addPresetOptions(command, options.preset);
+    command.footer(settingsHelp());
 }
 
 void requireManifest(const std::filesystem::path& folder) {

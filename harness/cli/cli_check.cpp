@@ -12,6 +12,7 @@
 
 #include "report/report_metrics.h"
 
+#include <CLI/CLI.hpp>
 #include <glint/glint_effect.h>
 
 #include <cstdio>
@@ -59,7 +60,18 @@ std::map<std::string, Tolerance> parseTolerances(const std::vector<std::string>&
 
 } // namespace
 
-int runCheck(const ReplayOptions& options) {
+void addCheckOptions(CLI::App& command, ReplayOptions& options) {
+    addReplayOptions(command, options);
+    command.add_option("--expected", options.expectedDir, "folder laid out as glint dump writes")->required();
+    command.add_option("--pass", options.pass, "pass name, effect/pass or all")->capture_default_str();
+    command.add_option("--frame", options.frames, "the frame to compare (default: the last)");
+    command.add_option("--tolerance", options.tolerances, "effect/pass=abs,rel[,fraction] (repeatable)");
+}
+
+int runCheck(ReplayOptions options, bool validate) {
+    // An unknown preset or an unreadable preset file fails before any capture is read.
+    checkPresetChoice(options.preset);
+    options.validate = validate;
     if (options.expectedDir.empty()) throw std::invalid_argument("check: --expected DIR is required");
     const std::filesystem::path expectedDir(options.expectedDir);
     if (!std::filesystem::is_directory(expectedDir))

@@ -1,6 +1,8 @@
 // glint devices: every Vulkan device the loader sees, and which one GLINT_DEVICE selects.
 #include "cli_commands.h"
 
+#include <CLI/CLI.hpp>
+
 #include <gpu/gpu_context.h>
 #include <gpu/gpu_devices.h>
 
@@ -33,7 +35,9 @@ std::string subgroupOpsText(VkSubgroupFeatureFlags ops) {
 
 } // namespace
 
-int runDevices(bool validate) {
+void addDevicesOptions(CLI::App&, DevicesOptions&) {}
+
+int runDevices(DevicesOptions, bool validate) {
     // Creating the context both opens the instance and applies GLINT_DEVICE, so the listing
     // marks exactly the device every other verb would run on.
     gpu::ContextOptions options;

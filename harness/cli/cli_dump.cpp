@@ -6,6 +6,7 @@
 #include "cli_commands.h"
 #include "cli_images.h"
 
+#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
@@ -13,7 +14,17 @@
 
 namespace glint::cli {
 
-int runDump(const ReplayOptions& options) {
+void addDumpOptions(CLI::App& command, ReplayOptions& options) {
+    addReplayOptions(command, options);
+    command.add_option("--out", options.outDir, "output folder")->required();
+    command.add_option("--pass", options.pass, "pass name, effect/pass, input or all")->capture_default_str();
+    command.add_option("--frame", options.frames, "the frame to dump (default: the last)");
+}
+
+int runDump(ReplayOptions options, bool validate) {
+    // An unknown preset or an unreadable preset file fails before any capture is read.
+    checkPresetChoice(options.preset);
+    options.validate = validate;
     if (options.outDir.empty()) throw std::invalid_argument("dump: --out DIR is required");
     const CaptureSource source(options.capture, options.mapPath);
     replay::SessionOptions sessionOptions;

@@ -4,6 +4,8 @@
 #include "cli_capture.h"
 #include "cli_commands.h"
 
+#include <CLI/CLI.hpp>
+
 #include <capture/describe.h>
 #include <capture/frame_io.h>
 #include <capture/sequence_io.h>
@@ -41,7 +43,20 @@ int printMapped(const std::string& path, const std::string& mapPath, bool loadPi
 
 } // namespace
 
-int runInfo(const std::string& path, bool loadPixels, const std::string& mapPath) {
+void addInfoOptions(CLI::App& command, InfoOptions& options) {
+    command
+        .add_option("capture", options.path,
+                    "frame file, sequence folder, or with --map one foreign EXR or a folder of them")
+        ->required();
+    command.add_option("--map", options.mapPath, "channel map of a foreign capture (docs/replay.md)");
+    command.add_flag("--header-only", options.headerOnly,
+                     "read headers only; skip pixels and non-finite counts");
+}
+
+int runInfo(InfoOptions options, bool) {
+    const std::string& path = options.path;
+    const std::string& mapPath = options.mapPath;
+    const bool loadPixels = !options.headerOnly;
     if (!mapPath.empty()) return printMapped(path, mapPath, loadPixels);
     const std::filesystem::path target(path);
     if (!std::filesystem::is_directory(target) && target.filename() != capture::kManifestName) {

@@ -13,6 +13,7 @@
 #include "replay/replay_error.h"
 #include "report/report_html.h"
 
+#include <CLI/CLI.hpp>
 #include <glint/glint_effect.h>
 #include <nlohmann/json.hpp>
 
@@ -373,7 +374,16 @@ report::Section runSection(const std::filesystem::path& dir, const nlohmann::jso
 
 } // namespace
 
-int runReport(const ReportOptions& options) {
+void addReportOptions(CLI::App& command, ReportOptions& options) {
+    command.add_option("runs", options.runs, "folders written by glint run")->required();
+    command.add_option("--out", options.outPath, "the HTML file")->required();
+    command.add_option("--title", options.title, "page title")->capture_default_str();
+    command.add_option("--anchors", options.anchorsPath,
+                       "anchor points measured elsewhere (docs/anchors/*.json), listed with their "
+                       "conditions beside the plot of the scene they were measured on");
+}
+
+int runReport(ReportOptions options, bool) {
     if (options.runs.empty())
         throw std::invalid_argument("report: name at least one folder written by glint run");
     const nlohmann::json anchors = readAnchors(options.anchorsPath);

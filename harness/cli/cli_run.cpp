@@ -11,6 +11,7 @@
 #include "replay/replay_error.h"
 #include "replay/replay_session.h"
 
+#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -94,7 +95,20 @@ double median(std::vector<double> values) {
 
 } // namespace
 
-int runRun(const ReplayOptions& options) {
+void addRunOptions(CLI::App& command, ReplayOptions& options) {
+    addReplayOptions(command, options);
+    command.add_option("--out", options.outDir, "output folder")->required();
+    command.add_option("--frames", options.frames, "frames a..b (inclusive), a.. or a");
+    command.add_flag("--json", options.json, "also print the summary as JSON");
+    command.add_option("--second-reference", options.secondReference,
+                       "the same capture simulated with another --seed: its references against the "
+                       "capture's give each frame's reference noise floor (docs/replay.md)");
+}
+
+int runRun(ReplayOptions options, bool validate) {
+    // An unknown preset or an unreadable preset file fails before any capture is read.
+    checkPresetChoice(options.preset);
+    options.validate = validate;
     if (options.outDir.empty()) throw std::invalid_argument("run: --out DIR is required");
     const CaptureSource source(options.capture, options.mapPath);
     const FrameRange range = parseFrames(options.frames, source.frameCount());

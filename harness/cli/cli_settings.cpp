@@ -4,6 +4,8 @@
 
 #include "glint/glint_effect.h"
 
+#include <CLI/CLI.hpp>
+
 #include <cstdio>
 #include <stdexcept>
 
@@ -26,7 +28,22 @@ std::string settingsSection(const EffectDescriptor& effect) {
     return "## " + effect.name + "\n\n" + effect.help + ".\n\n" + settingsMarkdown(table);
 }
 
-int runSettings(const std::string& effectName, bool markdown) {
+void addPresetOptions(CLI::App& command, PresetChoice& preset) {
+    command.add_option("--preset", preset.name,
+                       "low | medium | high | ultra: settings per effect, applied before --set "
+                       "(docs/accuracy-vs-time.md, Presets)");
+    command.add_option("--preset-file", preset.file,
+                       "read --preset from this file (presets.toml written by glint study)");
+}
+
+void addSettingsOptions(CLI::App& command, SettingsOptions& options) {
+    command.add_option("effect", options.effect, effectNames());
+    command.add_flag("--markdown", options.markdown, "as the Markdown tables of docs/settings.md");
+}
+
+int runSettings(SettingsOptions options, bool) {
+    const std::string& effectName = options.effect;
+    const bool markdown = options.markdown;
     for (const EffectDescriptor* effect : effectRegistry()) {
         if (!effectName.empty() && effect->name != effectName) continue;
         std::vector<const SettingDesc*> table;

@@ -11,15 +11,32 @@
 
 #include <gpu/gpu_context.h>
 
+#include <CLI/CLI.hpp>
+
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
 
 namespace glint::cli {
 
-int runSimulate(const SimulateOptions& options) {
+void addSimulateOptions(CLI::App& command, SimulateOptions& options) {
+    command.add_option("scene", options.scenePath, "scene file, e.g. harness/scenes/glossy_room.toml")
+        ->required();
+    command.add_option("--out", options.outDir, "output sequence folder")->required();
+    command.add_option("--size", options.size, "override the resolution, WxH");
+    command.add_option("--frame-count", options.frames, "override the frame count");
+    command.add_option("--spp", options.spp, "override the reference samples per pixel");
+    command.add_option("--seed", options.seed, "override the scene's seed");
+}
+
+int runSimulate(SimulateOptions options, bool validate) {
+    if (!options.size.empty() &&
+        std::sscanf(options.size.c_str(), "%ux%u", &options.width, &options.height) != 2)
+        throw std::invalid_argument("simulate: --size must read WxH, e.g. 1920x1080");
+    options.validate = validate;
     scene::Scene scene = scene::loadScene(options.scenePath);
     if (options.width > 0 && options.height > 0) {
         scene.width = options.width;

@@ -18,6 +18,8 @@
 #include "scene/scene_file.h"
 #include "scene/scene_simulate.h"
 
+#include <CLI/CLI.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -406,7 +408,33 @@ void writeText(const std::filesystem::path& file, const std::string& text) {
 
 } // namespace study
 
-int runStudy(const StudyOptions& options) {
+void addStudyOptions(CLI::App& command, StudyOptions& options) {
+    command
+        .add_option("--out", options.outDir, "output folder (study.csv, study.json, presets.toml, images/)")
+        ->required();
+    command.add_option("--effect", options.effect, "reflections | shadows | hybrid | all")
+        ->capture_default_str();
+    command.add_option("--scenes", options.scenes, "scene files (default: three bundled scenes per effect)")
+        ->delimiter(',');
+    command.add_option("--size", options.size, "resolution WxH (default 1920x1080)");
+    command.add_option("--frame-count", options.frames,
+                       "frames per point; the last is measured (default 16)");
+    command.add_option("--spp", options.spp, "reference samples per pixel");
+    command.add_option("--runs", options.runs, "timed runs per point (default 50)");
+    command.add_flag("--quick", options.quick, "tiny sizes, few frames and points (smoke test)");
+    command.add_flag("--no-floor", options.noFloor,
+                     "skip the second, independent reference (no reference noise floor)");
+    command.add_option("--budget-us", options.budgetUs,
+                       "name the most accurate measured point whose GPU time fits this budget");
+    command.add_flag("--scaling", options.scaling,
+                     "time against resolution and against the fraction of affected pixels");
+}
+
+int runStudy(StudyOptions options, bool validate) {
+    if (!options.size.empty() &&
+        std::sscanf(options.size.c_str(), "%ux%u", &options.width, &options.height) != 2)
+        throw std::invalid_argument("study: --size must read WxH, e.g. 1920x1080");
+    options.validate = validate;
     const study::Plan plan = study::resolve(options);
     return withContext(options.validate, [&](const gpu::Context& context) -> int {
         std::printf("device: %s, driver %s %s, subgroup %u\n", context.info.name.c_str(),

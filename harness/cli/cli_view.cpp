@@ -13,6 +13,7 @@
 #include "scene/scene_file.h"
 #include "scene/scene_simulate.h"
 
+#include <CLI/CLI.hpp>
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
@@ -36,7 +37,30 @@ struct OpenedSource {
 
 } // namespace
 
-int runView(const ViewOptions& options) {
+void addViewOptions(CLI::App& command, ViewOptions& options) {
+    command
+        .add_option(
+            "capture", options.capture,
+            "frame .exr, sequence folder, with --map one foreign EXR or a folder of them, or scene .toml")
+        ->required();
+    command.add_option("--map", options.mapPath, "channel map of a foreign capture (docs/replay.md)");
+    command.add_option("--geometry", options.geometry,
+                       "a glTF of the capture's scene, for the effects that ray trace");
+    command.add_option("--effects", options.effects, effectNames() + " (default: declared)")->delimiter(',');
+    command.add_option("--set", options.settings, "a setting, name=value (repeatable; glint settings)");
+    addPresetOptions(command, options.preset);
+    command.add_option("--script", options.script, "commands to run, one a line (docs/viewer.md)");
+    command.add_option("--screenshot", options.screenshot,
+                       "write the window's image as PNG after frame --after, then exit");
+    command.add_option("--after", options.after, "the frame (0-based) --screenshot waits for");
+    command.add_flag("--ui", options.ui, "show the controls in scripted runs and screenshots too");
+    command.footer(settingsHelp());
+}
+
+int runView(ViewOptions options, bool validate) {
+    // An unknown preset or an unreadable preset file fails before any capture is read.
+    checkPresetChoice(options.preset);
+    options.validate = validate;
     if (const std::string missing = view::missingDisplayMessage(); !missing.empty()) {
         std::fprintf(stderr, "%s\n", missing.c_str());
         return kExitUsage;
