@@ -137,10 +137,10 @@ glint_id=$(sha1sum <"$glint" | cut -d' ' -f1)
   "$glint" bench depth_pyramid --size 1920x1080 --runs 20
   echo '```'
   echo
-  progress "benchmarking SSSR"
-  echo "## Stochastic screen-space reflections, glossy room 640x360 (glint bench sssr)"
+  progress "benchmarking the reflections"
+  echo "## Stochastic screen-space reflections and their denoiser, glossy room 640x360 (glint bench reflections)"
   echo '```'
-  "$glint" bench sssr --size 640x360 --runs 10 --set debugOutput=true
+  "$glint" bench reflections --size 640x360 --runs 10 --set denoise=true
   echo '```'
 } | tee "$out/report.md"
 echo "demo: $((SECONDS - started)) s; wrote $out/demo/report.html, $out/report.md and the captures under $out/demo/captures"
