@@ -291,9 +291,6 @@ int runRun(ReplayOptions options, bool validate) {
             std::snprintf(text, sizeof text, "%.4f", value);
             return std::isnan(value) ? std::string("no pixels scored") : std::string(text);
         };
-        const auto scoredJson = [](double value) {
-            return std::isnan(value) ? nlohmann::json(nullptr) : nlohmann::json(value);
-        };
         for (const auto& [effect, values] : errors) {
             const double noisy = noisyErrors[effect]; // -1: none (not denoised, or nothing scored)
             std::printf("error of %s against the reference: first frame %s, last frame %s", effect.c_str(),
@@ -303,11 +300,12 @@ int runRun(ReplayOptions options, bool validate) {
                 std::printf(" (reference noise floor %.4f)", noiseFloors[effect]);
             if (std::isnan(values.back())) std::printf(" (no pixel of the last frame is in its error mask)");
             std::printf("\n");
-            summary["error"][effect] = {{"first", scoredJson(values.front())},
-                                        {"last", scoredJson(values.back())},
+            summary["error"][effect] = {{"first", scoredOrNull(!std::isnan(values.front()), values.front())},
+                                        {"last", scoredOrNull(!std::isnan(values.back()), values.back())},
                                         {"noisyLast", scoredOrNull(noisy >= 0.0, noisy)}};
             if (noiseFloors.contains(effect))
-                summary["error"][effect]["referenceNoiseLast"] = scoredJson(noiseFloors[effect]);
+                summary["error"][effect]["referenceNoiseLast"] =
+                    scoredOrNull(!std::isnan(noiseFloors[effect]), noiseFloors[effect]);
             // The threshold of the error mask (a setting's value, ErrorMask in glint_effect.h).
             if (maskThresholds.contains(effect))
                 summary["error"][effect]["maskThreshold"] = maskThresholds[effect];

@@ -181,9 +181,9 @@ std::vector<ReferenceError> referenceErrors(const capture::Frame& frame, const F
                                             const SettingValues& settings, const capture::Frame* previous) {
     std::vector<ReferenceError> errors;
     for (const EffectDescriptor* descriptor : effectRegistry()) {
+        if (descriptor->evaluation.scored.empty()) continue;
         const std::string& effect = descriptor->name;
-        const ScoredOutput* scored = scoredOutput(effect);
-        if (!scored) continue;
+        const ScoredOutput* scored = &descriptor->evaluation.scored.front();
         const NamedImage* reference = result.find(effect + "/reference");
         if (!reference) continue;
         const NamedImage* output = nullptr;
@@ -215,10 +215,11 @@ std::vector<ReferenceError> referenceNoise(const capture::Frame& frame, const Fr
                                     std::to_string(frame.width) + "x" + std::to_string(frame.height));
     std::vector<ReferenceError> noise;
     for (const EffectDescriptor* descriptor : effectRegistry()) {
+        if (descriptor->evaluation.scored.empty() || descriptor->reference.empty()) continue;
         const std::string& effect = descriptor->name;
-        const ScoredOutput* scored = scoredOutput(effect);
+        const ScoredOutput* scored = &descriptor->evaluation.scored.front();
         const NamedImage* reference = result.find(effect + "/reference");
-        if (!scored || !reference || descriptor->reference.empty()) continue;
+        if (!reference) continue;
         const capture::Layer* layer = capture::findLayer(second, "reference." + descriptor->reference);
         if (!layer) continue;
         const std::uint32_t channels = std::min<std::uint32_t>(
