@@ -15,7 +15,9 @@ find_program(GLINT_SPIRV_CROSS_CLI NAMES spirv-cross)
 if(NOT GLINT_SPIRV_CROSS_CLI)
   message(STATUS "glint: spirv-cross not found; no reflection files or GLSL 450 translations")
 endif()
-if(NOT GLINT_DXC)
+# With the DXC tests configured (GLINT_DXC_TESTS, as scripts/test.sh does) glint itself is built
+# by glslang unless GLINT_DXC says otherwise, so that the suites run on both compilers' SPIR-V.
+if(NOT GLINT_DXC AND NOT GLINT_DXC_TESTS)
   find_program(GLINT_DXC_FOUND NAMES dxc)
   if(GLINT_DXC_FOUND)
     set(GLINT_DXC "${GLINT_DXC_FOUND}")

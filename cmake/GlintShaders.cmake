@@ -2,12 +2,13 @@
 #
 #   glint_add_hlsl_shader(NAME <name> ENTRY <file.cs.hlsl> [GROUP <group>]
 #                         [DEFINES <D=V>...] [PERMUTATIONS "<suffix>:<D=V>[,<D=V>...]"...]
-#                         [PROFILE <cs_6_x>] [TARGET_ENV <vulkan1.x>])
+#                         [PROFILE <cs_6_x>] [TARGET_ENV <vulkan1.x>] [DXC_ONLY])
 #
 # compiles <file> with DXC when GLINT_DXC is set (or dxc is on PATH) and with glslang's HLSL
 # front end otherwise, validates every module with spirv-val, and records each output so that
 # glint_embed_shaders() can bake them into the host library. A permutation produces a second
-# module "<name>.<suffix>" with the base defines plus its own. The library's shaders and their
+# module "<name>.<suffix>" with the base defines plus its own. A DXC_ONLY module (one glslang
+# cannot compile) is built only when DXC builds glint; the DXC tests compile it either way. The library's shaders and their
 # permutations are listed in one place, hlsl/CMakeLists.txt (group "glint", embedded into
 # glint_core); harness-only shaders use their own group and table (harness/shaders).
 #
@@ -76,6 +77,27 @@ function(_glint_shader_data name input spirv defines)
   set_property(GLOBAL APPEND PROPERTY GLINT_SHADER_GLSL_FILES "${glsl}")
 endfunction()
 
+# Every module, permutation and header check is also recorded as one line
+# "<kind>|<name>|<input>|<D=V>,...|<profile>|<env>" in the global property GLINT_DXC_RECIPES,
+# whichever compiler builds glint: the DXC tests (cmake/GlintDxcTests.cmake) compile each one
+# with DXC. <kind> is the entry's folder under hlsl/entry ("harness" for the harness's shaders,
+# "header" for the header checks).
+function(_glint_record_dxc_recipe name input defines profile env)
+  if(NOT profile)
+    set(profile cs_6_2)
+  endif()
+  if(NOT env)
+    set(env ${GLINT_SPIRV_TARGET_ENV})
+  endif()
+  cmake_path(GET input PARENT_PATH folder)
+  cmake_path(GET folder FILENAME kind)
+  if(NOT input MATCHES "^${GLINT_HLSL_ROOT}/entry/")
+    set(kind harness)
+  endif()
+  string(REPLACE ";" "," defs "${defines}")
+  set_property(GLOBAL APPEND PROPERTY GLINT_DXC_RECIPES "${kind}|${name}|${input}|${defs}|${profile}|${env}")
+endfunction()
+
 function(_glint_compile_module name input defines group)
   # ARGVn past ARGC would read the caller's variables: check the count.
   set(profile "")
@@ -89,6 +111,7 @@ function(_glint_compile_module name input defines group)
   if(NOT env)
     set(env ${GLINT_SPIRV_TARGET_ENV})
   endif()
+  _glint_record_dxc_recipe("${name}" "${input}" "${defines}" "${profile}" "${env}")
   set(output "${GLINT_SPIRV_DIR}/${name}.spv")
   set(depfile "${GLINT_SPIRV_DIR}/${name}.d")
   _glint_hlsl_command(cmd "${input}" "${output}" "${depfile}" "${defines}" "${profile}" "${env}")
@@ -114,7 +137,7 @@ function(_glint_compile_module name input defines group)
 endfunction()
 
 function(glint_add_hlsl_shader)
-  cmake_parse_arguments(ARG "" "NAME;ENTRY;GROUP;PROFILE;TARGET_ENV" "DEFINES;PERMUTATIONS" ${ARGN})
+  cmake_parse_arguments(ARG "DXC_ONLY" "NAME;ENTRY;GROUP;PROFILE;TARGET_ENV" "DEFINES;PERMUTATIONS" ${ARGN})
   if(NOT ARG_GROUP)
     set(ARG_GROUP glint)
   endif()
@@ -122,6 +145,11 @@ function(glint_add_hlsl_shader)
     message(FATAL_ERROR "glint_add_hlsl_shader needs NAME and ENTRY")
   endif()
   cmake_path(ABSOLUTE_PATH ARG_ENTRY BASE_DIRECTORY "${CMAKE_CURRENT_SOURCE_DIR}")
+  if(ARG_DXC_ONLY AND NOT GLINT_DXC)
+    # Built by glslang, a DXC-only module is only recorded for the DXC tests.
+    _glint_record_dxc_recipe("${ARG_NAME}" "${ARG_ENTRY}" "${ARG_DEFINES}" "${ARG_PROFILE}" "${ARG_TARGET_ENV}")
+    return()
+  endif()
   _glint_compile_module("${ARG_NAME}" "${ARG_ENTRY}" "${ARG_DEFINES}" "${ARG_GROUP}" "${ARG_PROFILE}"
                         "${ARG_TARGET_ENV}")
   foreach(perm IN LISTS ARG_PERMUTATIONS)
@@ -176,6 +204,8 @@ function(glint_check_hlsl_header header)
   endif()
   file(GENERATE OUTPUT "${check_src}" CONTENT "${body}")
   set(output "${PROJECT_BINARY_DIR}/hlsl_check/${stem}.spv")
+  set_property(GLOBAL APPEND PROPERTY GLINT_DXC_RECIPES
+    "header|${stem}|${check_src}|GLINT_HEADER_CHECK=1|cs_6_2|${GLINT_SPIRV_TARGET_ENV}")
   _glint_hlsl_command(cmd "${check_src}" "${output}" "${output}.d" "GLINT_HEADER_CHECK=1")
   string(REPLACE ";" "|" strict "${cmd}")
   add_custom_command(

@@ -37,8 +37,11 @@ if ((${#missing[@]})); then
 fi
 
 cd "$root"
-if [ ! -f "build/$preset/CMakeCache.txt" ]; then
-  cmake --preset "$preset"
+# GLINT_CONFIGURE_ARGS (cache settings, e.g. -DGLINT_DXC_TESTS=<dxc>) configure the preset
+# again; without them an existing build keeps its configuration.
+read -r -a configure_args <<<"${GLINT_CONFIGURE_ARGS:-}"
+if [ ! -f "build/$preset/CMakeCache.txt" ] || ((${#configure_args[@]})); then
+  cmake --preset "$preset" "${configure_args[@]}"
 fi
 # Optional targets after the preset limit the build to what the caller runs.
 cmake --build --preset "$preset" ${2:+--target "${@:2}"}
