@@ -144,8 +144,8 @@ constexpr std::uint32_t kBursts = 2;
 // two after it); outputs on every frame.
 constexpr std::uint32_t kHistoryEvery = 10;
 
-// Two bursts of 1-3 frames, the b-th starting in [15 + 140b, 25 + 140b), two targets each (the
-// windows after them, at least 131 frames, hold every recovery bound): over the cases the targets
+// Two bursts of 1-3 frames, the b-th starting in [15 + 105b, 25 + 105b), two targets each (the
+// windows after them, at least 93 frames, hold every recovery bound): over the cases the targets
 // go round every input and every history.
 std::vector<Burst> schedule(std::uint32_t seed) {
     const float values[] = {std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity(),
@@ -155,7 +155,7 @@ std::vector<Burst> schedule(std::uint32_t seed) {
     std::vector<Burst> bursts;
     for (std::uint32_t b = 0; b < kBursts; ++b) {
         Burst burst;
-        burst.first = 15 + 140 * b + random.below(10);
+        burst.first = 15 + 105 * b + random.below(10);
         burst.last = burst.first + random.below(3);
         const int count = static_cast<int>(Target::Count);
         const std::uint32_t slot = (seed * kBursts + b) * 2;
@@ -379,7 +379,7 @@ Recovery recoveryOf(const std::string& output) {
     // The hybrid: a tile the poison sent to the ray tracer (or to screen space) stays there until
     // its statistics say otherwise or the spawn lottery (spawnRate 0.02 per frame and lottery
     // number) sends it back: not a fixed number of frames, so the classes must have coupled by the
-    // window's end (70+ frames); the denoiser (and the composite of its result) as above from 32
+    // window's end (93+ frames); the denoiser (and the composite of its result) as above from 32
     // frames after the coupling.
     // The composite reads the denoised reflection, so it recovers as that does.
     if (output == "hybrid/denoised" || output == "hybrid/composite")

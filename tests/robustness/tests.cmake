@@ -1,4 +1,4 @@
-# Long hard sequences (issue 24, item 3): every effect over 300 frames of each hard case, with
+# Long hard sequences (issue 24, item 3): every effect over 225 frames of each hard case, with
 # NaN/Inf/denormals injected into inputs and histories; labelled slow.
 glint_add_test_suite(NAME robustness LABELS gpu slow
   SOURCES
