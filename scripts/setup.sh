@@ -36,6 +36,13 @@ if ((${#missing[@]})); then
   "${sudo[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
 fi
 
+# The debug preset's ray-query tests (tests/hybrid, label rayquery) run on Mesa 25's lavapipe
+# from bookworm-backports; bookworm's own (Mesa 22.3) has no ray queries. It is unpacked beside
+# the system driver, never installed over it (scripts/lavapipe_rayquery.sh, CONTRIBUTING.md).
+if [ "$preset" = debug ]; then
+  "$root/scripts/lavapipe_rayquery.sh" "$root/build/lavapipe-rayquery"
+fi
+
 cd "$root"
 # GLINT_CONFIGURE_ARGS (cache settings, e.g. -DGLINT_DXC_TESTS=<dxc>) configure the preset
 # again; without them an existing build keeps its configuration.

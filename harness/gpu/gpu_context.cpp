@@ -186,6 +186,10 @@ struct FeatureChain {
     // Only linked for the opt-in GLINT_PIPELINE_STATS diagnostic.
     VkPhysicalDevicePipelineExecutablePropertiesFeaturesKHR executable{
         VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PIPELINE_EXECUTABLE_PROPERTIES_FEATURES_KHR};
+    // Only linked where the device offers VK_KHR_acceleration_structure and VK_KHR_ray_query.
+    VkPhysicalDeviceAccelerationStructureFeaturesKHR acceleration{
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_FEATURES_KHR};
+    VkPhysicalDeviceRayQueryFeaturesKHR rayQuery{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_QUERY_FEATURES_KHR};
 
     FeatureChain() = default;
     // The pNext links point into the object itself; a copy would point into the original.
@@ -193,7 +197,7 @@ struct FeatureChain {
     FeatureChain& operator=(const FeatureChain&) = delete;
 
     // Links the structures valid for this device version (and extensions) behind core.
-    void link(bool vulkan12, bool float16Extension, bool executableExtension) {
+    void link(bool vulkan12, bool float16Extension, bool executableExtension, bool rayQueryExtensions) {
         if (vulkan12) {
             core.pNext = &v11;
             v11.pNext = &v12;
@@ -206,6 +210,12 @@ struct FeatureChain {
             auto* last = reinterpret_cast<VkBaseOutStructure*>(&core);
             while (last->pNext) last = last->pNext;
             last->pNext = reinterpret_cast<VkBaseOutStructure*>(&executable);
+        }
+        if (rayQueryExtensions) {
+            auto* last = reinterpret_cast<VkBaseOutStructure*>(&core);
+            while (last->pNext) last = last->pNext;
+            last->pNext = reinterpret_cast<VkBaseOutStructure*>(&acceleration);
+            acceleration.pNext = &rayQuery;
         }
     }
 };
@@ -234,6 +244,20 @@ void selectFeatures(const FeatureChain& supported, FeatureChain& enabled) {
         supported.storage16.uniformAndStorageBuffer16BitAccess;
     enabled.float16.shaderFloat16 = supported.float16.shaderFloat16;
     enabled.executable.pipelineExecutableInfo = supported.executable.pipelineExecutableInfo;
+}
+
+// Ray queries need both extensions (with deferred host operations, which the acceleration
+// structure extension requires), Vulkan 1.2 for SPIR-V 1.4 and buffer device addresses, and
+// the features themselves.
+bool rayQueryExtensionsOffered(bool vulkan12, const std::vector<VkExtensionProperties>& available) {
+    return vulkan12 && contains(available, VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME) &&
+           contains(available, VK_KHR_RAY_QUERY_EXTENSION_NAME) &&
+           contains(available, VK_KHR_DEFERRED_HOST_OPERATIONS_EXTENSION_NAME);
+}
+
+bool rayQuerySupported(const FeatureChain& supported) {
+    return supported.acceleration.accelerationStructure && supported.rayQuery.rayQuery &&
+           supported.v12.bufferDeviceAddress;
 }
 
 // GLINT_PIPELINE_STATS=1 asks for the driver's statistics of every compute pipeline
@@ -281,13 +305,24 @@ void createDevice(Context& context, VkPhysicalDevice physical) {
         pipelineStatisticsRequested() &&
         contains(available, VK_KHR_PIPELINE_EXECUTABLE_PROPERTIES_EXTENSION_NAME);
 
+    const bool rayQueryExtensions = rayQueryExtensionsOffered(vulkan12, available);
+
     FeatureChain supported;
-    supported.link(vulkan12, float16Extension, executableExtension);
+    supported.link(vulkan12, float16Extension, executableExtension, rayQueryExtensions);
     vkGetPhysicalDeviceFeatures2(physical, &supported.core);
     FeatureChain enabled;
     const bool pipelineStatistics = executableExtension && supported.executable.pipelineExecutableInfo;
-    enabled.link(vulkan12, float16Extension, pipelineStatistics);
+    const bool rayQuery = rayQueryExtensions && rayQuerySupported(supported);
+    enabled.link(vulkan12, float16Extension, pipelineStatistics, rayQuery);
     selectFeatures(supported, enabled);
+    if (rayQuery) {
+        enabled.acceleration.accelerationStructure = VK_TRUE;
+        enabled.rayQuery.rayQuery = VK_TRUE;
+        enabled.v12.bufferDeviceAddress = VK_TRUE;
+        extensions.push_back(VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME);
+        extensions.push_back(VK_KHR_RAY_QUERY_EXTENSION_NAME);
+        extensions.push_back(VK_KHR_DEFERRED_HOST_OPERATIONS_EXTENSION_NAME);
+    }
     if (pipelineStatistics) extensions.push_back(VK_KHR_PIPELINE_EXECUTABLE_PROPERTIES_EXTENSION_NAME);
     if (context.surface) {
         if (!contains(available, VK_KHR_SWAPCHAIN_EXTENSION_NAME))
@@ -325,6 +360,7 @@ void createDevice(Context& context, VkPhysicalDevice physical) {
     device.timestampValidBits = context.info.timestampValidBits;
     device.timestamps = device.timestampValidBits > 0;
     device.pipelineStatistics = pipelineStatistics;
+    device.rayQuery = rayQuery;
     context.memoryBudget = memoryBudget;
 
     // What DeviceInfo reports must be what the device has enabled.

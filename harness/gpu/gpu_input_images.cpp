@@ -31,6 +31,7 @@ VkFormat formatFor(InputKind kind, bool compact) {
     case InputKind::Environment:
         return VK_FORMAT_R32G32B32A32_SFLOAT;
     case InputKind::SceneGeometry: // buffers, not an image
+    case InputKind::SceneAccelerationStructure:
         return VK_FORMAT_UNDEFINED;
     }
     return VK_FORMAT_UNDEFINED;

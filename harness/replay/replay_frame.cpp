@@ -101,6 +101,7 @@ std::string inputLayer(const capture::Frame& frame, InputKind kind) {
     case InputKind::PreviousDepth:
     case InputKind::Environment:
     case InputKind::SceneGeometry:
+    case InputKind::SceneAccelerationStructure:
         return "";
     }
     return "";
@@ -139,6 +140,7 @@ std::vector<float> inputTexels(const capture::Frame& frame, InputKind kind, std:
     case InputKind::PreviousDepth:
     case InputKind::Environment:
     case InputKind::SceneGeometry:
+    case InputKind::SceneAccelerationStructure:
         break;
     }
     throw std::logic_error("replay: inputTexels does not read this kind");

@@ -79,6 +79,7 @@ std::optional<MissingLayer> missingLayer(const capture::Frame& frame, const std:
         for (const InputDesc& input : effect->inputs) {
             if (!inputUsed(input, settings) || input.kind == InputKind::Environment ||
                 input.kind == InputKind::PreviousDepth || input.kind == InputKind::SceneGeometry ||
+                input.kind == InputKind::SceneAccelerationStructure ||
                 input.kind == InputKind::ShadowBlockerDistance) // optional (inputTexels)
                 continue;
             const std::string layer = inputLayer(frame, input.kind);
@@ -124,13 +125,21 @@ Session::Session(const gpu::Context& context, const capture::Frame& first,
     inputs_ =
         std::make_unique<gpu::InputImages>(context_, Extent2D{first.width, first.height}, !options_.readback);
     const FrameInfo info = frameInfo(first, environment_, 0, true);
+    // One scene serves every effect; it carries an acceleration structure when one of them
+    // traces with RayQuery.
+    bool acceleration = false;
+    for (const std::string& name : effects_)
+        for (const InputDesc& input : findEffect(name)->inputs)
+            acceleration |=
+                input.kind == InputKind::SceneAccelerationStructure && inputUsed(input, options_.settings);
     for (const std::string& name : effects_) {
         auto running = std::make_unique<Running>();
         running->descriptor = findEffect(name);
         for (const InputDesc& input : running->descriptor->inputs)
             if (input.kind == InputKind::SceneGeometry && !scene_) {
                 if (options_.geometry)
-                    scene_ = std::make_unique<scene::SceneBuffers>(context_, *options_.geometry);
+                    scene_ =
+                        std::make_unique<scene::SceneBuffers>(context_, *options_.geometry, acceleration);
                 else if (options_.scene.empty())
                     throw std::invalid_argument(
                         "effect '" + name +
@@ -138,8 +147,8 @@ Session::Session(const gpu::Context& context, const capture::Frame& first,
                         "--geometry FILE (a glTF of the scene in the capture's world space), or replay a "
                         "capture written by glint simulate (its manifest records the scene file)");
                 else
-                    scene_ =
-                        std::make_unique<scene::SceneBuffers>(context_, scene::loadScene(options_.scene));
+                    scene_ = std::make_unique<scene::SceneBuffers>(context_, scene::loadScene(options_.scene),
+                                                                   acceleration);
             }
         running->settings = options_.settings;
         if (options_.intermediates && !running->descriptor->debugSetting.empty())
@@ -167,7 +176,8 @@ void Session::uploadInputs(const capture::Frame& frame, bool reset) {
                 continue;
             }
             if (input.kind == InputKind::PreviousDepth) continue; // after this frame's depth
-            if (input.kind == InputKind::SceneGeometry) continue; // buffers, set per frame in run()
+            if (input.kind == InputKind::SceneGeometry || input.kind == InputKind::SceneAccelerationStructure)
+                continue; // buffers and structures, set per frame in run()
             std::uint32_t channels = 0;
             std::vector<float> texels = inputTexels(frame, input.kind, channels);
             inputs_->upload(batch, input.kind, texels, channels);

@@ -59,10 +59,17 @@ std::vector<shaders::SceneLight> packLights(const std::vector<LightDesc>& lights
     return out;
 }
 
-SceneBuffers::SceneBuffers(const gpu::Context& context, Scene scene)
+SceneBuffers::SceneBuffers(const gpu::Context& context, Scene scene, bool accelerationStructure)
     : context_(context), scene_(std::move(scene)), meshes_(loadMeshes(scene_)) {
+    if (accelerationStructure) acceleration_ = std::make_unique<SceneAccelerationStructure>(context_);
     materials_ = upload(context_, packMaterials(scene_));
-    setFrame(0);
+    try {
+        setFrame(0);
+    } catch (...) {
+        release();
+        vk::destroyBuffer(context_.device, materials_);
+        throw;
+    }
 }
 
 SceneBuffers::~SceneBuffers() {
@@ -78,6 +85,7 @@ void SceneBuffers::release() {
 void SceneBuffers::setFrame(std::uint32_t frame) {
     frame = std::min(frame, scene_.frameCount == 0 ? 0u : scene_.frameCount - 1);
     Bvh bvh = buildBvh(buildGeometry(scene_, meshes_, frame).primitives);
+    if (acceleration_) acceleration_->build(bvh.primitives);  // the BVH's order: the same primitive indices
     if (bvh.primitives.empty()) bvh.primitives.push_back({}); // never read: the root is an empty leaf
     shaders::GLINT_SceneConstants c{};
     c.size = {scene_.width, scene_.height};
@@ -114,6 +122,7 @@ void SceneBuffers::addTo(vk::ResourceTable& table) const {
     table.buffers["scene_primitives"] = &primitives_.buffer;
     table.buffers["scene_materials"] = &materials_;
     table.buffers["scene_lights"] = &lights_.buffer;
+    if (acceleration_) table.accelerationStructures[kSceneAccelerationStructure] = acceleration_->topLevel();
 }
 
 } // namespace glint::scene

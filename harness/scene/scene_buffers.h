@@ -1,9 +1,12 @@
 // A scene's GPU data for shaders that trace and shade it outside the simulator's own passes
 // (the hybrid effect's ray tracing and shading modules): the BVH of one frame's geometry, the
 // materials, that frame's lights and the constants the shading reads, as storage buffers named
-// "scene_constants", "scene_nodes", "scene_primitives", "scene_materials", "scene_lights".
+// "scene_constants", "scene_nodes", "scene_primitives", "scene_materials", "scene_lights", and
+// optionally the same triangles as an acceleration structure, "scene_acceleration_structure"
+// (scene_acceleration.h), for modules that trace with RayQuery.
 #pragma once
 
+#include "scene/scene_acceleration.h"
 #include "scene/scene_bvh.h"
 #include "scene/scene_geometry.h"
 #include "scene/scene_types.h"
@@ -13,6 +16,7 @@
 #include "glint/vulkan/vk_executor.h"
 
 #include <cstddef>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -25,8 +29,10 @@ std::vector<shaders::SceneLight> packLights(const std::vector<LightDesc>& lights
 
 class SceneBuffers {
   public:
-    // Loads the scene's meshes (SceneError naming the file) and uploads frame 0.
-    SceneBuffers(const gpu::Context& context, Scene scene);
+    // Loads the scene's meshes (SceneError naming the file) and uploads frame 0; with
+    // `accelerationStructure` also builds it (the device must have ray queries; SceneError when
+    // the scene has a sphere).
+    SceneBuffers(const gpu::Context& context, Scene scene, bool accelerationStructure = false);
     ~SceneBuffers();
     SceneBuffers(const SceneBuffers&) = delete;
     SceneBuffers& operator=(const SceneBuffers&) = delete;
@@ -50,6 +56,10 @@ class SceneBuffers {
     std::vector<Mesh> meshes_;
     Stored constants_, nodes_, primitives_, lights_;
     vk::Buffer materials_;
+    std::unique_ptr<SceneAccelerationStructure> acceleration_;
 };
+
+// The resource name of the scene's top-level acceleration structure.
+inline constexpr const char* kSceneAccelerationStructure = "scene_acceleration_structure";
 
 } // namespace glint::scene

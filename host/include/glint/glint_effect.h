@@ -68,6 +68,9 @@ enum class InputKind : std::uint8_t {
     SceneGeometry,         // buffers: the application's scene for its ray tracing and shading modules
                            // (glint's harness: "scene_constants", "scene_nodes", "scene_primitives",
                            // "scene_materials", "scene_lights"; harness/scene/scene_buffers.h)
+    SceneAccelerationStructure, // a top-level acceleration structure over the same scene, for a RayQuery
+                                // ray tracing module (glint's harness: "scene_acceleration_structure",
+                                // harness/scene/scene_acceleration.h; docs/hybrid.md)
 };
 
 struct InputDesc {

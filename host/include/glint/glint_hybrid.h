@@ -13,9 +13,16 @@
 #include "glint/glint_reflections_denoiser.h"
 #include "glint/glint_sssr.h"
 
+#include <cstdint>
 #include <string>
 
 namespace glint {
+
+// What the trace module traces: the harness's BVH buffers ("scene_nodes", "scene_primitives" at
+// g_scene_nodes, g_scene_primitives) or a top-level acceleration structure
+// ("scene_acceleration_structure" at g_glint_scene, InputKind::SceneAccelerationStructure) for a
+// RayQuery module such as hybrid_trace_rayquery (docs/hybrid.md, "Acceleration structures").
+enum class HybridTracer : std::uint8_t { Bvh, RayQuery };
 
 struct HybridDesc {
     // The screen-space half: camera, G-buffer decoding, SSSR classification and traversal.
@@ -50,6 +57,10 @@ struct HybridDesc {
     // simulated scenes; their scene resources are the application's inputs.
     std::string tracePipeline = "hybrid_trace_bvh";
     std::string shadePipeline = "hybrid_shade_scene";
+    // The trace module's scene resources. RayQuery goes with tracePipeline
+    // "hybrid_trace_rayquery" (compiled by DXC only: loaded from GLINT_SHADER_DIR) or an
+    // application module with its bindings.
+    HybridTracer tracer = HybridTracer::Bvh;
 };
 
 // Resources (besides SSSR's inputs, glint_sssr.h):
@@ -63,7 +74,8 @@ struct HybridDesc {
 //   "sssr_blue_noise_source" (owned, glint::sssrBlueNoise()), "sssr_blue_noise", "depth_pyramid"
 //   "hybrid_hits"         16 bytes per list entry (GLINT_HYBRID_PackHit, _PackScreenHit)
 // and the application's scene for its trace and shade modules (the harness's: "scene_constants",
-// "scene_nodes", "scene_primitives", "scene_materials", "scene_lights").
+// "scene_nodes", "scene_primitives", "scene_materials", "scene_lights"; with HybridTracer::RayQuery
+// the trace module reads "scene_acceleration_structure" instead of the first two).
 Result planHybrid(const HybridDesc& desc, EffectPlan& plan, std::string* error);
 
 // The hybrid result denoised by the reflections denoiser (glint_reflections_denoiser.h) when

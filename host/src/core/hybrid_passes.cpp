@@ -126,6 +126,10 @@ Pass tracePass(const HybridDesc& desc, const std::vector<std::byte>& constants) 
     Pass pass = core::sssrPass("trace", desc.tracePipeline, GLINT_SSSR_RAYS_PER_GROUP, 1, constants);
     pass.dispatch = IndirectDispatch{"hybrid_indirect_args", GLINT_HYBRID_HW_ARGUMENTS_OFFSET};
     pass.uses = rayTracedSurfaceUses();
+    if (desc.tracer == HybridTracer::RayQuery) {
+        std::erase_if(pass.uses, [](const ResourceUse& use) { return use.resource.starts_with("scene_"); });
+        pass.uses.push_back({"g_glint_scene", "scene_acceleration_structure", Access::Read});
+    }
     pass.uses.push_back({"g_glint_hits", "hybrid_hits", Access::Write});
     return pass;
 }

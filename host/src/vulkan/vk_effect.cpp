@@ -147,7 +147,8 @@ Result dispatchEffect(EffectInstance& effect, Executor& executor, VkCommandBuffe
     for (const auto& [name, buffer] : effect.buffers) table.buffers[name] = &buffer;
     for (const Pass& pass : plan.passes)
         for (const ResourceUse& use : pass.uses)
-            if (!table.images.contains(use.resource) && !table.buffers.contains(use.resource))
+            if (!table.images.contains(use.resource) && !table.buffers.contains(use.resource) &&
+                !table.accelerationStructures.contains(use.resource))
                 return fail(error, plan.effect, "input '" + use.resource + "' is missing");
     initializeEffect(effect, cmd);
     try {

@@ -72,6 +72,15 @@ ComputePipeline& pipelineFor(Executor& executor, const std::string& name) {
     if (it == executor.pipelines.end()) {
         std::span<const uint32_t> code = overriddenShader(name);
         if (code.empty()) code = executor.findShader(name);
+        if (code.empty()) {
+            // Modules glint does not embed (hybrid_trace_rayquery, compiled by DXC only) come
+            // from GLINT_SHADER_DIR.
+            const char* dir = std::getenv("GLINT_SHADER_DIR");
+            throw std::runtime_error(
+                "no SPIR-V module '" + name + "': glint does not embed it and " +
+                (dir && *dir ? "GLINT_SHADER_DIR (" + std::string(dir) + ") has no " + name + ".spv"
+                             : std::string("GLINT_SHADER_DIR is not set")));
+        }
         it = executor.pipelines.emplace(name, createComputePipeline(*executor.device, name, code)).first;
     }
     return it->second;
@@ -206,8 +215,10 @@ VkDescriptorSet writeDescriptors(Executor& executor, const ComputePipeline& pipe
     for (const ReflectedBinding& binding : pipeline.shader.bindings) imageCount += binding.count;
     std::vector<VkDescriptorImageInfo> imageInfos;
     std::vector<VkDescriptorBufferInfo> bufferInfos;
+    std::vector<VkWriteDescriptorSetAccelerationStructureKHR> accelerationInfos;
     imageInfos.reserve(imageCount);
     bufferInfos.reserve(pipeline.shader.bindings.size());
+    accelerationInfos.reserve(pipeline.shader.bindings.size());
     std::vector<VkWriteDescriptorSet> writes;
     for (const ReflectedBinding& binding : pipeline.shader.bindings) {
         VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
@@ -248,7 +259,17 @@ VkDescriptorSet writeDescriptors(Executor& executor, const ComputePipeline& pipe
             fail(pass, "'" + binding.name + "' is declared written but the shader cannot write it");
         const bool isBuffer = binding.type == VK_DESCRIPTOR_TYPE_STORAGE_BUFFER ||
                               binding.type == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-        if (isBuffer) {
+        if (binding.type == VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR) {
+            const auto found = resources.accelerationStructures.find(use->resource);
+            if (found == resources.accelerationStructures.end())
+                fail(pass, "acceleration structure '" + use->resource + "' is not in the resource table");
+            VkWriteDescriptorSetAccelerationStructureKHR info{
+                VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET_ACCELERATION_STRUCTURE_KHR};
+            info.accelerationStructureCount = 1;
+            info.pAccelerationStructures = &found->second;
+            accelerationInfos.push_back(info);
+            write.pNext = &accelerationInfos.back();
+        } else if (isBuffer) {
             const auto buffer = resources.buffers.find(use->resource);
             if (buffer == resources.buffers.end())
                 fail(pass, "buffer '" + use->resource + "' is not in the resource table");
@@ -290,7 +311,7 @@ Executor createExecutor(const Device& device) {
     executor.device = &device;
     executor.findShader = core::findShader;
     try {
-        const VkDescriptorPoolSize sizes[] = {
+        std::vector<VkDescriptorPoolSize> sizes = {
             {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kMaxSetsPerReset},
             {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kMaxSetsPerReset * 8},
             {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kMaxSetsPerReset * 16},
@@ -298,10 +319,13 @@ Executor createExecutor(const Device& device) {
             {VK_DESCRIPTOR_TYPE_SAMPLER, kMaxSetsPerReset * 2},
             {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kMaxSetsPerReset * 2},
         };
+        // The descriptor type exists only with the extension enabled.
+        if (device.rayQuery)
+            sizes.push_back({VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR, kMaxSetsPerReset});
         VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
         poolInfo.maxSets = kMaxSetsPerReset;
-        poolInfo.poolSizeCount = static_cast<uint32_t>(std::size(sizes));
-        poolInfo.pPoolSizes = sizes;
+        poolInfo.poolSizeCount = static_cast<uint32_t>(sizes.size());
+        poolInfo.pPoolSizes = sizes.data();
         GLINT_VK_CHECK(vkCreateDescriptorPool(device.device, &poolInfo, nullptr, &executor.descriptorPool));
 
         VkSamplerCreateInfo samplerInfo{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};

@@ -4,6 +4,7 @@
 
 #include <cinttypes>
 #include <cstdio>
+#include <stdexcept>
 #include <vector>
 
 namespace glint::vk {
@@ -86,6 +87,10 @@ ComputePipeline createComputePipeline(const Device& device, const std::string& n
     ComputePipeline pipeline;
     pipeline.name = name;
     pipeline.shader = reflectComputeShader(code, name);
+    for (const ReflectedBinding& reflected : pipeline.shader.bindings)
+        if (reflected.type == VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR && !device.rayQuery)
+            throw std::runtime_error(name + ": traces rays with RayQuery ('" + reflected.name +
+                                     "'), but the device has no VK_KHR_ray_query enabled");
 
     std::vector<VkDescriptorSetLayoutBinding> bindings;
     for (const ReflectedBinding& reflected : pipeline.shader.bindings) {

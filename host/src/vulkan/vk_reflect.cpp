@@ -88,8 +88,7 @@ ReflectedShader reflectComputeShader(std::span<const uint32_t> spirv, const std:
         const spirv_cross::ShaderResources resources = compiler.get_shader_resources();
         if (!resources.push_constant_buffers.empty())
             throw std::runtime_error(moduleName + ": push constants are not used by glint entry files");
-        if (!resources.subpass_inputs.empty() || !resources.acceleration_structures.empty() ||
-            !resources.atomic_counters.empty())
+        if (!resources.subpass_inputs.empty() || !resources.atomic_counters.empty())
             throw std::runtime_error(moduleName +
                                      ": declares a resource kind the compute backend does not bind");
         addBindings(compiler, resources.uniform_buffers, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, moduleName,
@@ -102,6 +101,8 @@ ReflectedShader reflectComputeShader(std::span<const uint32_t> spirv, const std:
         addBindings(compiler, resources.separate_samplers, VK_DESCRIPTOR_TYPE_SAMPLER, moduleName, shader);
         addBindings(compiler, resources.sampled_images, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, moduleName,
                     shader);
+        addBindings(compiler, resources.acceleration_structures,
+                    VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR, moduleName, shader);
         std::sort(shader.bindings.begin(), shader.bindings.end(),
                   [](const ReflectedBinding& a, const ReflectedBinding& b) { return a.binding < b.binding; });
         for (std::size_t i = 1; i < shader.bindings.size(); ++i)

@@ -21,6 +21,9 @@ struct Device {
     // VK_KHR_pipeline_executable_properties with pipelineExecutableInfo is enabled: pipelines are
     // created with statistics capture and their statistics printed (GLINT_PIPELINE_STATS=1).
     bool pipelineStatistics = false;
+    // VK_KHR_acceleration_structure and VK_KHR_ray_query are enabled, with bufferDeviceAddress:
+    // modules that trace with RayQuery (an acceleration structure binding) can run.
+    bool rayQuery = false;
 };
 
 } // namespace glint::vk

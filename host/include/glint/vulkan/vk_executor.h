@@ -22,6 +22,9 @@ namespace glint::vk {
 struct ResourceTable {
     std::map<std::string, const Image*> images;
     std::map<std::string, const Buffer*> buffers;
+    // Top-level acceleration structures, built and made visible to compute shaders
+    // (VK_ACCESS_ACCELERATION_STRUCTURE_READ_BIT_KHR) before the command buffer reaches the plan.
+    std::map<std::string, VkAccelerationStructureKHR> accelerationStructures;
 };
 
 // Called around each dispatch, e.g. to write timestamps or debug labels.

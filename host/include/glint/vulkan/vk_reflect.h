@@ -35,6 +35,7 @@ struct ReflectedShader {
 
 // Throws std::runtime_error naming the module when the SPIR-V cannot be parsed, uses a
 // descriptor set other than 0, push constants, or a resource kind the backend does not bind.
+// An acceleration structure (RayQuery) is a VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR binding.
 ReflectedShader reflectComputeShader(std::span<const uint32_t> spirv, const std::string& moduleName);
 
 // Every pair of resources a module puts on the same descriptor set and binding, in any set: one

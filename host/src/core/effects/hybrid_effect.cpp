@@ -33,6 +33,10 @@ std::vector<SettingDesc> hybridSettings() {
         boolSetting("hybrid.reshade", h.reshade,
                     "screen-space hits are shaded like ray-traced ones (off: the colour buffer)",
                     "HybridDesc::reshade"),
+        boolSetting("hybrid.rayQuery", h.tracer == HybridTracer::RayQuery,
+                    "rays are traced by hybrid_trace_rayquery over the scene's acceleration structure "
+                    "(a device with ray queries; the module from GLINT_SHADER_DIR)",
+                    "HybridDesc::tracer"),
         floatSetting("hybrid.spawnRate", h.spawnRate, 0, 1,
                      "chance a tile without statistics tries screen space", "HybridDesc::spawnRate"),
         floatSetting("hybrid.missWeight", h.missWeight, 0, 64,
@@ -63,6 +67,8 @@ std::vector<SettingDesc> hybridSettings() {
 std::vector<InputDesc> hybridInputs() {
     std::vector<InputDesc> inputs = core::reflectionsInputs();
     inputs.push_back({"scene_primitives", InputKind::SceneGeometry, ""});
+    inputs.push_back(
+        {"scene_acceleration_structure", InputKind::SceneAccelerationStructure, "hybrid.rayQuery"});
     return inputs;
 }
 
@@ -82,6 +88,10 @@ Result planFrame(const FrameInfo& frame, const SettingValues& settings, EffectPl
     desc.maxRayDistance = settings.real("hybrid.maxRayDistance");
     desc.rayOffset = settings.real("hybrid.rayOffset");
     desc.reshade = settings.flag("hybrid.reshade");
+    if (settings.flag("hybrid.rayQuery")) {
+        desc.tracer = HybridTracer::RayQuery;
+        desc.tracePipeline = "hybrid_trace_rayquery";
+    }
     desc.thicknessRoughnessGrowth = settings.real("hybrid.thicknessRoughnessGrowth");
     desc.thicknessDistanceGrowth = settings.real("hybrid.thicknessDistanceGrowth");
     if (desc.sssr.debugOutput || desc.sssr.thicknessAware) {
