@@ -15,7 +15,7 @@ glint_add_test_suite(NAME gpu_unit LABELS unit
     gpu/timestamp_math_test.cpp
   LIBS glint_gpu)
 
-glint_add_test_suite(NAME gpu LABELS gpu
+glint_add_test_suite(NAME gpu LABELS gpu HARNESS_SHADERS_ONLY
   SOURCES
     gpu/buffer_transfer_test.cpp
     gpu/context_test.cpp

@@ -8,7 +8,7 @@ glint_add_test_suite(NAME scene_unit LABELS unit
     scene/scene_gltf_export.cpp
   LIBS glint_scene)
 
-glint_add_test_suite(NAME scene LABELS gpu
+glint_add_test_suite(NAME scene LABELS gpu HARNESS_SHADERS_ONLY
   SOURCES
     scene/scene_test_scenes.cpp
     scene/gbuffer_test.cpp
