@@ -164,8 +164,10 @@ std::ptrdiff_t firstSphere(std::span<const shaders::ScenePrimitive> primitives) 
 
 SceneAccelerationStructure::SceneAccelerationStructure(const gpu::Context& context) : context_(context) {
     if (!context.device.rayQuery)
-        throw std::runtime_error("glint: device '" + context.info.name +
-                                 "' has no ray queries (VK_KHR_acceleration_structure, VK_KHR_ray_query)");
+        throw std::runtime_error(
+            "device '" + context.info.name +
+            "' has no ray queries (VK_KHR_acceleration_structure, VK_KHR_ray_query), which "
+            "hybrid.rayQuery needs");
 }
 
 SceneAccelerationStructure::~SceneAccelerationStructure() = default;
