@@ -24,7 +24,7 @@ struct AccelerationFunctions {
 
 template <typename F> F load(VkDevice device, const char* name) {
     auto function = reinterpret_cast<F>(vkGetDeviceProcAddr(device, name));
-    if (!function) throw std::runtime_error(std::string("glint: the device has no ") + name);
+    if (!function) throw std::runtime_error(std::string("the device has no ") + name);
     return function;
 }
 
