@@ -3,15 +3,18 @@
 #   - lists the Vulkan devices,
 #   - describes the bundled sample capture,
 #   - simulates every bundled scene (harness/scenes) into a capture sequence under
-#     out/demo/captures at GLINT_DEMO_SIZE (default 160x90) for GLINT_DEMO_FRAMES frames
-#     (default 16, so the temporal denoisers converge, or the scene's own frame count where it
-#     is larger: the scenes written to show motion play out), the reference at GLINT_DEMO_SPP samples
-#     per pixel (default 8: lavapipe's reference tracing bounds the demo's time on a machine
-#     without a GPU, and at 2 spp the references' own noise hid differences the report shows;
-#     docs/performance.md, "The demo's simulations on a 2-core machine"; set
-#     GLINT_DEMO_SIZE=480x270 GLINT_DEMO_SPP=64 on a GPU for converged references), and again with an independent seed (2) for the
-#     reference noise floor; a capture is simulated again only when its scene file, size, frame
-#     count or sample count changed (demo_key in its folder),
+#     out/demo/captures at GLINT_DEMO_SIZE for GLINT_DEMO_FRAMES frames (default 16, so the
+#     temporal denoisers converge, or the scene's own frame count where it is larger: the scenes
+#     written to show motion play out), with references of GLINT_DEMO_SPP samples per pixel a
+#     frame that accumulate over frames whose scene and camera are unchanged, and, for the
+#     reflections, more samples (up to GLINT_DEMO_MAX_SPP a frame) on the scored pixels (GGX
+#     alpha below 0.2) whose relative standard error is still above GLINT_DEMO_NOISE_TARGET;
+#     then again with an independent seed (2) for the reference noise floor. The defaults
+#     follow the selected device: on a CPU (lavapipe) 320x180, 8, 64 and 0.002, sized to
+#     finish within ten minutes on two cores (docs/performance.md, "The demo's simulations on
+#     a 2-core machine"); on a discrete GPU 960x540, 64, 256 and 0.001. A capture is simulated
+#     again only when its scene file, the simulator or these settings changed (demo_key in its
+#     folder),
 #   - replays every capture through the effects it declares (glint run, reflections with the
 #     denoiser and the composite, --second-reference for the noise floor) into out/demo/runs,
 #     scores every frame with LDR-FLIP (scripts/run_flip.py in build/venv, which
@@ -31,9 +34,15 @@ cd "$root"
 bin=build/release/harness
 glint="$bin/cli/glint"
 out=${GLINT_OUT:-out}
-size=${GLINT_DEMO_SIZE:-160x90}
+# Bigger defaults where the selected device is a discrete GPU.
+if "$glint" devices 2>/dev/null | grep -A1 '^\*' | head -n 1 | grep -q '(discrete GPU)'; then
+  size=${GLINT_DEMO_SIZE:-960x540} spp=${GLINT_DEMO_SPP:-64} max_spp=${GLINT_DEMO_MAX_SPP:-256}
+  noise_target=${GLINT_DEMO_NOISE_TARGET:-0.001}
+else
+  size=${GLINT_DEMO_SIZE:-320x180} spp=${GLINT_DEMO_SPP:-8} max_spp=${GLINT_DEMO_MAX_SPP:-32}
+  noise_target=${GLINT_DEMO_NOISE_TARGET:-0.005}
+fi
 frames=${GLINT_DEMO_FRAMES:-16}
-spp=${GLINT_DEMO_SPP:-8}
 mkdir -p "$out/demo/captures" "$out/demo/runs"
 scenes=()
 for scene in harness/scenes/*.toml; do
@@ -70,14 +79,15 @@ simulate() {
   local scene=$1 seed=$2 dir=$3
   local key count
   count=$(scene_frames "$scene")
-  key="$(sha1sum <"$scene" | cut -d' ' -f1) glint=$glint_id size=$size frames=$count spp=${spp:-scene} seed=$seed"
+  key="$(sha1sum <"$scene" | cut -d' ' -f1) glint=$glint_id size=$size frames=$count spp=$spp max=$max_spp target=$noise_target seed=$seed"
   if [ -f "$dir/manifest.json" ] && [ "$(cat "$dir/demo_key" 2>/dev/null)" = "$key" ]; then
     progress "$(basename "$scene" .toml): capture with seed $seed is up to date"
     return
   fi
-  progress "simulating $(basename "$scene" .toml), $size, $count frames, reference seed $seed ${spp:+at $spp spp}"
+  progress "simulating $(basename "$scene" .toml), $size, $count frames, reference seed $seed at $spp spp a frame (up to $max_spp)"
   rm -rf "$dir"
-  "$glint" simulate "$scene" --out "$dir" --size "$size" --frame-count "$count" --seed "$seed" ${spp:+--spp "$spp"}
+  "$glint" simulate "$scene" --out "$dir" --size "$size" --frame-count "$count" --seed "$seed" --spp "$spp" \
+    --max-spp "$max_spp" --noise-target "$noise_target" --noise-target-alpha-below 0.2
   echo "$key" >"$dir/demo_key"
 }
 # A capture is reused only when the scene, the settings and the simulator that made it are the same.

@@ -109,6 +109,9 @@ struct SimulateOptions {
     uint32_t width = 0, height = 0; // 0: the scene's resolution
     uint32_t frames = 0;            // 0: the scene's frame count
     uint32_t spp = 0;               // 0: the scene's reference samples per pixel
+    std::optional<float> noiseTarget; // the scene's reference noise_target when absent
+    std::optional<uint32_t> maxSpp;   // the scene's reference max_spp when absent
+    std::optional<float> noiseTargetAlphaBelow; // the scene's reference noise_target_alpha_below when absent
     std::optional<uint32_t> seed;
     bool validate = false;
 };

@@ -8,6 +8,7 @@
 // conditions. The demo's report.
 #include "cli_capture.h"
 #include "cli_commands.h"
+#include "cli_report_summary.h"
 
 #include "capture/json_text.h"
 #include "replay/replay_error.h"
@@ -75,23 +76,6 @@ nlohmann::json readAnchors(const std::string& path) {
             throw std::invalid_argument("report: " + path +
                                         ": a point without a \"scene\" or \"effect\" string");
     return anchors.at("points");
-}
-
-// A number of a per-frame record, NaN where it is absent or null (nothing scored).
-double valueOr(const nlohmann::json& object, const char* key) {
-    if (!object.is_object() || !object.contains(key) || !object.at(key).is_number()) return NAN;
-    return object.at(key).get<double>();
-}
-
-// Whether the references resolve the difference the page reports for an effect, the output's
-// error against its noisy input's on the last frame: converged when the two references' own
-// difference (the floor, same metric) is below a quarter of it. "-" without a floor or a noisy
-// error to compare.
-std::string convergence(double floor, const nlohmann::json& last, double noisy) {
-    if (std::isnan(floor) || !last.is_number() || noisy < 0.0) return "-";
-    const double difference = std::abs(last.get<double>() - noisy);
-    if (floor < 0.25 * difference) return "yes";
-    return "no: floor " + fixed(floor, 4) + " is not below a quarter of " + fixed(difference, 4);
 }
 
 // The pixels `scored`'s error is measured over, in words: the descriptor's, or from its kind;
@@ -241,11 +225,11 @@ report::Section runSection(const std::filesystem::path& dir, const nlohmann::jso
     std::string effects;
     for (const auto& effect : summary.at("effects"))
         effects += (effects.empty() ? "" : ", ") + effect.get<std::string>();
-    section.text = "Capture " + summary.value("capture", std::string{}) + "; effects: " + effects + ".";
+    section.lead = "Capture " + summary.value("capture", std::string{}) + "; effects: " + effects + ".";
     const nlohmann::json settings = summary.value("settings", nlohmann::json::array());
-    for (const auto& setting : settings) section.text += "\nset " + setting.get<std::string>();
+    for (const auto& setting : settings) section.text += (section.text.empty() ? "" : "\n") + ("set " + setting.get<std::string>());
     if (summary.contains("width") && summary.contains("height"))
-        section.text += "\n" + std::to_string(summary.at("width").get<unsigned>()) + "x" +
+        section.lead += " " + std::to_string(summary.at("width").get<unsigned>()) + "x" +
                         std::to_string(summary.at("height").get<unsigned>()) + ", " +
                         std::to_string(summary.at("frames").size()) + " frame(s).";
     const nlohmann::json& frames = summary.at("frames");
@@ -292,14 +276,31 @@ report::Section runSection(const std::filesystem::path& dir, const nlohmann::jso
         throw std::invalid_argument("report: " + (dir / "summary.json").string() + ": frame folder '" +
                                     frameName + "' is not a folder name");
     const std::filesystem::path frameDir = dir / frameName;
-    section.text += "\nImages of the last frame (" + frameName + ").";
+    section.lead += "\nImages of the last frame (" + frameName +
+                    "): first, where the output's error is largest, its noisy input, the output and the "
+                    "reference side by side, enlarged; then the whole frame.";
+    const nlohmann::json lastErrorsOfFrame = last.value("errors", nlohmann::json::object());
+    for (const auto& effect : summary.at("effects")) {
+        const std::string name = effect.get<std::string>();
+        const EffectDescriptor* descriptor = findEffect(name);
+        if (!descriptor) continue;
+        const ScoredOutput* scored = replay::scoredOutput(name);
+        const nlohmann::json error = lastErrorsOfFrame.value(name, nlohmann::json::object());
+        if (scored && !scored->noisy.empty() && error.contains("image") && error.at("image").is_string())
+            for (report::Figure& figure :
+                 zoomFigures(frameDir, name, error.at("image").get<std::string>(), name + "/" + scored->noisy))
+                section.figures.push_back(std::move(figure));
+    }
     for (const auto& effect : summary.at("effects")) {
         const std::string name = effect.get<std::string>();
         const EffectDescriptor* descriptor = findEffect(name);
         if (!descriptor) continue;
         for (const std::string& image : descriptor->evaluation.reportImages) {
             const std::filesystem::path png = frameDir / (name + "_" + image + ".png");
-            if (std::filesystem::exists(png)) section.figures.push_back({name + " " + image, png.string()});
+            if (!std::filesystem::exists(png)) continue;
+            report::Figure figure{name + " " + image, png.string()};
+            figure.minWidth = 400; // a frame of 320 px and less is shown at twice its size or more
+            section.figures.push_back(std::move(figure));
         }
     }
     if (summary.contains("error")) {
@@ -347,7 +348,7 @@ report::Section runSection(const std::filesystem::path& dir, const nlohmann::jso
             errors.rows.push_back({effect, scored(values.at("first")), scored(values.at("last")),
                                    noisy >= 0.0 ? fixed(noisy, 4) : "-", movingEdge("movingEdge"),
                                    movingEdge("noisyMovingEdge"), floor,
-                                   convergence(valueOr(noise, "mean"), values.at("last"), noisy),
+                                   convergence(valueOr(noise, "mean"), valueOr(values, "last"), noisy),
                                    shown(valueOr(lastError, "maeClamped")),
                                    shown(valueOr(lastError, "rmseClamped")), flip(lastError, "flip"),
                                    flip(lastError, "noisyFlip")});
@@ -390,9 +391,21 @@ int runReport(ReportOptions options, bool) {
     report::Report page;
     page.title = options.title;
     bool first = true;
-    for (const std::string& run : options.runs) {
-        const std::filesystem::path dir(run);
-        const nlohmann::json summary = readSummary(dir);
+    std::vector<std::pair<std::filesystem::path, nlohmann::json>> runs;
+    for (const std::string& run : options.runs) runs.emplace_back(run, readSummary(run));
+    if (runs.size() > 1) {
+        report::Section overview;
+        overview.heading = "Summary: the last frame of every run";
+        overview.lead =
+            "Errors against each run's reference in its effect's metric (the run's section says which), "
+            "the reference noise floor (the reference against a second one of another seed), whether the "
+            "references resolve the difference between the output's error and its noisy input's, LDR-FLIP "
+            "(\"-\" where not computed), the error over moving edges (visibility effects), the effect's GPU "
+            "time on this device and the reference's samples per pixel.";
+        overview.tables.push_back(summaryTable(runs));
+        page.sections.push_back(std::move(overview));
+    }
+    for (const auto& [dir, summary] : runs) {
         if (first) {
             const nlohmann::json& device = summary.at("device");
             page.facts.push_back({"device", device.value("name", std::string{})});

@@ -28,7 +28,17 @@ void addSimulateOptions(CLI::App& command, SimulateOptions& options) {
     command.add_option("--out", options.outDir, "output sequence folder")->required();
     command.add_option("--size", options.size, "override the resolution, WxH");
     command.add_option("--frame-count", options.frames, "override the frame count");
-    command.add_option("--spp", options.spp, "override the reference samples per pixel");
+    command.add_option("--spp", options.spp, "override the reference samples per pixel (per frame)");
+    command.add_option("--noise-target", options.noiseTarget,
+                       "override the reflection reference's noise target: past --spp, a frame samples the "
+                       "pixels whose relative standard error is at or above it (0: none)")
+        ->check(CLI::Range(0.0, 1.0));
+    command.add_option("--max-spp", options.maxSpp,
+                       "override the most reflection reference samples a pixel takes in a frame with a "
+                       "noise target");
+    command.add_option("--noise-target-alpha-below", options.noiseTargetAlphaBelow,
+                       "override the GGX alpha below which pixels take samples for the noise target")
+        ->check(CLI::Range(0.0, 1.0));
     command.add_option("--seed", options.seed, "override the scene's seed");
 }
 
@@ -44,6 +54,9 @@ int runSimulate(SimulateOptions options, bool validate) {
     }
     if (options.frames > 0) scene.frameCount = options.frames;
     if (options.spp > 0) scene.reference.samplesPerPixel = options.spp;
+    if (options.noiseTarget) scene.reference.noiseTarget = *options.noiseTarget;
+    if (options.maxSpp) scene.reference.maxSamplesPerPixel = *options.maxSpp;
+    if (options.noiseTargetAlphaBelow) scene.reference.noiseTargetAlphaBelow = *options.noiseTargetAlphaBelow;
     if (options.seed) scene.seed = *options.seed;
 
     gpu::ContextOptions contextOptions;
@@ -61,6 +74,10 @@ int runSimulate(SimulateOptions options, bool validate) {
                                         {"height", scene.height},
                                         {"frames", scene.frameCount},
                                         {"referenceSpp", scene.reference.samplesPerPixel},
+                                        {"referenceSamples", sim.referenceSamples},
+                                        {"referenceNoiseTarget", scene.reference.noiseTarget},
+                                        {"referenceMaxSpp", scene::maxReferenceSamples(scene.reference)},
+                                        {"referenceNoiseTargetAlphaBelow", scene.reference.noiseTargetAlphaBelow},
                                         {"seed", scene.seed}};
         const std::filesystem::path simulationPath =
             std::filesystem::path(options.outDir) / "simulation.json";

@@ -23,14 +23,19 @@ struct Png {
     std::uint32_t width = 0;
 };
 
-// Reads the whole file and checks the PNG signature and the IHDR chunk that must follow it,
+// The figure's PNG (its bytes, or the whole file) with the signature and the IHDR chunk that must follow it checked,
 // from which the width is taken (big-endian at byte 16).
-Png readPng(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) fail(path, "cannot open figure for reading");
+Png readPng(const Figure& figure) {
+    const std::string& path = figure.pngPath;
     Png png;
-    png.bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    if (in.bad()) fail(path, "cannot read figure");
+    if (!figure.pngBytes.empty()) {
+        png.bytes = figure.pngBytes;
+    } else {
+        std::ifstream in(path, std::ios::binary);
+        if (!in) fail(path, "cannot open figure for reading");
+        png.bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+        if (in.bad()) fail(path, "cannot read figure");
+    }
     static constexpr std::string_view kSignature("\x89PNG\r\n\x1a\n", 8);
     if (png.bytes.size() < 24 || std::string_view(png.bytes).substr(0, 8) != kSignature ||
         std::string_view(png.bytes).substr(12, 4) != "IHDR")
@@ -55,11 +60,12 @@ void appendParagraphs(std::string& out, std::string_view text) {
 }
 
 void appendFigure(std::string& out, const Figure& figure) {
-    const Png png = readPng(figure.pngPath);
+    const Png png = readPng(figure);
     std::string style;
     std::uint32_t shownWidth = png.width;
-    if (png.width < kMinFigureWidth) {
-        const std::uint32_t scale = (kMinFigureWidth + png.width - 1) / png.width;
+    const std::uint32_t minWidth = figure.minWidth > 0 ? figure.minWidth : kMinFigureWidth;
+    if (png.width < minWidth) {
+        const std::uint32_t scale = (minWidth + png.width - 1) / png.width;
         shownWidth = png.width * scale;
         style = " class=\"pixelated\"";
     }
@@ -173,17 +179,18 @@ std::string renderHtml(const Report& report) {
     }
     for (const Section& section : report.sections) {
         out += "<section>\n<h2>" + htmlEscape(section.heading) + "</h2>\n";
-        appendParagraphs(out, section.text);
-        if (!section.plots.empty()) {
-            out += "<div class=\"figures\">\n";
-            for (const Plot& plot : section.plots) out += renderSvgPlot(plot) + "\n";
-            out += "</div>\n";
-        }
+        appendParagraphs(out, section.lead);
         if (!section.figures.empty()) {
             out += "<div class=\"figures\">\n";
             for (const Figure& figure : section.figures) appendFigure(out, figure);
             out += "</div>\n";
         }
+        if (!section.plots.empty()) {
+            out += "<div class=\"figures\">\n";
+            for (const Plot& plot : section.plots) out += renderSvgPlot(plot) + "\n";
+            out += "</div>\n";
+        }
+        appendParagraphs(out, section.text);
         for (const Table& table : section.tables) appendTable(out, table);
         out += "</section>\n";
     }

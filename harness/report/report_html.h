@@ -5,6 +5,7 @@
 
 #include "report/report_plot.h"
 
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -14,7 +15,11 @@ namespace glint::report {
 
 struct Figure {
     std::string caption;
-    std::string pngPath; // read when the report is written and embedded
+    std::string pngPath;  // read when the report is written and embedded
+    std::string pngBytes; // a PNG made in memory, embedded instead of pngPath's (which then names it)
+    // Shown at least this wide, scaled up by the smallest integer factor reaching it with each
+    // pixel a sharp square; 0: 256 px.
+    std::uint32_t minWidth = 0;
 };
 
 struct Table {
@@ -22,12 +27,14 @@ struct Table {
     std::vector<std::vector<std::string>> rows;
 };
 
+// Shown in this order: heading, lead, figures, plots, text, tables.
 struct Section {
     std::string heading;
     std::string text; // blank lines separate paragraphs; single newlines are kept as line breaks
     std::vector<Figure> figures;
     std::vector<Table> tables;
-    std::vector<Plot> plots; // inline SVG, shown before the figures
+    std::vector<Plot> plots; // inline SVG
+    std::string lead;        // as text, right under the heading
 };
 
 struct Report {
@@ -43,7 +50,7 @@ std::string base64Encode(std::string_view bytes);
 std::string htmlEscape(std::string_view text);
 
 // The page as a string. Figures of a section sit side by side and wrap; an image narrower
-// than 256 px is scaled up by the smallest integer factor reaching 256 px, with
+// than its figure's minWidth is scaled up by the smallest integer factor reaching it, with
 // image-rendering: pixelated so each pixel stays a sharp square. Throws std::runtime_error
 // "<pngPath>: <problem>" when a figure's file cannot be read or is not a PNG.
 std::string renderHtml(const Report& report);

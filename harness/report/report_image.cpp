@@ -10,6 +10,8 @@
 #include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfOutputFile.h>
 #include <png.h>
+#include <sstream>
+#include <stdexcept>
 
 #include <algorithm>
 #include <array>
@@ -279,6 +281,45 @@ void writeRgbPng(const std::string& path, std::uint32_t width, std::uint32_t hei
         if (!ok) fail(path, "cannot write PNG: " + message);
         if (!closed) fail(path, std::string("cannot write PNG: ") + std::strerror(errno));
     });
+}
+
+std::string encodeRgbPng(const std::string& what, const RgbImage& image) {
+    if (auto problem = capture::checkDimensions(image.width, image.height)) fail(what, *problem);
+    if (image.rgb.size() != std::size_t{image.width} * image.height * 3)
+        fail(what, std::to_string(image.rgb.size()) + " bytes for an RGB image of " +
+                       std::to_string(image.width) + "x" + std::to_string(image.height));
+    png_image png{};
+    png.version = PNG_IMAGE_VERSION;
+    png.width = image.width;
+    png.height = image.height;
+    png.format = PNG_FORMAT_RGB;
+    png_alloc_size_t size = 0; // first call: the size the PNG needs
+    int ok = png_image_write_to_memory(&png, nullptr, &size, 0, image.rgb.data(), 0, nullptr);
+    std::string bytes(ok ? size : 0, '\0');
+    if (ok) ok = png_image_write_to_memory(&png, bytes.data(), &size, 0, image.rgb.data(), 0, nullptr);
+    const std::string message = png.message;
+    png_image_free(&png);
+    if (!ok) fail(what, "cannot encode PNG: " + message);
+    bytes.resize(size);
+    return bytes;
+}
+
+RgbImage cropScaled(const RgbImage& image, std::uint32_t x, std::uint32_t y, std::uint32_t width,
+                    std::uint32_t height, std::uint32_t scale) {
+    if (scale == 0 || width == 0 || height == 0 || x + width > image.width || y + height > image.height) {
+        std::ostringstream problem;
+        problem << "cropScaled: a window of " << width << "x" << height << " at (" << x << ", " << y
+                << ") scaled by " << scale << " does not fit an image of " << image.width << "x" << image.height;
+        throw std::invalid_argument(problem.str());
+    }
+    RgbImage out{width * scale, height * scale, std::vector<std::uint8_t>(std::size_t{width} * height * scale * scale * 3)};
+    for (std::uint32_t row = 0; row < out.height; ++row)
+        for (std::uint32_t column = 0; column < out.width; ++column) {
+            const std::size_t from = ((std::size_t{y} + row / scale) * image.width + x + column / scale) * 3;
+            const std::size_t to = (std::size_t{row} * out.width + column) * 3;
+            for (std::size_t c = 0; c < 3; ++c) out.rgb[to + c] = image.rgb[from + c];
+        }
+    return out;
 }
 
 RgbImage readRgbPng(const std::string& path) {

@@ -75,6 +75,12 @@ void writeRgbPng(const std::string& path, std::uint32_t width, std::uint32_t hei
                  const std::vector<std::uint8_t>& rgb);
 // Reads any PNG as 8-bit RGB (alpha dropped, grey expanded).
 RgbImage readRgbPng(const std::string& path);
+// `image` as the bytes of an 8-bit RGB PNG file; `what` names it in the one-line error.
+std::string encodeRgbPng(const std::string& what, const RgbImage& image);
+// The `width` x `height` window of `image` at (x, y), every pixel repeated `scale` times in
+// both directions (nearest filtering). The window must lie inside the image and scale >= 1.
+RgbImage cropScaled(const RgbImage& image, std::uint32_t x, std::uint32_t y, std::uint32_t width,
+                    std::uint32_t height, std::uint32_t scale);
 
 // Writes a single-part scanline OpenEXR file with one FLOAT channel per image channel, named
 // by channelNames (in the image's interleaved order; OpenEXR itself stores them sorted),

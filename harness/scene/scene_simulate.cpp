@@ -85,25 +85,51 @@ ResourceUse write(const char* binding, const char* resource) {
 
 // Samples per reference dispatch. llvmpipe stops any invocation after 65535 loop iterations
 // in all, which silently truncated the references at 64 spp and more (every ray's BVH walk is
-// a loop; a reflection sample also shades its hit with 16 shadow rays). Chunks keep each
-// invocation far below that; the shaders accumulate across chunks in the output image.
-constexpr std::uint32_t kReflectionChunk = 4;
+// a loop). Chunks keep each invocation far below that; the shaders accumulate across chunks.
+// A reflection sample traces 2 + lights rays: a chunk traces at most 64 of them.
+std::uint32_t reflectionChunk(const Scene& scene) {
+    return std::clamp<std::uint32_t>(64u / (2u + static_cast<std::uint32_t>(scene.lights.size())), 1u, 16u);
+}
 constexpr std::uint32_t kShadowChunk = 16;
 
-// A reference pass as ceil(total / chunk) dispatches, "name", "name#2", ...: the first writes
-// the image, the later ones read and update it; their times add up under "name".
+// A reference pass as dispatches "name", "name#2", ... of at most `chunk` samples, covering
+// [0, baseline) and then [baseline, total): each reads and updates the accumulating images,
+// which also hold the samples of the run's earlier frames (sampleBase); their times add up
+// under "name".
 void addChunkedPasses(EffectPlan& plan, const char* name, const char* pipeline, std::vector<ResourceUse> uses,
-                      GLINT_SceneConstants constants, std::uint32_t total, std::uint32_t chunk,
-                      std::uint32_t width, std::uint32_t height) {
+                      GLINT_SceneConstants constants, std::uint32_t baseline, std::uint32_t total,
+                      std::uint32_t chunk, std::uint32_t width, std::uint32_t height) {
     constants.sampleTotal = total;
-    for (std::uint32_t start = 0; start < total; start += chunk) {
+    std::uint32_t count = 0;
+    for (std::uint32_t start = 0; start < total; ++count) {
+        const std::uint32_t end = start < baseline ? std::min(start + chunk, baseline) : std::min(start + chunk, total);
         constants.sampleStart = start;
-        constants.samples = std::min(chunk, total - start);
-        if (start > 0) uses.back().access = Access::ReadWrite;
+        constants.samples = end - start;
         Pass pass = makePass(name, pipeline, uses, constants, width, height);
-        if (start > 0) pass.name += "#" + std::to_string(start / chunk + 1);
+        if (count > 0) pass.name.append("#").append(std::to_string(count + 1));
         plan.passes.push_back(std::move(pass));
+        start = end;
     }
+}
+
+template <typename T> void appendBytes(std::string& out, const T* values, std::size_t count) {
+    out.append(reinterpret_cast<const char*>(values), sizeof(T) * count);
+}
+
+// Everything a frame's references depend on besides the frame's index, as bytes: the camera,
+// the geometry as traced and the lights. Frames with the same state have references of the
+// same mean, so the references accumulate over them.
+std::string frameState(const capture::Mat4& viewProjection, const std::array<float, 3>& eye, const Bvh& bvh,
+                       const std::vector<shaders::SceneObject>& objects,
+                       const std::vector<shaders::SceneLight>& lights) {
+    std::string state;
+    appendBytes(state, viewProjection.m.data(), viewProjection.m.size());
+    appendBytes(state, eye.data(), eye.size());
+    appendBytes(state, bvh.nodes.data(), bvh.nodes.size());
+    appendBytes(state, bvh.primitives.data(), bvh.primitives.size());
+    appendBytes(state, objects.data(), objects.size());
+    appendBytes(state, lights.data(), lights.size());
+    return state;
 }
 
 // The passes of one frame and the images they write. Which passes exist depends only on
@@ -144,8 +170,15 @@ EffectPlan planFrame(const Scene& scene, const GLINT_SceneConstants& base,
             uses = shading;
             uses.push_back(read("g_scene_environment_sampling"));
             uses.push_back(write("g_reflection", "reference.reflection"));
+            uses.push_back({"g_reflection_sum", "reference.reflection_sum", Access::ReadWrite});
+            uses.push_back({"g_reflection_moments", "reference.reflection_moments", Access::ReadWrite});
+            uses.push_back({"g_roughness", "roughness", Access::Read});
+            c.referenceFrameSamples = scene.reference.samplesPerPixel;
+            c.referenceNoiseTarget = scene.reference.noiseTarget;
+            c.referenceNoiseAlphaBelow = scene.reference.noiseTargetAlphaBelow;
             addChunkedPasses(plan, "reference.reflection", "scene_reflection", uses, c,
-                             scene.reference.samplesPerPixel, kReflectionChunk, w, h);
+                             scene.reference.samplesPerPixel, maxReferenceSamples(scene.reference),
+                             reflectionChunk(scene), w, h);
             outputs.push_back(
                 {"reference.reflection", "reference.reflection", Format::RGBA32Float, {"R", "G", "B"}});
         }
@@ -165,13 +198,18 @@ EffectPlan planFrame(const Scene& scene, const GLINT_SceneConstants& base,
         if (scene.reference.shadows) {
             c.passSalt = 0x53484432u;
             uses = common;
-            uses.push_back(write("g_visibility", "reference.shadow"));
-            addChunkedPasses(plan, "reference.shadow", "scene_shadow", uses, c,
+            uses.push_back({"g_visibility", "reference.shadow", Access::ReadWrite});
+            addChunkedPasses(plan, "reference.shadow", "scene_shadow", uses, c, scene.reference.samplesPerPixel,
                              scene.reference.samplesPerPixel, kShadowChunk, w, h);
             outputs.push_back({"reference.shadow", "reference.shadow", Format::R32Float, {"Y"}});
         }
     }
     for (const OutputImage& out : outputs) plan.images.push_back({out.resource, w, h, 1, out.format});
+    if (reflections && scene.reference.reflections)
+    {
+        plan.images.push_back({"reference.reflection_sum", w, h, 1, Format::RGBA32Float});
+        plan.images.push_back({"reference.reflection_moments", w, h, 1, Format::RG32Float});
+    }
     return plan;
 }
 
@@ -330,6 +368,10 @@ Simulation simulate(const gpu::Context& context, const Scene& scene) {
     std::vector<OutputImage> outputs;
     std::vector<std::size_t> passSlot; // plan pass -> sim.passes entry (chunks share one)
     std::uint32_t framesWithLostSurfaces = 0;
+    // The run of unchanged frames the references accumulate over: its first frame, the samples
+    // per pixel its earlier frames traced, and the state of the previous frame.
+    std::uint32_t runFirstFrame = 0, runSamples = 0;
+    std::string previousState;
     for (std::uint32_t frame = 0; frame < scene.frameCount; ++frame) {
         const FrameCamera cam = cameraAt(scene, frame);
         FrameGeometry geometry = buildGeometry(scene, meshes, frame);
@@ -337,15 +379,25 @@ Simulation simulate(const gpu::Context& context, const Scene& scene) {
         Bvh bvh = buildBvh(std::move(geometry.primitives));
         if (bvh.primitives.empty()) bvh.primitives.push_back({}); // never read: the root is an empty leaf
         if (geometry.objects.empty()) geometry.objects.push_back({});
+        const std::vector<shaders::SceneLight> packedLights = packLights(lightsAt(scene, frame));
+        const capture::Mat4 vp = capture::viewProjection(cam.camera);
+        std::string state = frameState(vp, cam.eye, bvh, geometry.objects, packedLights);
+        if (frame == 0 || !scene.reference.accumulate || state != previousState) {
+            runFirstFrame = frame;
+            runSamples = 0;
+        }
+        previousState = std::move(state);
+        sim.referenceSamples.push_back(runSamples + scene.reference.samplesPerPixel);
 
         GLINT_SceneConstants c{};
-        const capture::Mat4 vp = capture::viewProjection(cam.camera);
         storeRows(c.viewProjection, vp);
         storeRows(c.invViewProjection, *capture::inverse(vp));
         storeRows(c.prevViewProjection, cam.camera.prevViewProjection);
         c.eye = {cam.eye[0], cam.eye[1], cam.eye[2], 1.0f};
         c.size = {scene.width, scene.height};
         c.frameIndex = frame;
+        c.sampleBase = runSamples;
+        c.sequenceFrame = runFirstFrame;
         c.seed = scene.seed;
         c.lightCount = static_cast<std::uint32_t>(scene.lights.size());
         c.samples = 1;
@@ -388,7 +440,7 @@ Simulation simulate(const gpu::Context& context, const Scene& scene) {
         vk::Buffer objects = uploadStorage(context, geometry.objects);
         res.buffers.push_back(objects);
         // Keyframed lights move: the shadow layers, references and shading all read this frame's.
-        vk::Buffer lights = uploadStorage(context, packLights(lightsAt(scene, frame)));
+        vk::Buffer lights = uploadStorage(context, packedLights);
         res.buffers.push_back(lights);
         vk::ResourceTable table = gpu::resourceTable(res.owned, {{"g_scene_environment", &res.environment}});
         table.buffers["g_scene_nodes"] = &nodes;
@@ -430,6 +482,7 @@ Simulation simulate(const gpu::Context& context, const Scene& scene) {
         sim.surfacesAtBackgroundDepth += lost;
         framesWithLostSurfaces += lost > 0;
         sim.frames.push_back(std::move(f));
+        runSamples += scene.reference.samplesPerPixel;
         // This frame's geometry and lights are done with; the executor waited in executePlan.
         for (int i = 0; i < 4; ++i) {
             vk::destroyBuffer(context.device, res.buffers.back());

@@ -25,6 +25,9 @@ struct Simulation {
     std::vector<std::string> layers;                 // layers written into every frame
     std::vector<PassTime> passes;                    // passes run for every frame, in order
     std::size_t primitives = 0;                      // of the first frame
+    // Per frame, the samples per pixel behind its references: the scene's spp times the frames
+    // of the run of unchanged frames it ends (ReferenceDesc::accumulate).
+    std::vector<std::uint32_t> referenceSamples;
     // Surface pixels (over all frames) whose device depth the background test (within 1e-6 of
     // the far value, docs/conventions.md §2.2) takes for the sky: they replay as sky.
     std::size_t surfacesAtBackgroundDepth = 0;

@@ -117,7 +117,24 @@ struct ReferenceDesc {
     // Reflection references pair each GGX sample with a sample of the environment map's
     // brightness, combined by multiple importance sampling (docs/scenes.md).
     bool environmentSampling = true;
+    // Frames whose camera, geometry and lights are all those of the previous frame continue its
+    // references: a frame's reference is the mean of every sample since the last change.
+    bool accumulate = true;
+    // Reflection references: past samplesPerPixel, a frame samples the pixels whose estimate's
+    // relative standard error (over max(luminance, 0.05)) is still at or above noiseTarget, up
+    // to maxSamplesPerPixel samples in the frame (0: samplesPerPixel). noiseTarget 0: none.
+    float noiseTarget = 0.0f;
+    std::uint32_t maxSamplesPerPixel = 0;
+    // Only pixels whose GGX alpha is below this take samples past samplesPerPixel (the scored
+    // reflections cover alpha below roughnessThreshold); 1: every pixel.
+    float noiseTargetAlphaBelow = 1.0f;
 };
+
+// The most samples a pixel's reflection reference takes in a frame.
+inline std::uint32_t maxReferenceSamples(const ReferenceDesc& reference) {
+    return reference.noiseTarget > 0.0f ? std::max(reference.maxSamplesPerPixel, reference.samplesPerPixel)
+                                        : reference.samplesPerPixel;
+}
 
 struct Scene {
     std::filesystem::path file; // where it was loaded from (for messages), may be empty

@@ -110,11 +110,27 @@ GLINT_CONSTANTS_BEGIN(GLINT_SceneConstants)
     // samples [sampleStart, sampleStart + samples) of sampleTotal and accumulates into the image.
     uint sampleStart;
     uint sampleTotal;
+    // References accumulate over a run of frames whose camera, geometry and lights are all
+    // unchanged: sampleBase samples per pixel came from the run's earlier frames (0 on its first
+    // frame, which starts afresh), and sequenceFrame, the run's first frame, seeds the random
+    // numbers that the run's samples share.
+    uint sampleBase;
+    uint sequenceFrame;
     uint environmentSampling; // 1: reflection references also sample the environment map (MIS)
     // A sphere shadow light's tan(angular radius) as the camera sees it, the frame's
     // glint.shadowLightTanHalfAngle: its blocker layer is scaled to it (scene_shadow.cs.hlsl).
     // 0 for a directional light, whose blocker distances stay as they are.
     float shadowLightTanReference;
+    // Reflection references: every pixel's samples a frame (the later chunks of the frame, up
+    // to sampleTotal, sample only pixels whose estimate's relative standard error is at or
+    // above referenceNoiseTarget; 0: none do).
+    uint referenceFrameSamples;
+    float referenceNoiseTarget;
+    // Only pixels whose GGX alpha is below this take the samples past referenceFrameSamples.
+    float referenceNoiseAlphaBelow;
+    uint constantsPadding0;
+    uint constantsPadding1;
+    uint constantsPadding2;
 GLINT_CONSTANTS_END(GLINT_SceneConstants);
 
 #ifdef __cplusplus
@@ -126,7 +142,7 @@ static_assert(sizeof(SceneLight) == 32);
 static_assert(sizeof(SceneEnvironmentSample) == 16);
 static_assert(offsetof(GLINT_SceneConstants, eye) == 192);
 static_assert(offsetof(GLINT_SceneConstants, size) == 208);
-static_assert(sizeof(GLINT_SceneConstants) == 272);
+static_assert(sizeof(GLINT_SceneConstants) == 304);
 } // namespace glint::shaders
 #endif
 

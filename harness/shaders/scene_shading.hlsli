@@ -51,20 +51,33 @@ float3 SceneBrdfCos(SceneSurface s, float3 v, float3 l, float alphaFloor)
     return (diffuse + d * vis * fresnel) * nl;
 }
 
-// Radiance leaving surface s toward v (unit, pointing away from the surface). Visibility's
-// random numbers depend only on the point, so the same point shades the same way whether a
-// camera ray or a reflection ray found it.
-float3 SceneShade(SceneSurface s, float3 v)
+// Radiance leaving surface s toward v (unit, pointing away from the surface), with the
+// visibility of every light from `strata` of its g_scene.shadowSamples cone samples: all of
+// them, or one picked by `pick` (uniform in [0, 1); light i turns it by i golden-ratio steps),
+// whose mean over the pick is the all-strata value.
+// The stratification's random numbers depend only on the point, so the same point shades the
+// same way whether a camera ray or a reflection ray found it.
+float3 SceneShadeStrata(SceneSurface s, float3 v, bool oneStratum, float pick)
 {
     float3 radiance = s.emissive;
     uint rng = SceneHash(asuint(s.position.x) ^ SceneHash(asuint(s.position.y) ^ SceneHash(asuint(s.position.z))));
+    uint total = max(g_scene.shadowSamples, 1u);
     for (uint i = 0; i < g_scene.lightCount; ++i) {
         SceneLightCone c = SceneLightConeAt(i, s.position);
         float3 f = SceneBrdfCos(s, v, c.axis, max(0.5 * c.sinHalf, 1e-3));
         if (all(f <= 0.0)) continue;
-        radiance += f * c.irradiance * SceneVisibility(s.position, s.normal, c, g_scene.shadowSamples, rng);
+        uint first = oneStratum ? min(uint(frac(pick + 0.618034 * float(i)) * float(total)), total - 1u) : 0u;
+        uint count = oneStratum ? 1u : total;
+        float visible = SceneVisibilitySum(s.position, s.normal, c, first, count, total, rng);
+        radiance += f * c.irradiance * (visible / float(count));
     }
     return radiance;
+}
+
+// The colour buffer's shading: every stratum of every light.
+float3 SceneShade(SceneSurface s, float3 v)
+{
+    return SceneShadeStrata(s, v, false, 0.0);
 }
 
 // Radiance arriving at `origin` from direction `dir`.
@@ -74,6 +87,12 @@ float3 SceneRadianceAlong(float3 origin, float3 dir)
     if (hit.t < 0.0) return SceneEnvironment(dir);
     SceneSurface s = SceneSurfaceAt(hit, origin, dir);
     return SceneShade(s, -dir);
+}
+
+// Rec. 709 luminance, as the error metrics weigh colour (replay_error.h).
+float SceneLuminance(float3 c)
+{
+    return dot(c, float3(0.2126, 0.7152, 0.0722));
 }
 
 // Replaces non-finite values so that nothing non-finite leaves a pass.

@@ -1,7 +1,8 @@
 // Visibility of light g_scene.shadowLight from the primary hit, averaged over g_scene.samples
 // cone samples toward the light's disc: 1 sample = the noisy `shadow` layer, many = the
 // `reference.shadow` layer, run in chunks (sampleStart, sampleTotal) that accumulate a running
-// mean in the image. New random numbers every frame (frameIndex seeds them).
+// mean in the image, over a run of unchanged frames too (sampleBase). New random numbers every
+// frame (frameIndex seeds them).
 // Background pixels are lit (1).
 // Permutation "blocker" (SCENE_WRITE_BLOCKER=1, one sample per pixel): also writes the distance
 // along the sample's ray to the closest blocker into g_blocker (0 when lit or on the background),
@@ -56,9 +57,12 @@ GLINT_BINDING(5, 0) GLINT_IMAGE_FORMAT(r32f) RWTexture2D<float> g_blocker;
 #else
         float sum = SceneVisibilitySum(position, normal, SceneLightConeAt(g_scene.shadowLight, position),
                                        g_scene.sampleStart, g_scene.samples, g_scene.sampleTotal, rng);
-        // Running mean over the chunks so far (the image holds the previous chunks' mean).
-        float previous = g_scene.sampleStart == 0 ? 0.0 : g_visibility[id.xy] * float(g_scene.sampleStart);
-        visibility = (previous + sum) / float(max(g_scene.sampleStart + g_scene.samples, 1u));
+        // Running mean over the samples so far: the frame's earlier chunks and, over a run of
+        // unchanged frames, the run's earlier frames (each frame its own stratification); the
+        // image holds their mean.
+        uint earlier = g_scene.sampleBase + g_scene.sampleStart;
+        float previous = earlier == 0u ? 0.0 : g_visibility[id.xy] * float(earlier);
+        visibility = (previous + sum) / float(max(earlier + g_scene.samples, 1u));
 #endif
     }
     g_visibility[id.xy] = visibility;

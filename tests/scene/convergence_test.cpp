@@ -31,7 +31,8 @@ double rmse(const std::vector<float>& a, const std::vector<float>& b) {
 }
 
 // `stratified`: the estimator stratifies its samples, so the error may fall faster than
-// 1/sqrt(spp) (shadow cones are stratified in cos theta); only the lower bound applies.
+// 1/sqrt(spp) (shadow cones are stratified in cos theta, reflection lobes sampled by a
+// low-discrepancy sequence); only the lower bound applies.
 void checkConvergence(const Scene& scene, const char* layer, bool stratified) {
     const std::vector<float> truth = render(scene, layer, 1024, 1000);
     const double e4 = rmse(render(scene, layer, 4, 1), truth);
@@ -48,7 +49,9 @@ void checkConvergence(const Scene& scene, const char* layer, bool stratified) {
     }
 }
 
-TEST_CASE("reference.reflection converges like 1/sqrt(spp)", "[scene][gpu]") {
+// The reflection reference draws its samples from a randomly shifted Kronecker sequence
+// (scene_reflection.cs.hlsl), which may converge faster than 1/sqrt(spp): the lower bound.
+TEST_CASE("reference.reflection converges at least like 1/sqrt(spp)", "[scene][gpu]") {
     Scene scene = test::analyticScene(24, 14, 1);
     scene.effects = {Effect::Reflections};
     scene.reference.reflections = true;
@@ -59,7 +62,7 @@ TEST_CASE("reference.reflection converges like 1/sqrt(spp)", "[scene][gpu]") {
     // Likewise no sharp highlights on reflected surfaces: the metal sphere becomes rough.
     scene.materials[2].metallic = 0.0f;
     scene.materials[2].roughness = 0.8f;
-    checkConvergence(scene, "reference.reflection", false);
+    checkConvergence(scene, "reference.reflection", true);
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }
 
