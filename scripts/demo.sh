@@ -10,7 +10,7 @@
 #     reflections, more samples (up to GLINT_DEMO_MAX_SPP a frame) on the scored pixels (GGX
 #     alpha below 0.2) whose relative standard error is still above GLINT_DEMO_NOISE_TARGET;
 #     then again with an independent seed (2) for the reference noise floor. The defaults
-#     follow the selected device: on a CPU (lavapipe) 320x180, 8, 64 and 0.002, sized to
+#     follow the selected device: on a CPU (lavapipe) 320x180, 8, 24 and 0.005, sized to
 #     finish within ten minutes on two cores (docs/performance.md, "The demo's simulations on
 #     a 2-core machine"); on a discrete GPU 960x540, 64, 256 and 0.001. A capture is simulated
 #     again only when its scene file, the simulator or these settings changed (demo_key in its
@@ -39,7 +39,7 @@ if "$glint" devices 2>/dev/null | grep -A1 '^\*' | head -n 1 | grep -q '(discret
   size=${GLINT_DEMO_SIZE:-960x540} spp=${GLINT_DEMO_SPP:-64} max_spp=${GLINT_DEMO_MAX_SPP:-256}
   noise_target=${GLINT_DEMO_NOISE_TARGET:-0.001}
 else
-  size=${GLINT_DEMO_SIZE:-320x180} spp=${GLINT_DEMO_SPP:-8} max_spp=${GLINT_DEMO_MAX_SPP:-32}
+  size=${GLINT_DEMO_SIZE:-320x180} spp=${GLINT_DEMO_SPP:-8} max_spp=${GLINT_DEMO_MAX_SPP:-24}
   noise_target=${GLINT_DEMO_NOISE_TARGET:-0.005}
 fi
 frames=${GLINT_DEMO_FRAMES:-16}

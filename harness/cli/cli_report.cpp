@@ -397,11 +397,14 @@ int runReport(ReportOptions options, bool) {
         report::Section overview;
         overview.heading = "Summary: the last frame of every run";
         overview.lead =
-            "Errors against each run's reference in its effect's metric (the run's section says which), "
-            "the reference noise floor (the reference against a second one of another seed), whether the "
-            "references resolve the difference between the output's error and its noisy input's, LDR-FLIP "
-            "(\"-\" where not computed), the error over moving edges (visibility effects), the effect's GPU "
-            "time on this device and the reference's samples per pixel.";
+            "The last frame of each run: the error of the noisy input and of the output against the run's "
+            "reference, in its effect's metric (the run's section says which); the reference floor (the "
+            "reference against a second one of another seed, same metric); converged: the floor is below a "
+            "quarter of |output error - noisy input's error| (where the two are equal, below a quarter of "
+            "the error); output - noisy: that difference measured against the reference and against the "
+            "second one, and whether they agree (same sign, apart by less than a quarter); LDR-FLIP (\"-\" "
+            "where not computed); the error over moving edges (visibility effects); the effect's GPU time "
+            "per frame on this device; the reference's samples per pixel behind the frame.";
         overview.tables.push_back(summaryTable(runs));
         page.sections.push_back(std::move(overview));
     }

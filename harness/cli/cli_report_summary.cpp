@@ -50,6 +50,23 @@ std::string lastFrameSamples(const nlohmann::json& summary) {
     return std::isnan(spp) ? std::string("-") : fixed(spp, 0);
 }
 
+// Whether an independent reference says the same of the difference: first, the output's error
+// minus its noisy input's against the capture's reference; second, against the second
+// reference. "yes" when they have the same sign and differ by less than a quarter of the first.
+std::string pairedVerdict(double first, double second) {
+    if (std::isnan(first) || std::isnan(second)) return "-";
+    if (first == 0.0 && second == 0.0) return "yes (no difference)";
+    if ((first < 0.0) == (second < 0.0) && std::abs(first - second) < 0.25 * std::abs(first)) return "yes";
+    return "no";
+}
+
+// A convergence verdict in a few words: the numbers behind a "no" are in the row.
+std::string shortVerdict(const std::string& verdict) {
+    if (verdict.rfind("no", 0) == 0) return "no";
+    if (verdict == "yes (output = noisy input)") return "yes (output = input)";
+    return verdict;
+}
+
 } // namespace
 
 double valueOr(const nlohmann::json& object, const char* key) {
@@ -70,11 +87,11 @@ std::string convergence(double floor, double output, double noisy) {
 }
 
 report::Table summaryTable(const std::vector<std::pair<std::filesystem::path, nlohmann::json>>& runs) {
-    report::Table table{{"scene", "effect", "noisy input error", "output error", "reference floor",
-                         "converged (floor below a quarter of the difference)", "FLIP, output / noisy",
-                         "moving edges, output / noisy", "GPU time per frame (us)",
-                         "reference spp, last frame"},
-                        {}};
+    report::Table table{{"scene", "effect", "noisy input error", "output error", "reference floor", "converged",
+                         "output - noisy, ref. 1 / ref. 2", "refs agree", "FLIP output / noisy",
+                         "moving edges output / noisy", "GPU us / frame", "ref. spp"},
+                        {},
+                        true};
     for (const auto& [dir, summary] : runs) {
         if (!summary.contains("error") || !summary.at("error").is_object()) continue;
         const nlohmann::json frames = summary.value("frames", nlohmann::json::array());
@@ -85,8 +102,13 @@ report::Table summaryTable(const std::vector<std::pair<std::filesystem::path, nl
             const double output = valueOr(values, "last");
             const double noisy = valueOr(values, "noisyLast");
             const double floor = valueOr(values, "referenceNoiseLast");
+            const double first = valueOr(error, "mean") - valueOr(error, "noisyMean");
+            const double second = valueOr(
+                last.value("referenceNoise", nlohmann::json::object()).value(effect, nlohmann::json::object()),
+                "differenceAgainstSecond");
             table.rows.push_back({dir.filename().string(), effect, shown(noisy), shown(output), shown(floor),
-                                  convergence(floor, output, std::isnan(noisy) ? -1.0 : noisy),
+                                  shortVerdict(convergence(floor, output, std::isnan(noisy) ? -1.0 : noisy)),
+                                  pair(first, second), pairedVerdict(first, second),
                                   pair(valueOr(values, "flipLast"), valueOr(values, "noisyFlipLast")),
                                   pair(valueOr(error, "movingEdge"), valueOr(error, "noisyMovingEdge")),
                                   shown(effectMicroseconds(summary, effect), 1), lastFrameSamples(summary)});

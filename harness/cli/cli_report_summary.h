@@ -26,7 +26,9 @@ double valueOr(const nlohmann::json& object, const char* key);
 std::string convergence(double floor, double output, double noisy);
 
 // One row per run and scored effect: the noisy input's and the output's error on the last frame,
-// the reference noise floor, the convergence verdict, FLIP of both, the error over moving edges
+// the reference noise floor, the convergence verdict, the difference of the two errors against
+// the capture's reference and against the second one and whether they agree (same sign, apart
+// by less than a quarter), FLIP of both, the error over moving edges
 // of both (visibility effects), the effect's GPU time per frame (the sum of its passes' medians)
 // and the reference's samples per pixel on the last frame.
 report::Table summaryTable(const std::vector<std::pair<std::filesystem::path, nlohmann::json>>& runs);

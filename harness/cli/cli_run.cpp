@@ -211,6 +211,9 @@ int runRun(ReplayOptions options, bool validate) {
                         {"rmse", scoredOrNull(any, noise.rmse)},
                         {"maeClamped", scoredOrNull(any, noise.maeClamped)},
                         {"rmseClamped", scoredOrNull(any, noise.rmseClamped)}};
+                    if (!std::isnan(noise.differenceAgainstSecond))
+                        record["referenceNoise"][noise.effect]["differenceAgainstSecond"] =
+                            noise.differenceAgainstSecond;
                     noiseFloors[noise.effect] = any ? noise.mean : std::numeric_limits<double>::quiet_NaN();
                     // The second reference itself, for scores computed outside glint
                     // (scripts/run_flip.py's FLIP floor): EXR only.

@@ -229,6 +229,13 @@ std::vector<ReferenceError> referenceNoise(const capture::Frame& frame, const Fr
         const std::vector<std::uint8_t> mask = errorMask(frame, scored->mask, settings);
         noise.push_back(compare(effect, *reference, other, mask, scored->metric));
         noise.back().maskThreshold = thresholdOf(scored->mask, settings);
+        const NamedImage* output = nullptr;
+        for (const std::string& name : scored->final)
+            if (!output) output = result.find(effect + "/" + name);
+        const NamedImage* noisy = scored->noisy.empty() ? nullptr : result.find(effect + "/" + scored->noisy);
+        if (output && noisy && noisy != output && noise.back().pixels > 0)
+            noise.back().differenceAgainstSecond = compare(effect, *output, other, mask, scored->metric).mean -
+                                                   compare(effect, *noisy, other, mask, scored->metric).mean;
     }
     return noise;
 }

@@ -24,6 +24,7 @@
 #include "replay/replay_session.h"
 
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -47,6 +48,10 @@ struct ReferenceError {
     double penumbra = -1.0;   // shadows: mean |error| over penumbra pixels (-1 when there are none)
     double noisyMean = -1.0;  // the same mean for the effect's noisy input, when the output is denoised
     double noisyRmse = -1.0;  // and its rmse
+    // referenceNoise only: the output's mean error minus its noisy input's, both against the
+    // second reference (NaN without a noisy input): what the first reference says of the
+    // difference, said again by an independent one.
+    double differenceAgainstSecond = std::numeric_limits<double>::quiet_NaN();
     double nonFinite = 0.0;   // fraction of output pixels (all, not only the mask) that are not finite
     bool visibility = false;  // ErrorMetric::Visibility (penumbra and moving edges apply)
     // The mask's threshold (ErrorMask::SurfaceAlphaBelow: the value of its setting), -1 without one.
@@ -86,7 +91,8 @@ std::vector<ReferenceError> referenceErrors(const capture::Frame& frame, const F
                                             const SettingValues& settings,
                                             const capture::Frame* previous = nullptr);
 
-// The noise of the capture's own references: for every effect referenceErrors scores, the
+// The noise of the capture's own references (with differenceAgainstSecond where the effect's
+// output has a noisy input): for every effect referenceErrors scores, the
 // reference in `result` against `second`'s reference layer (the same frame rendered again with
 // an independent seed), in the same metric and over the same mask, taken from `frame`. Its
 // `mean` is the floor under which an effect's error cannot be told from zero. An effect whose

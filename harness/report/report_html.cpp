@@ -76,7 +76,7 @@ void appendFigure(std::string& out, const Figure& figure) {
 }
 
 void appendTable(std::string& out, const Table& table) {
-    out += "<table>\n";
+    out += table.compact ? "<table class=\"compact\">\n" : "<table>\n";
     if (!table.header.empty()) {
         out += "<thead><tr>";
         for (const std::string& cell : table.header) out += "<th>" + htmlEscape(cell) + "</th>";
@@ -109,6 +109,9 @@ figcaption { font-size: 0.9em; margin-top: 0.3em; max-width: 32em; }
 table { border-collapse: collapse; margin: 1em 0; font-variant-numeric: tabular-nums; }
 th, td { border: 1px solid #ccc; padding: 0.25em 0.6em; text-align: left; }
 th { background: #eee; }
+table.compact { font-size: 0.85em; }
+table.compact th, table.compact td { padding: 0.15em 0.45em; }
+table.compact td { white-space: nowrap; }
 )";
 
 } // namespace

@@ -25,6 +25,7 @@ struct Figure {
 struct Table {
     std::vector<std::string> header;
     std::vector<std::vector<std::string>> rows;
+    bool compact = false; // smaller type, cells kept on one line (a summary to read at a glance)
 };
 
 // Shown in this order: heading, lead, figures, plots, text, tables.

@@ -117,17 +117,16 @@ template <typename T> void appendBytes(std::string& out, const T* values, std::s
 }
 
 // Everything a frame's references depend on besides the frame's index, as bytes: the camera,
-// the geometry as traced and the lights. Frames with the same state have references of the
-// same mean, so the references accumulate over them.
+// the geometry as traced and the lights (not the objects' motion since the previous frame,
+// which only the motion layer reads). Frames with the same state have references of the same
+// mean, so the references accumulate over them.
 std::string frameState(const capture::Mat4& viewProjection, const std::array<float, 3>& eye, const Bvh& bvh,
-                       const std::vector<shaders::SceneObject>& objects,
                        const std::vector<shaders::SceneLight>& lights) {
     std::string state;
     appendBytes(state, viewProjection.m.data(), viewProjection.m.size());
     appendBytes(state, eye.data(), eye.size());
     appendBytes(state, bvh.nodes.data(), bvh.nodes.size());
     appendBytes(state, bvh.primitives.data(), bvh.primitives.size());
-    appendBytes(state, objects.data(), objects.size());
     appendBytes(state, lights.data(), lights.size());
     return state;
 }
@@ -175,7 +174,9 @@ EffectPlan planFrame(const Scene& scene, const GLINT_SceneConstants& base,
             uses.push_back({"g_roughness", "roughness", Access::Read});
             c.referenceFrameSamples = scene.reference.samplesPerPixel;
             c.referenceNoiseTarget = scene.reference.noiseTarget;
-            c.referenceNoiseAlphaBelow = scene.reference.noiseTargetAlphaBelow;
+            // 1 means every pixel, alpha 1 included.
+            c.referenceNoiseAlphaBelow =
+                scene.reference.noiseTargetAlphaBelow >= 1.0f ? 2.0f : scene.reference.noiseTargetAlphaBelow;
             addChunkedPasses(plan, "reference.reflection", "scene_reflection", uses, c,
                              scene.reference.samplesPerPixel, maxReferenceSamples(scene.reference),
                              reflectionChunk(scene), w, h);
@@ -381,7 +382,7 @@ Simulation simulate(const gpu::Context& context, const Scene& scene) {
         if (geometry.objects.empty()) geometry.objects.push_back({});
         const std::vector<shaders::SceneLight> packedLights = packLights(lightsAt(scene, frame));
         const capture::Mat4 vp = capture::viewProjection(cam.camera);
-        std::string state = frameState(vp, cam.eye, bvh, geometry.objects, packedLights);
+        std::string state = frameState(vp, cam.eye, bvh, packedLights);
         if (frame == 0 || !scene.reference.accumulate || state != previousState) {
             runFirstFrame = frame;
             runSamples = 0;

@@ -184,6 +184,46 @@ if(NOT still_html MATCHES "<td>0.0200</td><td>no pixels scored</td><td>no pixels
   message(FATAL_ERROR "report_still.html does not show the last frame's empty moving edges as \"no pixels scored\"")
 endif()
 
+# The summary over several runs (docs/replay.md, "glint report"): one row per run and effect.
+# The glossy room's second reference says the difference is -0.45 where the first says -0.5:
+# they agree (apart by 0.05, less than a quarter of 0.5). A shadows run whose output is its noisy
+# input (equal errors) has no difference to resolve: its floor must be below a quarter of the
+# error itself, met at 0.0002 (< 0.00025) and not at 0.0003.
+string(REPLACE "\"maeClamped\": 0.02}" "\"maeClamped\": 0.02, \"differenceAgainstSecond\": -0.45}"
+       paired_summary "${noisy_summary}")
+string(REPLACE "\"mean\": 0.2" "\"mean\": 0.0625" paired_summary "${paired_summary}")
+file(MAKE_DIRECTORY "${OUT}/paired/frame_0000" "${OUT}/paired/frame_0001")
+file(WRITE "${OUT}/paired/summary.json" "${paired_summary}")
+set(hard_summary [=[
+{
+  "capture": "captures/hard", "device": {"name": "test device", "driver": "test driver", "subgroupSize": 8},
+  "effects": ["shadows"], "settings": [], "width": 160, "height": 90,
+  "simulation": {"referenceSpp": 8, "referenceSamples": [8, 16, 24]},
+  "frames": [{"frame": 2, "folder": "frame_0002", "images": [],
+              "errors": {"shadows": {"image": "shadows/denoised", "pixels": 100, "mean": 0.001, "noisyMean": 0.001}}}],
+  "error": {"shadows": {"first": 0.001, "last": 0.001, "noisyLast": 0.001, "referenceNoiseLast": FLOOR}}
+}
+]=])
+string(REPLACE "FLOOR" "0.0002" hard_resolved "${hard_summary}")
+string(REPLACE "FLOOR" "0.0003" hard_unresolved "${hard_summary}")
+foreach(name hard_resolved hard_unresolved)
+  file(MAKE_DIRECTORY "${OUT}/${name}/frame_0002")
+  file(WRITE "${OUT}/${name}/summary.json" "${${name}}")
+endforeach()
+run_glint(0 report "${OUT}/paired" "${OUT}/hard_resolved" "${OUT}/hard_unresolved" --out "${OUT}/summary.html")
+file(READ "${OUT}/summary.html" summary_html)
+expect_all("${summary_html}" summary.html
+    "<h2>Summary: the last frame of every run</h2>"
+    "<table class=\"compact\">"
+    "<td>paired</td><td>reflections</td><td>0.8000</td><td>0.3000</td><td>0.0625</td><td>yes</td><td>-0.5000 / -0.4500</td><td>yes</td><td>-</td><td>-</td><td>-</td><td>48</td>"
+    "<td>hard_resolved</td><td>shadows</td><td>0.0010</td><td>0.0010</td><td>0.0002</td><td>yes \\(output = input\\)</td><td>0.0000 / -</td><td>-</td>"
+    "<td>24</td>"
+    "<td>hard_unresolved</td><td>shadows</td><td>0.0010</td><td>0.0010</td><td>0.0003</td><td>no</td>")
+# One run: no summary.
+if(html MATCHES "Summary: the last frame")
+  message(FATAL_ERROR "report.html of one run has a summary table")
+endif()
+
 file(WRITE "${OUT}/bad_anchors.json" "{\"points\": 3}")
 run_glint(2 report "${OUT}/glossy_room" --out "${OUT}/report_bad.html" --anchors "${OUT}/bad_anchors.json")
 if(NOT run_err MATCHES "^glint: report: [^\n]*bad_anchors.json: no \"points\" array\n?$")

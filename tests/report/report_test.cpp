@@ -453,3 +453,28 @@ TEST_CASE("the HTML report refuses a missing or non-PNG figure with one line nam
     CHECK(messageOf([&] { writeHtml((dir / "r.html").string(), report); }) == text + ": not a PNG file");
     CHECK(!std::filesystem::exists(dir / "r.html"));
 }
+
+TEST_CASE("A crop repeats each pixel scale times and encodes to a PNG that reads back the same", "[report]") {
+    RgbImage image{3, 2, {}};
+    for (std::uint8_t i = 0; i < 18; ++i) image.rgb.push_back(static_cast<std::uint8_t>(10 * i));
+    const RgbImage crop = cropScaled(image, 1, 0, 2, 2, 3);
+    REQUIRE(crop.width == 6);
+    REQUIRE(crop.height == 6);
+    // Crop pixel (cx, cy) is source pixel (1 + cx / 3, cy / 3), whose red byte is 10 * 3 * index.
+    for (std::uint32_t cy = 0; cy < 6; ++cy)
+        for (std::uint32_t cx = 0; cx < 6; ++cx) {
+            const std::uint32_t source = (cy / 3) * 3 + 1 + cx / 3;
+            INFO("crop pixel " << cx << ", " << cy);
+            CHECK(crop.rgb[(cy * 6 + cx) * 3] == 30 * source);
+        }
+    CHECK_THROWS_AS(cropScaled(image, 2, 0, 2, 1, 1), std::invalid_argument);
+    CHECK_THROWS_AS(cropScaled(image, 0, 0, 1, 1, 0), std::invalid_argument);
+
+    const auto dir = freshTestDir("crop");
+    const std::string path = (dir / "crop.png").string();
+    std::ofstream(path, std::ios::binary) << encodeRgbPng(path, crop);
+    const RgbImage back = readRgbPng(path);
+    CHECK(back.width == crop.width);
+    CHECK(back.height == crop.height);
+    CHECK(back.rgb == crop.rgb);
+}

@@ -249,6 +249,57 @@ TEST_CASE("Simulated captures are valid sequences and reruns are bit-identical",
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }
 
+double layerRmse(const Simulation& sim, std::size_t frame, const Simulation& truth, const char* layer) {
+    const auto& a = capture::findLayer(sim.frames.at(frame), layer)->pixels;
+    const auto& b = capture::findLayer(truth.frames.at(0), layer)->pixels;
+    double sum = 0.0;
+    for (std::size_t i = 0; i < a.size(); ++i) sum += (double{a[i]} - double{b[i]}) * (double{a[i]} - double{b[i]});
+    return std::sqrt(sum / static_cast<double>(a.size()));
+}
+
+TEST_CASE("References accumulate over unchanged frames and start again after a change", "[scene][gpu]") {
+    Scene still = test::analyticScene(24, 14, 4);
+    still.camera.keys.resize(1);
+    still.objects[2].keys.resize(1);
+    still.effects = {Effect::Reflections, Effect::Shadows};
+    still.lights[0].angularRadiusDegrees = 20.0f; // penumbrae wide enough to measure the noise on
+    still.reference = {true, true, 4};
+    const Simulation accumulated = simulate(test::testContext(), still);
+    CHECK(accumulated.referenceSamples == std::vector<std::uint32_t>{4, 8, 12, 16});
+    // The reflection reference continues one sequence of samples per pixel: the fourth frame at
+    // 4 samples a frame is the first frame at 16, bit for bit.
+    Scene once = still;
+    once.frameCount = 1;
+    once.reference.samplesPerPixel = 16;
+    const Simulation sixteen = simulate(test::testContext(), once);
+    const auto& last = capture::findLayer(accumulated.frames.at(3), "reference.reflection")->pixels;
+    const auto& single = capture::findLayer(sixteen.frames.at(0), "reference.reflection")->pixels;
+    REQUIRE(last.size() == single.size());
+    CHECK(std::memcmp(last.data(), single.data(), last.size() * sizeof(float)) == 0);
+    // The shadow reference is a running mean of each frame's own stratification: on the fourth
+    // frame, nearer an independent 256-spp one than the first frame is (1/2 ideally).
+    Scene truthScene = once;
+    truthScene.seed = 99;
+    truthScene.reference.samplesPerPixel = 256;
+    const Simulation truth = simulate(test::testContext(), truthScene);
+    const double first = layerRmse(accumulated, 0, truth, "reference.shadow");
+    const double fourth = layerRmse(accumulated, 3, truth, "reference.shadow");
+    INFO("shadow reference RMSE against 256 spp: frame 0 " << first << ", frame 3 " << fourth);
+    CHECK(fourth < 0.7 * first);
+
+    // Without accumulation every frame stands alone; the analytic scene's camera and ball move
+    // until frame 4 and hold still after it, so the run starts again there.
+    Scene independent = still;
+    independent.reference.accumulate = false;
+    CHECK(simulate(test::testContext(), independent).referenceSamples == std::vector<std::uint32_t>{4, 4, 4, 4});
+    Scene moving = test::analyticScene(24, 14, 7);
+    moving.effects = {Effect::Shadows};
+    moving.reference = {false, true, 4};
+    CHECK(simulate(test::testContext(), moving).referenceSamples ==
+          std::vector<std::uint32_t>{4, 4, 4, 4, 4, 8, 12});
+    GLINT_REQUIRE_NO_VALIDATION_ERRORS();
+}
+
 TEST_CASE("The noisy shadow layer draws new random numbers every frame and averages to the reference",
           "[scene][gpu]") {
     Scene scene = test::analyticScene(96, 54, 3);
@@ -295,6 +346,7 @@ TEST_CASE("A keyframed light lights each frame as a still light at its interpola
         Scene still = scene;
         still.lights[0] = lightAt(sun, f);
         still.lights[0].keys.clear();
+        still.reference.accumulate = false; // each frame its own estimate, as the moving light's frames are
         const Simulation expected = simulate(test::testContext(), still);
         for (const char* name : {"shadow", "reference.shadow", "color"}) {
             INFO("frame " << f << " layer " << name);
