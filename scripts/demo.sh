@@ -9,19 +9,23 @@
 #     frame that accumulate over frames whose scene and camera are unchanged, and, for the
 #     reflections, more samples (up to GLINT_DEMO_MAX_SPP a frame) on the scored pixels (GGX
 #     alpha below 0.2) whose relative standard error is still above GLINT_DEMO_NOISE_TARGET;
-#     then again with an independent seed (2) for the reference noise floor. The defaults
-#     follow the selected device: on a CPU (lavapipe) 320x180, 8, 24 and 0.005, sized to
+#     scenes of shadows alone take GLINT_DEMO_SHADOW_SPP a frame (they trace no reflection or
+#     shading rays); then again with an independent seed (2) for the reference noise floor. The
+#     defaults follow the selected device: on a CPU (lavapipe) 320x180, 8, 24, 0.005 and 32, sized to
 #     finish within ten minutes on two cores (docs/performance.md, "The demo's simulations on
-#     a 2-core machine"); on a discrete GPU 960x540, 64, 256 and 0.001. A capture is simulated
+#     a 2-core machine"); on a discrete GPU 960x540, 64, 256, 0.001 and 256. A capture is simulated
 #     again only when its scene file, the simulator or these settings changed (demo_key in its
 #     folder),
 #   - replays every capture through the effects it declares (glint run, reflections with the
 #     denoiser and the composite, --second-reference for the noise floor) into out/demo/runs,
 #     scores every frame with LDR-FLIP (scripts/run_flip.py in build/venv, which
 #     scripts/python_env.sh makes; skipped, with one line saying so, where it cannot be made),
-#     and writes out/demo/report.html (per scene the metric in words, error and FLIP against
-#     frame of the noisy input, the output and the reference noise floor, the images side by side,
-#     per-pass times, the FidelityFX anchor points with their conditions, the device),
+#     and writes out/demo/report.html (on top a summary table over every scene and effect: noisy
+#     and output error, the reference floor and whether the references resolve the difference,
+#     FLIP, moving edges, GPU time; then per scene the noisy input, output and reference where the
+#     error is largest, enlarged, the whole frame's images, the metric in words, error and FLIP
+#     against frame of the noisy input, the output and the reference noise floor, per-pass times,
+#     the FidelityFX anchor points with their conditions, the device),
 #   - measures the depth pyramid at 1920x1080 and SSSR on the glossy room at 640x360 on the
 #     selected device (per-pass times, traced fraction, how the rays ended),
 # and writes the text results to out/report.md. GLINT_OUT moves out/, GLINT_DEVICE picks the device,
@@ -37,9 +41,11 @@ out=${GLINT_OUT:-out}
 # Bigger defaults where the selected device is a discrete GPU.
 if "$glint" devices 2>/dev/null | grep -A1 '^\*' | head -n 1 | grep -q '(discrete GPU)'; then
   size=${GLINT_DEMO_SIZE:-960x540} spp=${GLINT_DEMO_SPP:-64} max_spp=${GLINT_DEMO_MAX_SPP:-256}
+  shadow_spp=${GLINT_DEMO_SHADOW_SPP:-256}
   noise_target=${GLINT_DEMO_NOISE_TARGET:-0.001}
 else
   size=${GLINT_DEMO_SIZE:-320x180} spp=${GLINT_DEMO_SPP:-8} max_spp=${GLINT_DEMO_MAX_SPP:-24}
+  shadow_spp=${GLINT_DEMO_SHADOW_SPP:-32}
   noise_target=${GLINT_DEMO_NOISE_TARGET:-0.005}
 fi
 frames=${GLINT_DEMO_FRAMES:-16}
@@ -77,16 +83,18 @@ scene_frames() {
 # size, frame count, sample count and seed.
 simulate() {
   local scene=$1 seed=$2 dir=$3
-  local key count
+  local key count samples=$spp
   count=$(scene_frames "$scene")
-  key="$(sha1sum <"$scene" | cut -d' ' -f1) glint=$glint_id size=$size frames=$count spp=$spp max=$max_spp target=$noise_target seed=$seed"
+  # A scene of shadows alone traces no reflection or shading rays: its references take more.
+  if grep -q '^effects *= *\["shadows"\]' "$scene"; then samples=$shadow_spp; fi
+  key="$(sha1sum <"$scene" | cut -d' ' -f1) glint=$glint_id size=$size frames=$count spp=$samples max=$max_spp target=$noise_target seed=$seed"
   if [ -f "$dir/manifest.json" ] && [ "$(cat "$dir/demo_key" 2>/dev/null)" = "$key" ]; then
     progress "$(basename "$scene" .toml): capture with seed $seed is up to date"
     return
   fi
-  progress "simulating $(basename "$scene" .toml), $size, $count frames, reference seed $seed at $spp spp a frame (up to $max_spp)"
+  progress "simulating $(basename "$scene" .toml), $size, $count frames, reference seed $seed at $samples spp a frame (up to $max_spp)"
   rm -rf "$dir"
-  "$glint" simulate "$scene" --out "$dir" --size "$size" --frame-count "$count" --seed "$seed" --spp "$spp" \
+  "$glint" simulate "$scene" --out "$dir" --size "$size" --frame-count "$count" --seed "$seed" --spp "$samples" \
     --max-spp "$max_spp" --noise-target "$noise_target" --noise-target-alpha-below 0.2
   echo "$key" >"$dir/demo_key"
 }

@@ -167,10 +167,9 @@ std::vector<report::Figure> zoomFigures(const std::filesystem::path& frameDir, c
         if (image.width != width || image.height != height) return {};
         const report::RgbImage crop = report::cropScaled(image, bestX, bestY, windowWidth, windowHeight, scale);
         report::Figure figure;
-        figure.caption = effect + " " + caption + ", pixels " + std::to_string(bestX) + "-" +
-                         std::to_string(bestX + windowWidth - 1) + " x " + std::to_string(bestY) + "-" +
-                         std::to_string(bestY + windowHeight - 1) + " (largest output error) at " +
-                         std::to_string(scale) + "x";
+        figure.caption = effect + " " + caption + ", x " + std::to_string(bestX) + "-" +
+                         std::to_string(bestX + windowWidth - 1) + ", y " + std::to_string(bestY) + "-" +
+                         std::to_string(bestY + windowHeight - 1) + ", " + std::to_string(scale) + "x";
         figure.pngPath = path.string();
         figure.pngBytes = report::encodeRgbPng(path.string(), crop);
         figures.push_back(std::move(figure));

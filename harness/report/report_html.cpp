@@ -101,11 +101,11 @@ dl.facts { display: grid; grid-template-columns: max-content auto; gap: 0.2em 1.
 dl.facts dt { font-weight: 600; }
 dl.facts dd { margin: 0; font-family: ui-monospace, monospace; }
 .figures { display: flex; flex-wrap: wrap; gap: 1em; align-items: flex-start; }
-figure { margin: 0; }
+figure { margin: 0; display: table; }
 figure img { display: block; height: auto; max-width: 100%; background: #000; }
 img.pixelated { image-rendering: pixelated; }
 svg.plot { max-width: 100%; height: auto; font-family: system-ui, sans-serif; }
-figcaption { font-size: 0.9em; margin-top: 0.3em; max-width: 32em; }
+figcaption { font-size: 0.9em; margin-top: 0.3em; display: table-caption; caption-side: bottom; }
 table { border-collapse: collapse; margin: 1em 0; font-variant-numeric: tabular-nums; }
 th, td { border: 1px solid #ccc; padding: 0.25em 0.6em; text-align: left; }
 th { background: #eee; }
