@@ -105,12 +105,12 @@ int runBench(BenchOptions options, bool validate);
 struct SimulateOptions {
     std::string scenePath;
     std::string outDir;
-    std::string size;               // --size as given, WxH; run reads it into width, height
-    uint32_t width = 0, height = 0; // 0: the scene's resolution
-    uint32_t frames = 0;            // 0: the scene's frame count
-    uint32_t spp = 0;               // 0: the scene's reference samples per pixel
-    std::optional<float> noiseTarget; // the scene's reference noise_target when absent
-    std::optional<uint32_t> maxSpp;   // the scene's reference max_spp when absent
+    std::string size;                           // --size as given, WxH; run reads it into width, height
+    uint32_t width = 0, height = 0;             // 0: the scene's resolution
+    uint32_t frames = 0;                        // 0: the scene's frame count
+    uint32_t spp = 0;                           // 0: the scene's reference samples per pixel
+    std::optional<float> noiseTarget;           // the scene's reference noise_target when absent
+    std::optional<uint32_t> maxSpp;             // the scene's reference max_spp when absent
     std::optional<float> noiseTargetAlphaBelow; // the scene's reference noise_target_alpha_below when absent
     std::optional<uint32_t> seed;
     bool validate = false;

@@ -28,13 +28,6 @@
 namespace glint::cli {
 namespace {
 
-// Four decimals for errors, one for microseconds.
-std::string fixed(double value, int decimals) {
-    char text[64];
-    std::snprintf(text, sizeof text, "%.*f", decimals, value);
-    return text;
-}
-
 nlohmann::json readSummary(const std::filesystem::path& dir) {
     std::ifstream file(dir / "summary.json");
     if (!file)
@@ -85,7 +78,7 @@ std::string maskWords(const ScoredOutput& scored, double threshold) {
     if (!scored.maskInWords.empty()) return scored.maskInWords;
     if (scored.mask.pixels == ErrorMask::Pixels::Surface) return "every pixel with a surface";
     return "the glossy pixels (a surface with GGX alpha below " + scored.mask.setting +
-           (std::isnan(threshold) ? ", its value not recorded)" : " = " + fixed(threshold, 2) + ")");
+           (std::isnan(threshold) ? ", its value not recorded)" : " = " + fixedDecimals(threshold, 2) + ")");
 }
 
 // What "error" means for `effect`, in words (replay/replay_error.h is the definition), from its
@@ -103,14 +96,14 @@ std::string metricSentence(const std::string& effect, const nlohmann::json& valu
                mask + ". The error over moving edges is the same mean over the " +
                (scored->mask.pixels == ErrorMask::Pixels::Surface ? "pixels with a surface"
                                                                   : "glossy pixels") +
-               " whose reference changed by more than " + fixed(replay::kMovingEdgeChange, 2) +
+               " whose reference changed by more than " + fixedDecimals(replay::kMovingEdgeChange, 2) +
                " since the previous frame at the same pixel (none on the first frame).";
     case ErrorMetric::Absolute:
         return "Error of " + effect +
                ": per pixel, the luminance of |output - reference| (per channel, not clamped), averaged "
                "over " +
                mask + ". The table adds the mean absolute error of values clamped to [0, " +
-               fixed(replay::kMaeClamp, 0) + "] and the unclamped RMSE, on the same mask.";
+               fixedDecimals(replay::kMaeClamp, 0) + "] and the unclamped RMSE, on the same mask.";
     case ErrorMetric::RelativeLuminance:
         break;
     }
@@ -120,7 +113,7 @@ std::string metricSentence(const std::string& effect, const nlohmann::json& valu
            mask +
            ". The table adds the mean absolute error of "
            "radiance clamped to [0, " +
-           fixed(replay::kMaeClamp, 0) + "] and the unclamped RMSE, on the same mask.";
+           fixedDecimals(replay::kMaeClamp, 0) + "] and the unclamped RMSE, on the same mask.";
 }
 
 std::string referenceSentence(const nlohmann::json& summary) {
@@ -151,7 +144,7 @@ std::string flipSentence(const nlohmann::json& summary) {
                              : replay::kMaeClamp;
     return "FLIP (scripts/run_flip.py) is LDR-FLIP as scripts/study.py defines it: NVIDIA's "
            "flip-evaluator at 67 pixels per degree, given linear values, of radiance clamped to [0, " +
-           fixed(clamp, 0) +
+           fixedDecimals(clamp, 0) +
            "] and tone-mapped per channel with Reinhard x/(1+x), and of shadow visibility clamped to "
            "[0, 1]; both images are zeroed outside the error mask above and FLIP is averaged over the "
            "mask's pixels. 0 is identical; a frame whose mask is empty shows \"no pixels scored\".";
@@ -227,7 +220,8 @@ report::Section runSection(const std::filesystem::path& dir, const nlohmann::jso
         effects += (effects.empty() ? "" : ", ") + effect.get<std::string>();
     section.lead = "Capture " + summary.value("capture", std::string{}) + "; effects: " + effects + ".";
     const nlohmann::json settings = summary.value("settings", nlohmann::json::array());
-    for (const auto& setting : settings) section.text += (section.text.empty() ? "" : "\n") + ("set " + setting.get<std::string>());
+    for (const auto& setting : settings)
+        section.text += (section.text.empty() ? "" : "\n") + ("set " + setting.get<std::string>());
     if (summary.contains("width") && summary.contains("height"))
         section.lead += " " + std::to_string(summary.at("width").get<unsigned>()) + "x" +
                         std::to_string(summary.at("height").get<unsigned>()) + ", " +
@@ -255,7 +249,7 @@ report::Section runSection(const std::filesystem::path& dir, const nlohmann::jso
         if (point.at("scene").get<std::string>() != scene) continue;
         const auto number = [&](const char* key, int decimals) {
             return point.contains(key) && point.at(key).is_number()
-                       ? fixed(point.at(key).get<double>(), decimals)
+                       ? fixedDecimals(point.at(key).get<double>(), decimals)
                        : std::string("-");
         };
         anchorTable.rows.push_back({point.value("label", std::string{}),
@@ -287,8 +281,8 @@ report::Section runSection(const std::filesystem::path& dir, const nlohmann::jso
         const ScoredOutput* scored = replay::scoredOutput(name);
         const nlohmann::json error = lastErrorsOfFrame.value(name, nlohmann::json::object());
         if (scored && !scored->noisy.empty() && error.contains("image") && error.at("image").is_string())
-            for (report::Figure& figure :
-                 zoomFigures(frameDir, name, error.at("image").get<std::string>(), name + "/" + scored->noisy))
+            for (report::Figure& figure : zoomFigures(frameDir, name, error.at("image").get<std::string>(),
+                                                      name + "/" + scored->noisy))
                 section.figures.push_back(std::move(figure));
     }
     for (const auto& effect : summary.at("effects")) {
@@ -318,10 +312,11 @@ report::Section runSection(const std::filesystem::path& dir, const nlohmann::jso
             const double noisy = std::isnan(noisyValue) ? -1.0 : noisyValue;
             // null: that frame's error mask held no pixel (glint run wrote nothing to score).
             const auto scored = [](const nlohmann::json& value) {
-                return value.is_number() ? fixed(value.get<double>(), 4) : std::string("no pixels scored");
+                return value.is_number() ? fixedDecimals(value.get<double>(), 4)
+                                         : std::string("no pixels scored");
             };
             const auto shown = [](double value) {
-                return std::isnan(value) ? std::string("-") : fixed(value, 4);
+                return std::isnan(value) ? std::string("-") : fixedDecimals(value, 4);
             };
             const nlohmann::json lastError = lastErrors.value(effect, nlohmann::json::object());
             const nlohmann::json noise = lastNoise.value(effect, nlohmann::json::object());
@@ -346,7 +341,7 @@ report::Section runSection(const std::filesystem::path& dir, const nlohmann::jso
                 floor += ")";
             }
             errors.rows.push_back({effect, scored(values.at("first")), scored(values.at("last")),
-                                   noisy >= 0.0 ? fixed(noisy, 4) : "-", movingEdge("movingEdge"),
+                                   noisy >= 0.0 ? fixedDecimals(noisy, 4) : "-", movingEdge("movingEdge"),
                                    movingEdge("noisyMovingEdge"), floor,
                                    convergence(valueOr(noise, "mean"), valueOr(values, "last"), noisy),
                                    shown(valueOr(lastError, "maeClamped")),
@@ -362,10 +357,10 @@ report::Section runSection(const std::filesystem::path& dir, const nlohmann::jso
     for (const auto& [pass, values] : passes.items()) {
         const double ms = values.at("medianMs").get<double>();
         total += ms;
-        times.rows.push_back({pass, fixed(1000.0 * ms, 1)});
+        times.rows.push_back({pass, fixedDecimals(1000.0 * ms, 1)});
     }
     if (!times.rows.empty()) {
-        times.rows.push_back({"all passes", fixed(1000.0 * total, 1)});
+        times.rows.push_back({"all passes", fixedDecimals(1000.0 * total, 1)});
         section.tables.push_back(std::move(times));
     }
     if (!summary.contains("error") && !anchorTable.rows.empty())

@@ -8,14 +8,8 @@
 namespace glint::cli {
 namespace {
 
-std::string fixed(double value, int decimals) {
-    char text[64];
-    std::snprintf(text, sizeof text, "%.*f", decimals, value);
-    return text;
-}
-
 std::string shown(double value, int decimals = 4) {
-    return std::isnan(value) ? std::string("-") : fixed(value, decimals);
+    return std::isnan(value) ? std::string("-") : fixedDecimals(value, decimals);
 }
 
 // "output / noisy" of two values, "-" for a missing one.
@@ -47,7 +41,7 @@ std::string lastFrameSamples(const nlohmann::json& summary) {
     if (samples.is_array() && !samples.empty() && samples.back().is_number_unsigned())
         return std::to_string(samples.back().get<unsigned>());
     const double spp = valueOr(simulation, "referenceSpp");
-    return std::isnan(spp) ? std::string("-") : fixed(spp, 0);
+    return std::isnan(spp) ? std::string("-") : fixedDecimals(spp, 0);
 }
 
 // Whether an independent reference says the same of the difference: first, the output's error
@@ -69,6 +63,12 @@ std::string shortVerdict(const std::string& verdict) {
 
 } // namespace
 
+std::string fixedDecimals(double value, int decimals) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.*f", decimals, value);
+    return text;
+}
+
 double valueOr(const nlohmann::json& object, const char* key) {
     if (!object.is_object() || !object.contains(key) || !object.at(key).is_number()) return NAN;
     return object.at(key).get<double>();
@@ -79,16 +79,17 @@ std::string convergence(double floor, double output, double noisy) {
     const double difference = std::abs(output - noisy);
     if (difference > 0.0) {
         if (floor < 0.25 * difference) return "yes";
-        return "no: floor " + fixed(floor, 4) + " is not below a quarter of " + fixed(difference, 4);
+        return "no: floor " + fixedDecimals(floor, 4) + " is not below a quarter of " +
+               fixedDecimals(difference, 4);
     }
     if (floor == 0.0 || floor < 0.25 * output) return "yes (output = noisy input)";
-    return "no: output = noisy input, and floor " + fixed(floor, 4) + " is not below a quarter of its error " +
-           fixed(output, 4);
+    return "no: output = noisy input, and floor " + fixedDecimals(floor, 4) +
+           " is not below a quarter of its error " + fixedDecimals(output, 4);
 }
 
 report::Table summaryTable(const std::vector<std::pair<std::filesystem::path, nlohmann::json>>& runs) {
-    report::Table table{{"scene", "effect", "noisy input error", "output error", "reference floor", "converged",
-                         "output - noisy, ref. 1 / ref. 2", "refs agree", "FLIP output / noisy",
+    report::Table table{{"scene", "effect", "noisy input error", "output error", "reference floor",
+                         "converged", "output - noisy, ref. 1 / ref. 2", "refs agree", "FLIP output / noisy",
                          "moving edges output / noisy", "GPU us / frame", "ref. spp"},
                         {},
                         true};
@@ -103,9 +104,9 @@ report::Table summaryTable(const std::vector<std::pair<std::filesystem::path, nl
             const double noisy = valueOr(values, "noisyLast");
             const double floor = valueOr(values, "referenceNoiseLast");
             const double first = valueOr(error, "mean") - valueOr(error, "noisyMean");
-            const double second = valueOr(
-                last.value("referenceNoise", nlohmann::json::object()).value(effect, nlohmann::json::object()),
-                "differenceAgainstSecond");
+            const double second = valueOr(last.value("referenceNoise", nlohmann::json::object())
+                                              .value(effect, nlohmann::json::object()),
+                                          "differenceAgainstSecond");
             table.rows.push_back({dir.filename().string(), effect, shown(noisy), shown(output), shown(floor),
                                   shortVerdict(convergence(floor, output, std::isnan(noisy) ? -1.0 : noisy)),
                                   pair(first, second), pairedVerdict(first, second),
@@ -127,7 +128,9 @@ std::vector<report::Figure> zoomFigures(const std::filesystem::path& frameDir, c
     };
     const std::filesystem::path errorPath = frameDir / (effect + "_error.exr");
     const std::vector<std::pair<std::string, std::filesystem::path>> shownImages = {
-        {"noisy input", png(noisyImage)}, {"output", png(finalImage)}, {"reference", png(effect + "/reference")}};
+        {"noisy input", png(noisyImage)},
+        {"output", png(finalImage)},
+        {"reference", png(effect + "/reference")}};
     if (noisyImage.empty() || !std::filesystem::exists(errorPath)) return {};
     for (const auto& [caption, path] : shownImages)
         if (!std::filesystem::exists(path)) return {};
@@ -142,14 +145,16 @@ std::vector<report::Figure> zoomFigures(const std::filesystem::path& frameDir, c
             const float value = error.pixels[(std::size_t{y} * width + x) * error.channels];
             const double v = std::isfinite(value) ? std::abs(double{value}) : 1.0;
             area[std::size_t{y + 1} * (width + 1) + x + 1] = v + area[std::size_t{y} * (width + 1) + x + 1] +
-                                                            area[std::size_t{y + 1} * (width + 1) + x] -
-                                                            area[std::size_t{y} * (width + 1) + x];
+                                                             area[std::size_t{y + 1} * (width + 1) + x] -
+                                                             area[std::size_t{y} * (width + 1) + x];
         }
     double best = 0.0;
     std::uint32_t bestX = 0, bestY = 0;
     for (std::uint32_t y = 0; y + windowHeight <= height; ++y)
         for (std::uint32_t x = 0; x + windowWidth <= width; ++x) {
-            const auto at = [&](std::uint32_t ax, std::uint32_t ay) { return area[std::size_t{ay} * (width + 1) + ax]; };
+            const auto at = [&](std::uint32_t ax, std::uint32_t ay) {
+                return area[std::size_t{ay} * (width + 1) + ax];
+            };
             const double sum = at(x + windowWidth, y + windowHeight) - at(x, y + windowHeight) -
                                at(x + windowWidth, y) + at(x, y);
             if (sum > best) {
@@ -165,7 +170,8 @@ std::vector<report::Figure> zoomFigures(const std::filesystem::path& frameDir, c
     for (const auto& [caption, path] : shownImages) {
         const report::RgbImage image = report::readRgbPng(path.string());
         if (image.width != width || image.height != height) return {};
-        const report::RgbImage crop = report::cropScaled(image, bestX, bestY, windowWidth, windowHeight, scale);
+        const report::RgbImage crop =
+            report::cropScaled(image, bestX, bestY, windowWidth, windowHeight, scale);
         report::Figure figure;
         figure.caption = effect + " " + caption + ", x " + std::to_string(bestX) + "-" +
                          std::to_string(bestX + windowWidth - 1) + ", y " + std::to_string(bestY) + "-" +

@@ -14,6 +14,9 @@
 
 namespace glint::cli {
 
+// `value` with `decimals` digits after the point (four for errors, one for microseconds).
+std::string fixedDecimals(double value, int decimals);
+
 // A number of a JSON object, NaN where it is absent or not a number (null: nothing scored).
 double valueOr(const nlohmann::json& object, const char* key);
 

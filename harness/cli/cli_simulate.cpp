@@ -29,15 +29,17 @@ void addSimulateOptions(CLI::App& command, SimulateOptions& options) {
     command.add_option("--size", options.size, "override the resolution, WxH");
     command.add_option("--frame-count", options.frames, "override the frame count");
     command.add_option("--spp", options.spp, "override the reference samples per pixel (per frame)");
-    command.add_option("--noise-target", options.noiseTarget,
-                       "override the reflection reference's noise target: past --spp, a frame samples the "
-                       "pixels whose relative standard error is at or above it (0: none)")
+    command
+        .add_option("--noise-target", options.noiseTarget,
+                    "override the reflection reference's noise target: past --spp, a frame samples the "
+                    "pixels whose relative standard error is at or above it (0: none)")
         ->check(CLI::Range(0.0, 1.0));
     command.add_option("--max-spp", options.maxSpp,
                        "override the most reflection reference samples a pixel takes in a frame with a "
                        "noise target");
-    command.add_option("--noise-target-alpha-below", options.noiseTargetAlphaBelow,
-                       "override the GGX alpha below which pixels take samples for the noise target")
+    command
+        .add_option("--noise-target-alpha-below", options.noiseTargetAlphaBelow,
+                    "override the GGX alpha below which pixels take samples for the noise target")
         ->check(CLI::Range(0.0, 1.0));
     command.add_option("--seed", options.seed, "override the scene's seed");
 }
@@ -69,16 +71,17 @@ int runSimulate(SimulateOptions options, bool validate) {
         for (const std::string& warning : sim.warnings) std::fprintf(stderr, "glint: %s\n", warning.c_str());
         const capture::Environment* environment = sim.environment ? &*sim.environment : nullptr;
         capture::writeSequence(options.outDir, sim.frames, scene.frameRate, environment, options.scenePath);
-        const nlohmann::json simulation{{"scene", options.scenePath},
-                                        {"width", scene.width},
-                                        {"height", scene.height},
-                                        {"frames", scene.frameCount},
-                                        {"referenceSpp", scene.reference.samplesPerPixel},
-                                        {"referenceSamples", sim.referenceSamples},
-                                        {"referenceNoiseTarget", scene.reference.noiseTarget},
-                                        {"referenceMaxSpp", scene::maxReferenceSamples(scene.reference)},
-                                        {"referenceNoiseTargetAlphaBelow", scene.reference.noiseTargetAlphaBelow},
-                                        {"seed", scene.seed}};
+        const nlohmann::json simulation{
+            {"scene", options.scenePath},
+            {"width", scene.width},
+            {"height", scene.height},
+            {"frames", scene.frameCount},
+            {"referenceSpp", scene.reference.samplesPerPixel},
+            {"referenceSamples", sim.referenceSamples},
+            {"referenceNoiseTarget", scene.reference.noiseTarget},
+            {"referenceMaxSpp", scene::maxReferenceSamples(scene.reference)},
+            {"referenceNoiseTargetAlphaBelow", scene.reference.noiseTargetAlphaBelow},
+            {"seed", scene.seed}};
         const std::filesystem::path simulationPath =
             std::filesystem::path(options.outDir) / "simulation.json";
         std::ofstream simulationFile(simulationPath);

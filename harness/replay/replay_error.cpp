@@ -234,8 +234,9 @@ std::vector<ReferenceError> referenceNoise(const capture::Frame& frame, const Fr
             if (!output) output = result.find(effect + "/" + name);
         const NamedImage* noisy = scored->noisy.empty() ? nullptr : result.find(effect + "/" + scored->noisy);
         if (output && noisy && noisy != output && noise.back().pixels > 0)
-            noise.back().differenceAgainstSecond = compare(effect, *output, other, mask, scored->metric).mean -
-                                                   compare(effect, *noisy, other, mask, scored->metric).mean;
+            noise.back().differenceAgainstSecond =
+                compare(effect, *output, other, mask, scored->metric).mean -
+                compare(effect, *noisy, other, mask, scored->metric).mean;
     }
     return noise;
 }

@@ -52,8 +52,8 @@ struct ReferenceError {
     // second reference (NaN without a noisy input): what the first reference says of the
     // difference, said again by an independent one.
     double differenceAgainstSecond = std::numeric_limits<double>::quiet_NaN();
-    double nonFinite = 0.0;   // fraction of output pixels (all, not only the mask) that are not finite
-    bool visibility = false;  // ErrorMetric::Visibility (penumbra and moving edges apply)
+    double nonFinite = 0.0;  // fraction of output pixels (all, not only the mask) that are not finite
+    bool visibility = false; // ErrorMetric::Visibility (penumbra and moving edges apply)
     // The mask's threshold (ErrorMask::SurfaceAlphaBelow: the value of its setting), -1 without one.
     double maskThreshold = -1.0;
     // Visibility effects: the moving-edge pixels (movingEdgeMask) and the mean |out - ref| over

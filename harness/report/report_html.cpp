@@ -23,8 +23,8 @@ struct Png {
     std::uint32_t width = 0;
 };
 
-// The figure's PNG (its bytes, or the whole file) with the signature and the IHDR chunk that must follow it checked,
-// from which the width is taken (big-endian at byte 16).
+// The figure's PNG (its bytes, or the whole file) with the signature and the IHDR chunk that must follow it
+// checked, from which the width is taken (big-endian at byte 16).
 Png readPng(const Figure& figure) {
     const std::string& path = figure.pngPath;
     Png png;

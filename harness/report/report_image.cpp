@@ -309,10 +309,12 @@ RgbImage cropScaled(const RgbImage& image, std::uint32_t x, std::uint32_t y, std
     if (scale == 0 || width == 0 || height == 0 || x + width > image.width || y + height > image.height) {
         std::ostringstream problem;
         problem << "cropScaled: a window of " << width << "x" << height << " at (" << x << ", " << y
-                << ") scaled by " << scale << " does not fit an image of " << image.width << "x" << image.height;
+                << ") scaled by " << scale << " does not fit an image of " << image.width << "x"
+                << image.height;
         throw std::invalid_argument(problem.str());
     }
-    RgbImage out{width * scale, height * scale, std::vector<std::uint8_t>(std::size_t{width} * height * scale * scale * 3)};
+    RgbImage out{width * scale, height * scale,
+                 std::vector<std::uint8_t>(std::size_t{width} * height * scale * scale * 3)};
     for (std::uint32_t row = 0; row < out.height; ++row)
         for (std::uint32_t column = 0; column < out.width; ++column) {
             const std::size_t from = ((std::size_t{y} + row / scale) * image.width + x + column / scale) * 3;

@@ -549,8 +549,9 @@ Scene parseScene(const std::string& text, const std::filesystem::path& file) {
                "effect 'shadows' needs a light: " + std::to_string(scene.lights.size()) +
                    " light(s) declared");
     if (const toml::table* t = r.table(root, "", "reference")) {
-        r.onlyKeys(*t, "reference", {"reflections", "shadows", "spp", "environment_sampling", "accumulate",
-                                       "noise_target", "max_spp", "noise_target_alpha_below"});
+        r.onlyKeys(*t, "reference",
+                   {"reflections", "shadows", "spp", "environment_sampling", "accumulate", "noise_target",
+                    "max_spp", "noise_target_alpha_below"});
         scene.reference.reflections = r.flag(*t, "reference", "reflections", false);
         scene.reference.shadows = r.flag(*t, "reference", "shadows", false);
         scene.reference.samplesPerPixel = r.count(*t, "reference", "spp", 64, 1, 1 << 20);
@@ -559,8 +560,8 @@ Scene parseScene(const std::string& text, const std::filesystem::path& file) {
         scene.reference.accumulate = r.flag(*t, "reference", "accumulate", scene.reference.accumulate);
         scene.reference.noiseTarget = r.real(*t, "reference", "noise_target", 0.0f, 0.0, 1.0);
         scene.reference.maxSamplesPerPixel = r.count(*t, "reference", "max_spp", 0, 0, 1 << 20);
-        scene.reference.noiseTargetAlphaBelow =
-            r.real(*t, "reference", "noise_target_alpha_below", scene.reference.noiseTargetAlphaBelow, 0.0, 1.0);
+        scene.reference.noiseTargetAlphaBelow = r.real(*t, "reference", "noise_target_alpha_below",
+                                                       scene.reference.noiseTargetAlphaBelow, 0.0, 1.0);
         if (scene.reference.reflections && !needsReflections(scene))
             r.fail(t->get("reflections"), "reference.reflections", "needs effect 'reflections' or 'hybrid'");
         if (scene.reference.shadows && !needsShadows(scene))

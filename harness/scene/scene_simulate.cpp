@@ -102,7 +102,8 @@ void addChunkedPasses(EffectPlan& plan, const char* name, const char* pipeline, 
     constants.sampleTotal = total;
     std::uint32_t count = 0;
     for (std::uint32_t start = 0; start < total; ++count) {
-        const std::uint32_t end = start < baseline ? std::min(start + chunk, baseline) : std::min(start + chunk, total);
+        const std::uint32_t end =
+            start < baseline ? std::min(start + chunk, baseline) : std::min(start + chunk, total);
         constants.sampleStart = start;
         constants.samples = end - start;
         Pass pass = makePass(name, pipeline, uses, constants, width, height);
@@ -200,14 +201,14 @@ EffectPlan planFrame(const Scene& scene, const GLINT_SceneConstants& base,
             c.passSalt = 0x53484432u;
             uses = common;
             uses.push_back({"g_visibility", "reference.shadow", Access::ReadWrite});
-            addChunkedPasses(plan, "reference.shadow", "scene_shadow", uses, c, scene.reference.samplesPerPixel,
-                             scene.reference.samplesPerPixel, kShadowChunk, w, h);
+            addChunkedPasses(plan, "reference.shadow", "scene_shadow", uses, c,
+                             scene.reference.samplesPerPixel, scene.reference.samplesPerPixel, kShadowChunk,
+                             w, h);
             outputs.push_back({"reference.shadow", "reference.shadow", Format::R32Float, {"Y"}});
         }
     }
     for (const OutputImage& out : outputs) plan.images.push_back({out.resource, w, h, 1, out.format});
-    if (reflections && scene.reference.reflections)
-    {
+    if (reflections && scene.reference.reflections) {
         plan.images.push_back({"reference.reflection_sum", w, h, 1, Format::RGBA32Float});
         plan.images.push_back({"reference.reflection_moments", w, h, 1, Format::RG32Float});
     }

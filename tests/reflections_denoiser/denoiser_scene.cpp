@@ -19,13 +19,14 @@
 namespace glint::test {
 
 DenoiserScene simulateDenoiserScene(const std::string& name, std::uint32_t width, std::uint32_t height,
-                                    std::uint32_t frames) {
+                                    std::uint32_t frames, bool accumulateReferences) {
     scene::Scene scene =
         scene::loadScene(std::string(GLINT_SOURCE_DIR) + "/harness/scenes/" + name + ".toml");
     scene.width = width;
     scene.height = height;
     scene.frameCount = frames;
     scene.reference.reflections = true;
+    scene.reference.accumulate = accumulateReferences;
     scene::Simulation simulation = scene::simulate(testContext(), scene);
     DenoiserScene out;
     out.frames = std::move(simulation.frames);

@@ -22,9 +22,12 @@ struct DenoiserScene {
     capture::Environment environment;
 };
 
-// Simulates harness/scenes/<name>.toml at width x height for `frames` frames with references.
+// Simulates harness/scenes/<name>.toml at width x height for `frames` frames with references;
+// `accumulateReferences` false gives every frame a reference of the scene's own sample count
+// (ReferenceDesc::accumulate), so that errors of moving and still frames are measured against
+// references of the same noise.
 DenoiserScene simulateDenoiserScene(const std::string& name, std::uint32_t width, std::uint32_t height,
-                                    std::uint32_t frames);
+                                    std::uint32_t frames, bool accumulateReferences = true);
 
 // Runs the scene's frames in `frameOrder` (frame index 0, 1, ... in that order, a history reset on
 // the first) through SSSR, denoised or not, and returns each frame's radiance (RGBA); requires

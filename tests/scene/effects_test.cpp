@@ -253,7 +253,8 @@ double layerRmse(const Simulation& sim, std::size_t frame, const Simulation& tru
     const auto& a = capture::findLayer(sim.frames.at(frame), layer)->pixels;
     const auto& b = capture::findLayer(truth.frames.at(0), layer)->pixels;
     double sum = 0.0;
-    for (std::size_t i = 0; i < a.size(); ++i) sum += (double{a[i]} - double{b[i]}) * (double{a[i]} - double{b[i]});
+    for (std::size_t i = 0; i < a.size(); ++i)
+        sum += (double{a[i]} - double{b[i]}) * (double{a[i]} - double{b[i]});
     return std::sqrt(sum / static_cast<double>(a.size()));
 }
 
@@ -291,7 +292,8 @@ TEST_CASE("References accumulate over unchanged frames and start again after a c
     // until frame 4 and hold still after it, so the run starts again there.
     Scene independent = still;
     independent.reference.accumulate = false;
-    CHECK(simulate(test::testContext(), independent).referenceSamples == std::vector<std::uint32_t>{4, 4, 4, 4});
+    CHECK(simulate(test::testContext(), independent).referenceSamples ==
+          std::vector<std::uint32_t>{4, 4, 4, 4});
     Scene moving = test::analyticScene(24, 14, 7);
     moving.effects = {Effect::Shadows};
     moving.reference = {false, true, 4};
