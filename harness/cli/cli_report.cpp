@@ -340,13 +340,13 @@ report::Section runSection(const std::filesystem::path& dir, const nlohmann::jso
                 if (noise.contains("flip")) floor += ", FLIP " + flip(noise, "flip");
                 floor += ")";
             }
-            errors.rows.push_back({effect, scored(values.at("first")), scored(values.at("last")),
-                                   noisy >= 0.0 ? fixedDecimals(noisy, 4) : "-", movingEdge("movingEdge"),
-                                   movingEdge("noisyMovingEdge"), floor,
-                                   convergence(valueOr(noise, "mean"), valueOr(values, "last"), noisy),
-                                   shown(valueOr(lastError, "maeClamped")),
-                                   shown(valueOr(lastError, "rmseClamped")), flip(lastError, "flip"),
-                                   flip(lastError, "noisyFlip")});
+            errors.rows.push_back(
+                {effect, scored(values.at("first")), scored(values.at("last")),
+                 noisy >= 0.0 ? fixedDecimals(noisy, 4) : "-", movingEdge("movingEdge"),
+                 movingEdge("noisyMovingEdge"), floor,
+                 convergence(valueOr(noise, "mean"), valueOr(values, "last"), noisy).withReason(),
+                 shown(valueOr(lastError, "maeClamped")), shown(valueOr(lastError, "rmseClamped")),
+                 flip(lastError, "flip"), flip(lastError, "noisyFlip")});
         }
         section.tables.push_back(std::move(errors));
         if (!anchorTable.rows.empty()) section.tables.push_back(std::move(anchorTable)); // beside the errors

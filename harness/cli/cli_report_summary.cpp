@@ -54,13 +54,6 @@ std::string pairedVerdict(double first, double second) {
     return "no";
 }
 
-// A convergence verdict in a few words: the numbers behind a "no" are in the row.
-std::string shortVerdict(const std::string& verdict) {
-    if (verdict.rfind("no", 0) == 0) return "no";
-    if (verdict == "yes (output = noisy input)") return "yes (output = input)";
-    return verdict;
-}
-
 } // namespace
 
 std::string fixedDecimals(double value, int decimals) {
@@ -74,17 +67,17 @@ double valueOr(const nlohmann::json& object, const char* key) {
     return object.at(key).get<double>();
 }
 
-std::string convergence(double floor, double output, double noisy) {
-    if (std::isnan(floor) || std::isnan(output) || std::isnan(noisy) || noisy < 0.0) return "-";
+Convergence convergence(double floor, double output, double noisy) {
+    if (std::isnan(floor) || std::isnan(output) || std::isnan(noisy) || noisy < 0.0) return {"-", {}};
     const double difference = std::abs(output - noisy);
     if (difference > 0.0) {
-        if (floor < 0.25 * difference) return "yes";
-        return "no: floor " + fixedDecimals(floor, 4) + " is not below a quarter of " +
-               fixedDecimals(difference, 4);
+        if (floor < 0.25 * difference) return {"yes", {}};
+        return {"no", "floor " + fixedDecimals(floor, 4) + " is not below a quarter of " +
+                          fixedDecimals(difference, 4)};
     }
-    if (floor == 0.0 || floor < 0.25 * output) return "yes (output = noisy input)";
-    return "no: output = noisy input, and floor " + fixedDecimals(floor, 4) +
-           " is not below a quarter of its error " + fixedDecimals(output, 4);
+    if (floor == 0.0 || floor < 0.25 * output) return {"yes (output = input)", {}};
+    return {"no", "output = noisy input, and floor " + fixedDecimals(floor, 4) +
+                      " is not below a quarter of its error " + fixedDecimals(output, 4)};
 }
 
 report::Table summaryTable(const std::vector<std::pair<std::filesystem::path, nlohmann::json>>& runs) {
@@ -108,7 +101,7 @@ report::Table summaryTable(const std::vector<std::pair<std::filesystem::path, nl
                                               .value(effect, nlohmann::json::object()),
                                           "differenceAgainstSecond");
             table.rows.push_back({dir.filename().string(), effect, shown(noisy), shown(output), shown(floor),
-                                  shortVerdict(convergence(floor, output, std::isnan(noisy) ? -1.0 : noisy)),
+                                  convergence(floor, output, std::isnan(noisy) ? -1.0 : noisy).verdict,
                                   pair(first, second), pairedVerdict(first, second),
                                   pair(valueOr(values, "flipLast"), valueOr(values, "noisyFlipLast")),
                                   pair(valueOr(error, "movingEdge"), valueOr(error, "noisyMovingEdge")),

@@ -25,8 +25,15 @@ double valueOr(const nlohmann::json& object, const char* key);
 // floor, same metric) is below a quarter of |output error - noisy input's error|. Where the two
 // errors are equal (the output is its noisy input over the mask, as the shadow denoiser leaves
 // hard shadows) there is no difference to resolve, and the floor must be below a quarter of the
-// error itself. "-" without a floor or a noisy error; otherwise "no: ..." with the numbers.
-std::string convergence(double floor, double output, double noisy);
+// error itself: "yes (output = input)". "-" without a floor or a noisy error; otherwise "no",
+// with the numbers in `reason`.
+struct Convergence {
+    std::string verdict;
+    std::string reason; // why not, for a "no"
+    // The verdict with its reason, "no: floor ... is not below a quarter of ...".
+    std::string withReason() const { return reason.empty() ? verdict : verdict + ": " + reason; }
+};
+Convergence convergence(double floor, double output, double noisy);
 
 // One row per run and scored effect: the noisy input's and the output's error on the last frame,
 // the reference noise floor, the convergence verdict, the difference of the two errors against

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <optional>
 #include <stdexcept>
+#include <utility>
 
 namespace glint::replay {
 namespace {
@@ -158,6 +159,21 @@ const ScoredOutput* scoredOutput(const std::string& effect) {
     return &descriptor->evaluation.scored.front();
 }
 
+namespace {
+
+// The output `scored` scores in `result` (the first of its `final` images there) and its noisy
+// input (null without one, or when it is the output itself).
+std::pair<const NamedImage*, const NamedImage*>
+scoredImages(const FrameResult& result, const std::string& effect, const ScoredOutput& scored) {
+    const NamedImage* output = nullptr;
+    for (const std::string& name : scored.final)
+        if (!output) output = result.find(effect + "/" + name);
+    const NamedImage* noisy = scored.noisy.empty() ? nullptr : result.find(effect + "/" + scored.noisy);
+    return {output, noisy == output ? nullptr : noisy};
+}
+
+} // namespace
+
 std::vector<std::uint8_t> movingEdgeMask(const report::Image& reference,
                                          const report::Image& previousReference,
                                          const std::vector<std::uint8_t>& mask, float change) {
@@ -186,12 +202,8 @@ std::vector<ReferenceError> referenceErrors(const capture::Frame& frame, const F
         const ScoredOutput* scored = &descriptor->evaluation.scored.front();
         const NamedImage* reference = result.find(effect + "/reference");
         if (!reference) continue;
-        const NamedImage* output = nullptr;
-        for (const std::string& name : scored->final)
-            if (!output) output = result.find(effect + "/" + name);
+        const auto [output, noisy] = scoredImages(result, effect, *scored);
         if (!output) continue;
-        const NamedImage* noisy = scored->noisy.empty() ? nullptr : result.find(effect + "/" + scored->noisy);
-        if (noisy == output) noisy = nullptr;
         const std::vector<std::uint8_t> mask = errorMask(frame, scored->mask, settings);
         errors.push_back(compare(effect, *output, reference->image, mask, scored->metric));
         errors.back().maskThreshold = thresholdOf(scored->mask, settings);
@@ -229,11 +241,8 @@ std::vector<ReferenceError> referenceNoise(const capture::Frame& frame, const Fr
         const std::vector<std::uint8_t> mask = errorMask(frame, scored->mask, settings);
         noise.push_back(compare(effect, *reference, other, mask, scored->metric));
         noise.back().maskThreshold = thresholdOf(scored->mask, settings);
-        const NamedImage* output = nullptr;
-        for (const std::string& name : scored->final)
-            if (!output) output = result.find(effect + "/" + name);
-        const NamedImage* noisy = scored->noisy.empty() ? nullptr : result.find(effect + "/" + scored->noisy);
-        if (output && noisy && noisy != output && noise.back().pixels > 0)
+        const auto [output, noisy] = scoredImages(result, effect, *scored);
+        if (output && noisy && noise.back().pixels > 0)
             noise.back().differenceAgainstSecond =
                 compare(effect, *output, other, mask, scored->metric).mean -
                 compare(effect, *noisy, other, mask, scored->metric).mean;

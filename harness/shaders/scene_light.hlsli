@@ -99,10 +99,4 @@ float SceneVisibilityOneSample(float3 position, float3 normal, SceneLightCone c,
     return SceneVisibilityAndBlocker(position, normal, SceneSampleCone(c, jitter, frac(offset)), c.maxT, blocker);
 }
 
-// Mean visibility of `count` cone samples.
-float SceneVisibility(float3 position, float3 normal, SceneLightCone c, uint count, inout uint rng)
-{
-    return SceneVisibilitySum(position, normal, c, 0, count, count, rng) / float(max(count, 1u));
-}
-
 #endif // GLINT_SCENE_LIGHT_HLSLI

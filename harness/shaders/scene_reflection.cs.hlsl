@@ -126,10 +126,11 @@ float SceneRelativeStandardError(float4 sum, float2 moments)
     bool runStart = g_scene.sampleBase + g_scene.sampleStart == 0u;
     float4 earlier = runStart ? float4(0.0, 0.0, 0.0, 0.0) : g_reflection_sum[id.xy];
     float2 moments = runStart ? float2(0.0, 0.0) : g_reflection_moments[id.xy];
-    // Past the frame's baseline samples, a pixel rests when its estimate meets the noise target
-    // or its lobe is too rough for the target to apply.
+    // Past the frame's baseline samples, a pixel with an estimate rests when it meets the noise
+    // target or its lobe is too rough for the target to apply (a pixel without one, whose every
+    // sample was discarded, goes on to the mirror direction below).
     float roughness = g_roughness[id.xy];
-    bool resting = g_scene.sampleStart >= g_scene.referenceFrameSamples &&
+    bool resting = g_scene.sampleStart >= g_scene.referenceFrameSamples && earlier.a > 0.0 &&
                    (roughness * roughness >= g_scene.referenceNoiseAlphaBelow ||
                     SceneRelativeStandardError(earlier, moments) < g_scene.referenceNoiseTarget);
     if (resting) {
