@@ -1,6 +1,8 @@
-// Tile classification against the CPU classification (tests/reference): the ray list (as a
-// set, the GPU's order is arbitrary), the tile list, the counters and the indirect arguments,
-// the extracted roughness, and a frame with nothing to trace.
+// Tile classification and ray-list compaction against the CPU classification (tests/reference):
+// the ray list in its documented order (tiles row-major, each tile's pixels row-major), the
+// tile list (as a set: its order is arbitrary), the counters and the indirect arguments, the
+// extracted roughness, and a frame with nothing to trace.
+#include "glint/common/glint_wire_formats.h"
 #include "reference/sssr_reference.h"
 #include "sssr/sssr_classify_view.h"
 #include "sssr/sssr_test_scene.h"
@@ -10,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 using namespace glint;
@@ -19,6 +22,18 @@ namespace {
 std::vector<std::uint32_t> sorted(std::vector<std::uint32_t> values) {
     std::sort(values.begin(), values.end());
     return values;
+}
+
+// The ray list's order (docs/sssr.md, "The ray list"), from the entries' pixels alone.
+std::vector<std::uint32_t> inListOrder(std::vector<std::uint32_t> rays, std::uint32_t width) {
+    const std::uint32_t columns = (width + 7) / 8;
+    const auto key = [columns](std::uint32_t entry) {
+        const std::uint32_t x = shared::GLINT_WIRE_RayEntryX(entry), y = shared::GLINT_WIRE_RayEntryY(entry);
+        const std::uint64_t tile = std::uint64_t{y / 8} * columns + x / 8;
+        return tile * 64 + (y % 8) * 8 + x % 8;
+    };
+    std::sort(rays.begin(), rays.end(), [&](std::uint32_t a, std::uint32_t b) { return key(a) < key(b); });
+    return rays;
 }
 
 } // namespace
@@ -44,7 +59,7 @@ TEST_CASE("classification matches the CPU classification for 1, 2 and 4 samples 
                 CHECK(out.counters[2] == 0);
                 CHECK(out.counters[1] == expected.rayCount);
                 CHECK(out.counters[3] == expected.tileCount);
-                CHECK(sorted(out.rayList) == expected.rays);
+                CHECK(out.rayList == inListOrder(expected.rays, view.desc.size.width));
                 CHECK(sorted(out.tileList) == expected.tiles);
                 const std::uint32_t groups = (expected.rayCount + 63) / 64;
                 CHECK(out.arguments[0] * out.arguments[1] >= groups);
@@ -78,7 +93,7 @@ TEST_CASE("classification matches the CPU classification on odd tile grids and a
         REQUIRE(expected.tileCount > 0);
         CHECK(out.counters[1] == expected.rayCount);
         CHECK(out.counters[3] == expected.tileCount);
-        CHECK(sorted(out.rayList) == expected.rays);
+        CHECK(out.rayList == inListOrder(expected.rays, view.desc.size.width));
         CHECK(sorted(out.tileList) == expected.tiles);
         for (std::size_t i = 0; i < inputs.alpha.size(); ++i) {
             INFO("pixel " << i);
@@ -106,7 +121,7 @@ TEST_CASE("variance-guided tracing adds rays where the reprojected variance hist
     const reference::SssrClassification unguided =
         reference::sssrClassify(test::classifyReferenceInputs(view));
     CHECK(expected.rayCount > unguided.rayCount);
-    CHECK(sorted(out.rayList) == expected.rays);
+    CHECK(out.rayList == inListOrder(expected.rays, view.desc.size.width));
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }
 
@@ -138,6 +153,39 @@ TEST_CASE("a frame with no reflective pixel traces no ray and dispatches zero gr
                 if (!sky) CHECK(out.radiance[4 * i] > 0.0f);
             }
         }
+    }
+    GLINT_REQUIRE_NO_VALIDATION_ERRORS();
+}
+
+TEST_CASE("the ray list's order is fixed, so a frame with the occupancy exit repeats bit for bit",
+          "[sssr][classify]") {
+    // 528x512 is 66x64 = 4,224 tiles: 66 blocks of 64 tiles in two superblocks of 64 blocks,
+    // so a block's first ray comes from both levels of counts.
+    test::SssrTestView view = test::randomClassifyView(528, 512, false, 11);
+    view.desc.occupancyExitFraction = 0.25f; // the groups of 64 rays decide when rays stop
+    gpu::SssrRunner runner(test::testContext(), view.desc);
+    runner.upload(view.inputs);
+    const reference::SssrClassification expected =
+        reference::sssrClassify(test::classifyReferenceInputs(view));
+    const std::uint32_t tiles = 66 * 64;
+    const std::uint32_t firstCount = shared::GLINT_WIRE_RayScratchBlockCount(tiles, 0);
+    const std::size_t scratchWords = shared::GLINT_WIRE_RayScratchWords(tiles);
+    REQUIRE(scratchWords - firstCount == 66 + 2 + 1); // block and superblock counts, completion
+    std::vector<float> firstRadiance;
+    for (int run = 0; run < 2; ++run) { // the second run starts from the counts the first left
+        INFO("run " << run);
+        runner.run(view.desc);
+        const gpu::SssrFrameOutputs out = runner.readback();
+        CHECK(out.counters[1] == expected.rayCount);
+        CHECK(out.rayList == inListOrder(expected.rays, 528));
+        const std::vector<std::uint32_t> scratch = runner.bufferWords("sssr_ray_scratch", scratchWords);
+        CHECK(
+            std::all_of(scratch.begin() + firstCount, scratch.end(), [](std::uint32_t w) { return w == 0; }));
+        if (run == 0)
+            firstRadiance = out.radiance;
+        else
+            CHECK(std::memcmp(out.radiance.data(), firstRadiance.data(),
+                              firstRadiance.size() * sizeof(float)) == 0);
     }
     GLINT_REQUIRE_NO_VALIDATION_ERRORS();
 }

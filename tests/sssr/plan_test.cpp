@@ -27,19 +27,24 @@ const Pass* findPass(const EffectPlan& plan, const std::string& name) {
 
 } // namespace
 
-TEST_CASE("the plan runs the pyramid, classification, blue noise, arguments and intersection in order",
-          "[sssr]") {
+TEST_CASE(
+    "the plan runs the pyramid, classification, compaction, blue noise, arguments and intersection in order",
+    "[sssr]") {
     EffectPlan plan;
     REQUIRE(planSssr(validDesc(), plan, nullptr) == Result::Ok);
     std::vector<std::string> names;
     for (const Pass& pass : plan.passes) names.push_back(pass.name);
-    REQUIRE(names.size() == 4);
+    REQUIRE(names.size() == 5);
     CHECK(names[1] == "classify");
-    CHECK(names[2] == "blue_noise_args");
-    CHECK(names[3] == "intersect");
+    CHECK(names[2] == "compact");
+    CHECK(names[3] == "blue_noise_args");
+    CHECK(names[4] == "intersect");
     const auto& classify = std::get<DirectDispatch>(findPass(plan, "classify")->dispatch);
     CHECK(classify.groupsX == 240);
     CHECK(classify.groupsY == 135);
+    // 32,400 tiles in blocks of 64: 507 groups, one row.
+    const auto& compact = std::get<DirectDispatch>(findPass(plan, "compact")->dispatch);
+    CHECK((compact.groupsX == 507 && compact.groupsY == 1));
     const auto& intersect = std::get<IndirectDispatch>(findPass(plan, "intersect")->dispatch);
     CHECK(intersect.resource == "sssr_indirect_args");
     CHECK(intersect.offset == 0);
@@ -51,6 +56,8 @@ TEST_CASE("the plan runs the pyramid, classification, blue noise, arguments and 
         if (buffer.name == "sssr_ray_list") CHECK(buffer.size == 1920ull * 1080 * 4);
         if (buffer.name == "sssr_tile_list") CHECK(buffer.size == 240ull * 135 * 4);
         if (buffer.name == "sssr_counters") CHECK(buffer.size == 16);
+        // 64 slots and a count per tile, 507 block and 8 superblock counts, a completion counter.
+        if (buffer.name == "sssr_ray_scratch") CHECK(buffer.size == (32400ull * 65 + 507 + 8 + 1) * 4);
         if (buffer.name == "sssr_indirect_args") CHECK((buffer.size == 24 && buffer.indirectArgs));
     }
 }

@@ -101,6 +101,10 @@ std::array<std::uint32_t, 4> SssrRunner::counters() const {
     return {words.at(0), words.at(1), words.at(2), words.at(3)};
 }
 
+std::vector<std::uint32_t> SssrRunner::bufferWords(const std::string& buffer, std::size_t count) const {
+    return runner_.readWords(buffer, count);
+}
+
 SssrFrameOutputs SssrRunner::readback() const {
     SssrFrameOutputs out;
     out.width = desc_.size.width;

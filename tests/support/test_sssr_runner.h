@@ -68,6 +68,8 @@ class SssrRunner {
     SssrFrameOutputs readback() const;
     // The four counters alone (rays, tiles...), cheap enough to read between timed frames.
     std::array<std::uint32_t, 4> counters() const;
+    // The first `count` words of a plan buffer (e.g. "sssr_ray_scratch").
+    std::vector<std::uint32_t> bufferWords(const std::string& buffer, std::size_t count) const;
     // With `denoised`, the denoiser's passes for `spatialPath` follow the intersection.
     std::vector<std::string> passNames(const SssrDesc& frame, bool denoised = false,
                                        SpatialPath spatialPath = SpatialPath::Prefilter) const;

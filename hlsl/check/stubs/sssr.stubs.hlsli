@@ -1,4 +1,4 @@
-// Stub definitions of every SSSR callback (classification, blue noise, indirect arguments,
+// Stub definitions of every SSSR callback (classification, compaction, blue noise, indirect arguments,
 // intersection, composite), for the SSSR and hybrid header checks. One definition each:
 // a callback several headers declare is defined here once.
 #ifndef GLINT_CHECK_SSSR_STUBS_HLSLI
@@ -27,6 +27,9 @@ uint GLINT_SSSR_LoadRay(uint index) { return g_glint_check_words[index + 4]; }
 uint GLINT_SSSR_AddRays(uint count) { return GLINT_CHECK_Add(0, count); }
 uint GLINT_SSSR_AddTile() { return GLINT_CHECK_Add(2, 1u); }
 void GLINT_SSSR_StoreRay(uint index, uint entry) { g_glint_check_words[index + 4] = entry; }
+uint GLINT_SSSR_LoadRayScratch(uint word) { return g_glint_check_words[word + 16]; }
+void GLINT_SSSR_StoreRayScratch(uint word, uint value) { g_glint_check_words[word + 16] = value; }
+uint GLINT_SSSR_AddRayScratch(uint word, uint value) { return GLINT_CHECK_Add(word + 16, value); }
 void GLINT_SSSR_StoreRay(int2 pixel, float4 directionAndPdf) { g_glint_check[pixel.x + 4] = directionAndPdf; }
 void GLINT_SSSR_StoreTile(uint index, uint entry) { g_glint_check_words[index + 8] = entry; }
 void GLINT_SSSR_StoreCounter(uint index, uint value) { g_glint_check_words[index] = value; }

@@ -10,6 +10,15 @@
 //   shadow mask word (shadow denoiser)      one word per 8x4 pixels, pixel (x, y) at bit
 //                                           (y mod 4) * 8 + (x mod 8); 1 = lit
 //   shadow tile metadata                    one word per 8x8 tile: bit 0 CLEAR, bit 1 LIGHT
+//   ray scratch      (SSSR classify -> compact)  one buffer of words for T = ceil(W/8) ceil(H/8)
+//                                           tiles (row-major): [0, 64 T) each tile's ray entries in
+//                                           its pixels' row-major order, 64 slots a tile;
+//                                           [64 T, 65 T) each tile's ray count; then the ray
+//                                           counts of B = ceil(T / 64) blocks of 64 tiles, of
+//                                           ceil(B / 64) superblocks of 64 blocks, and one
+//                                           completion counter. Every word after the counts is
+//                                           zero between frames (the compaction's last group
+//                                           clears them), so the buffer starts zeroed.
 #ifndef GLINT_WIRE_FORMATS_H
 #define GLINT_WIRE_FORMATS_H
 
@@ -40,6 +49,24 @@ GLINT_WIRE_FUNCTION uint GLINT_WIRE_TileEntryY(uint entry) { return entry >> 16;
 
 // Shadow mask: the bit of pixel (x, y) within its word.
 GLINT_WIRE_FUNCTION uint GLINT_WIRE_ShadowMaskBit(uint x, uint y) { return (y & 3u) * 8u + (x & 7u); }
+
+// Ray scratch layout (above): word indices for T tiles.
+#define GLINT_WIRE_RAY_BLOCK_TILES 64u
+#define GLINT_WIRE_RAY_SUPERBLOCK_BLOCKS 64u
+GLINT_WIRE_FUNCTION uint GLINT_WIRE_RayBlocks(uint tiles) { return (tiles + 63u) / 64u; }
+GLINT_WIRE_FUNCTION uint GLINT_WIRE_RaySuperblocks(uint tiles) { return (GLINT_WIRE_RayBlocks(tiles) + 63u) / 64u; }
+GLINT_WIRE_FUNCTION uint GLINT_WIRE_RayScratchSlot(uint tile, uint slot) { return tile * 64u + slot; }
+GLINT_WIRE_FUNCTION uint GLINT_WIRE_RayScratchTileCount(uint tiles, uint tile) { return tiles * 64u + tile; }
+GLINT_WIRE_FUNCTION uint GLINT_WIRE_RayScratchBlockCount(uint tiles, uint block) { return tiles * 65u + block; }
+GLINT_WIRE_FUNCTION uint GLINT_WIRE_RayScratchSuperblockCount(uint tiles, uint superblock)
+{
+    return tiles * 65u + GLINT_WIRE_RayBlocks(tiles) + superblock;
+}
+GLINT_WIRE_FUNCTION uint GLINT_WIRE_RayScratchCompletion(uint tiles)
+{
+    return GLINT_WIRE_RayScratchSuperblockCount(tiles, GLINT_WIRE_RaySuperblocks(tiles));
+}
+GLINT_WIRE_FUNCTION uint GLINT_WIRE_RayScratchWords(uint tiles) { return GLINT_WIRE_RayScratchCompletion(tiles) + 1u; }
 
 #define GLINT_WIRE_SHADOW_TILE_CLEAR 1u
 #define GLINT_WIRE_SHADOW_TILE_LIGHT 2u

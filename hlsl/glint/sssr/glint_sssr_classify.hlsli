@@ -1,7 +1,9 @@
 // glint SSSR, pass 2: tile classification (docs/sssr.md). Decides per pixel whether a ray is
-// traced, copied from a quad neighbour or replaced by the environment; compacts the traced
-// pixels into the ray list and the tiles with glossy pixels into the denoiser's tile list;
-// extracts GGX alpha once; writes every pixel's initial radiance.
+// traced, copied from a quad neighbour or replaced by the environment; writes each tile's rays
+// in its pixels' order to the tile's slots of the ray scratch buffer, with the counts the
+// compaction (glint_sssr_compact.hlsli) turns into the ray list; appends the tiles with glossy
+// pixels to the denoiser's tile list; extracts GGX alpha once; writes every pixel's initial
+// radiance.
 //
 // Integration: define these callbacks before or after including this header.
 //
@@ -22,7 +24,10 @@
 //   void   GLINT_SSSR_StoreRadiance(int2 pixel, float4 radianceAndHitDistance);
 //   void   GLINT_SSSR_StoreConfidence(int2 pixel, float confidence);
 //   uint   GLINT_SSSR_AddRays(uint count);   atomic add to counter 0, returns the previous value
-//   void   GLINT_SSSR_StoreRay(uint index, uint entry);
+//   void   GLINT_SSSR_StoreRayScratch(uint word, uint value);   the ray scratch buffer
+//   uint   GLINT_SSSR_AddRayScratch(uint word, uint value);     atomic add there, returns the previous value
+//       (layout: glint/common/glint_wire_formats.h; GLINT_WIRE_RayScratchWords(tiles) words,
+//       zeroed once at creation)
 //   uint   GLINT_SSSR_AddTile();             atomic add of 1 to counter 2, returns the previous value
 //   void   GLINT_SSSR_StoreTile(uint index, uint entry);
 //
@@ -49,7 +54,8 @@ void GLINT_SSSR_StoreRoughness(int2 pixel, float alpha);
 void GLINT_SSSR_StoreRadiance(int2 pixel, float4 radianceAndHitDistance);
 void GLINT_SSSR_StoreConfidence(int2 pixel, float confidence);
 uint GLINT_SSSR_AddRays(uint count);
-void GLINT_SSSR_StoreRay(uint index, uint entry);
+void GLINT_SSSR_StoreRayScratch(uint word, uint value);
+uint GLINT_SSSR_AddRayScratch(uint word, uint value);
 uint GLINT_SSSR_AddTile();
 void GLINT_SSSR_StoreTile(uint index, uint entry);
 
@@ -57,8 +63,7 @@ void GLINT_SSSR_StoreTile(uint index, uint entry);
 #define GLINT_SSSR_STATE_REQUIRES_COPY 2u
 
 groupshared uint g_glint_sssr_state[GLINT_SSSR_TILE * GLINT_SSSR_TILE];
-groupshared uint g_glint_sssr_ray_count;
-groupshared uint g_glint_sssr_ray_base;
+groupshared uint g_glint_sssr_trace_bits[2]; // bit i of word i / 32: pixel i of the tile traces
 groupshared uint g_glint_sssr_any_glossy;
 
 uint GLINT_SSSR_StateAt(uint2 local)
@@ -198,41 +203,57 @@ void GLINT_SSSR_StoreInitialRadiance(GLINT_SssrConstants c, GLINT_SSSR_PixelDeci
     GLINT_SSSR_StoreConfidence(d.pixel, 0.0);
 }
 
+// The tile's rays in its pixels' row-major order: pixel localIndex's slot counts the tracing
+// pixels before it, so the order does not depend on scheduling or wave size.
+uint GLINT_SSSR_TraceSlot(uint localIndex)
+{
+    uint low = g_glint_sssr_trace_bits[0];
+    if (localIndex < 32u)
+        return countbits(low & ((1u << localIndex) - 1u));
+    return countbits(low) + countbits(g_glint_sssr_trace_bits[1] & ((1u << (localIndex - 32u)) - 1u));
+}
+
 void GLINT_SSSR_Classify(GLINT_SssrConstants c, uint2 groupId, uint2 local)
 {
     uint localIndex = local.y * GLINT_SSSR_TILE + local.x;
     if (localIndex == 0)
     {
-        g_glint_sssr_ray_count = 0;
+        g_glint_sssr_trace_bits[0] = 0;
+        g_glint_sssr_trace_bits[1] = 0;
         g_glint_sssr_any_glossy = 0;
     }
     // Its barrier also orders the initialization above before the atomics below.
     GLINT_SSSR_PixelDecision d = GLINT_SSSR_ClassifyPixel(c, groupId, local);
     bool traces = d.traces;
 
-    // Compaction: one global atomic per group, entries in arbitrary order within the group.
-    // Within a wave the slots come from a prefix count and one groupshared atomic per wave
-    // (instead of one per pixel); this holds for any wave size, and the order of the entries
-    // is unspecified either way.
-    uint waveRays = WaveActiveCountBits(traces);
-    uint waveBase = 0;
-    if (WaveIsFirstLane() && waveRays > 0)
-        InterlockedAdd(g_glint_sssr_ray_count, waveRays, waveBase);
-    uint slot = WaveReadLaneFirst(waveBase) + WavePrefixCountBits(traces);
+    // A groupshared OR per tracing pixel: the bit is the pixel's place in the tile, which no
+    // wave layout changes.
+    if (traces)
+        InterlockedOr(g_glint_sssr_trace_bits[localIndex / 32u], 1u << (localIndex % 32u));
     bool waveGlossy = WaveActiveAnyTrue(d.glossy); // outside the condition: wave ops need every lane
     if (WaveIsFirstLane() && waveGlossy)
         InterlockedOr(g_glint_sssr_any_glossy, 1u);
     GroupMemoryBarrierWithGroupSync();
+    uint tiles = GLINT_SSSR_TileCount(c);
+    uint tile = groupId.y * GLINT_SSSR_TileColumns(c) + groupId.x;
     if (localIndex == 0)
     {
-        if (g_glint_sssr_ray_count > 0)
-            g_glint_sssr_ray_base = GLINT_SSSR_AddRays(g_glint_sssr_ray_count);
+        uint count = countbits(g_glint_sssr_trace_bits[0]) + countbits(g_glint_sssr_trace_bits[1]);
+        GLINT_SSSR_StoreRayScratch(GLINT_WIRE_RayScratchTileCount(tiles, tile), count);
+        if (count > 0)
+        {
+            // Sums, so their values do not depend on the order of the groups.
+            GLINT_SSSR_AddRays(count);
+            uint block = tile / GLINT_WIRE_RAY_BLOCK_TILES;
+            GLINT_SSSR_AddRayScratch(GLINT_WIRE_RayScratchBlockCount(tiles, block), count);
+            GLINT_SSSR_AddRayScratch(GLINT_WIRE_RayScratchSuperblockCount(tiles, block / GLINT_WIRE_RAY_SUPERBLOCK_BLOCKS), count);
+        }
         if (g_glint_sssr_any_glossy != 0)
             GLINT_SSSR_StoreTile(GLINT_SSSR_AddTile(), GLINT_SSSR_PackTile(groupId * GLINT_SSSR_TILE));
     }
-    GroupMemoryBarrierWithGroupSync();
     if (traces)
-        GLINT_SSSR_StoreRay(g_glint_sssr_ray_base + slot, GLINT_SSSR_PackRay(uint2(d.pixel), d.copyFlags));
+        GLINT_SSSR_StoreRayScratch(GLINT_WIRE_RayScratchSlot(tile, GLINT_SSSR_TraceSlot(localIndex)),
+                                   GLINT_SSSR_PackRay(uint2(d.pixel), d.copyFlags));
 
     GLINT_SSSR_StoreInitialRadiance(c, d);
 }

@@ -119,6 +119,17 @@ bool GLINT_SSSR_IsBasePixel(GLINT_SssrConstants c, uint2 pixel)
     return ((pixel.x | pixel.y) & 1u) == 0;
 }
 
+// The 8x8 tile grid: columns, and tiles in all (row-major: tile = y * columns + x).
+uint GLINT_SSSR_TileColumns(GLINT_SssrConstants c)
+{
+    return (c.inputSize.x + GLINT_SSSR_TILE - 1) / GLINT_SSSR_TILE;
+}
+
+uint GLINT_SSSR_TileCount(GLINT_SssrConstants c)
+{
+    return GLINT_SSSR_TileColumns(c) * ((c.inputSize.y + GLINT_SSSR_TILE - 1) / GLINT_SSSR_TILE);
+}
+
 // Ray-list and tile-list entries: the wire formats of glint/common/glint_wire_formats.h.
 uint GLINT_SSSR_PackRay(uint2 pixel, uint copyFlags)
 {

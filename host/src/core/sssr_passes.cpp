@@ -5,7 +5,9 @@
 #include "core/dispatch.h"
 #include "core/plan_checks.h"
 #include "core/sssr_constants.h"
+#include "glint/common/glint_wire_formats.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace glint {
@@ -172,8 +174,19 @@ Pass classifyPass(const SssrDesc& desc, const std::vector<std::byte>& constants)
     pass.dispatch = core::gridFor(desc.size.width, desc.size.height, 1, pass.groupSize);
     pass.uses = core::sssrClassifyUses("sssr_variance_history");
     pass.uses.insert(pass.uses.end(), {{"g_glint_counters", "sssr_counters", Access::ReadWrite},
-                                       {"g_glint_ray_list", "sssr_ray_list", Access::Write},
+                                       {"g_glint_ray_scratch", "sssr_ray_scratch", Access::ReadWrite},
                                        {"g_glint_tile_list", "sssr_tile_list", Access::Write}});
+    return pass;
+}
+
+// One group per block of 64 tiles, in rows of GLINT_SSSR_GROUPS_PER_ROW (glint_sssr_compact.hlsli).
+Pass compactPass(std::uint32_t tiles, const std::vector<std::byte>& constants) {
+    Pass pass = core::sssrPass("compact", "sssr_compact", GLINT_SSSR_RAYS_PER_GROUP, 1, constants);
+    const std::uint32_t blocks = shared::GLINT_WIRE_RayBlocks(tiles);
+    pass.dispatch = DirectDispatch{std::min(blocks, GLINT_SSSR_GROUPS_PER_ROW),
+                                   core::divideRoundUp(blocks, GLINT_SSSR_GROUPS_PER_ROW), 1};
+    pass.uses = {{"g_glint_ray_scratch", "sssr_ray_scratch", Access::ReadWrite},
+                 {"g_glint_ray_list", "sssr_ray_list", Access::Write}};
     return pass;
 }
 
@@ -232,11 +245,15 @@ Result planSssr(const SssrDesc& desc, EffectPlan& plan, std::string* error) {
     if (desc.storeRays)
         plan.images.push_back({"sssr_rays", w, h, 1, half ? Format::RGBA16Float : Format::RGBA32Float});
     plan.buffers.push_back({"sssr_ray_list", std::uint64_t{w} * h * 4u, false});
+    plan.buffers.push_back(
+        {"sssr_ray_scratch",
+         std::uint64_t{shared::GLINT_WIRE_RayScratchWords(static_cast<std::uint32_t>(tiles))} * 4u, false});
     plan.buffers.push_back({"sssr_tile_list", tiles * 4u, false});
     plan.buffers.push_back({"sssr_counters", GLINT_SSSR_COUNTER_WORDS * 4u, false});
     plan.buffers.push_back({"sssr_indirect_args", GLINT_SSSR_ARGUMENT_WORDS * 4u, true});
 
     plan.passes.push_back(classifyPass(desc, constants));
+    plan.passes.push_back(compactPass(static_cast<std::uint32_t>(tiles), constants));
     plan.passes.push_back(core::sssrBlueNoisePass(constants, "sssr_counters", "sssr_indirect_args"));
     plan.passes.push_back(intersectPass(desc, constants));
     if (desc.composite) {

@@ -199,7 +199,7 @@ void addOutputs(EffectPlan& plan, const SssrDesc& sssr, const ReflectionsDenoise
     intermediate({"hit_distance", "sssr_radiance", denoiser ? denoisedBy : "intersect",
                   OutputDecoder::Channels, 3, 1});
     intermediate({"roughness", "sssr_roughness", "classify", OutputDecoder::Channels, 0, 1});
-    intermediate({"ray_list", "sssr_ray_list", "classify", OutputDecoder::RayList, 0, 1, 0, "traced_pixels"});
+    intermediate({"ray_list", "sssr_ray_list", "compact", OutputDecoder::RayList, 0, 1, 0, "traced_pixels"});
     intermediate(
         {"tile_list", "sssr_tile_list", "classify", OutputDecoder::TileList, 0, 1, 0, "listed_tiles"});
     if (sssr.debugOutput) {
@@ -237,6 +237,8 @@ EffectEvaluation evaluation() {
                     {"iterations_32", {"maxTraversalIterations=32"}},
                     {"iterations_64", {"maxTraversalIterations=64"}},
                     {"iterations_256", {"maxTraversalIterations=256"}},
+                    {"occupancy_4of64", {"occupancyExitFraction=0.0625"}},
+                    {"occupancy_8of64", {"occupancyExitFraction=0.125"}},
                     {"mip_1", {"mostDetailedMip=1"}},
                     {"mip_2", {"mostDetailedMip=2"}},
                     {"spq_2", {"samplesPerQuad=2"}},
