@@ -194,7 +194,7 @@ elseif(CASE STREQUAL "unscored")
 elseif(CASE STREQUAL "roundtrip")
   glint_expect(0 --validate simulate "${SCENES}/glossy_room.toml" --size 64x36 --frame-count 2 --spp 4 --out "${OUT}/capture")
   glint_expect(0 --validate dump "${OUT}/capture" --set denoise=true --out "${OUT}/dump")
-  foreach(file reflections/intersect/noisy.exr reflections/compact/ray_list.png reflections/depth_pyramid/pyramid_mip1.exr
+  foreach(file reflections/intersect/noisy.exr reflections/compact_noise_args/ray_list.png reflections/depth_pyramid/pyramid_mip1.exr
                reflections/resolve/variance.exr reflections/input/input_depth.exr
                reflections/input/input_normals.exr reflections/input/input_motion.exr
                reflections/input/input_roughness.exr index.json)

@@ -113,7 +113,7 @@ glint_cli_test(NAME "bench times every shadow denoiser pass under validation" LA
   COMMAND --validate bench shadows --size 41x23 --runs 2
           --scene "${PROJECT_SOURCE_DIR}/harness/scenes/courtyard_penumbra.toml")
 glint_cli_test(NAME "bench times SSSR and the denoiser on a simulated scene under validation" LABELS gpu EXIT 0
-  STDOUT "classify.*blue_noise_args.*intersect.*reproject.*prefilter.*resolve.*total.*traced_fraction"
+  STDOUT "classify.*compact_noise_args.*intersect.*reproject.*prefilter.*resolve.*total.*traced_fraction"
   COMMAND --validate bench reflections --size 64x36 --runs 2 --scene "${GLINT_GLOSSY_ROOM}"
           --set denoise=true --set debugOutput=true)
 glint_cli_test(NAME "bench of an effect with an unknown setting is a usage error naming it" LABELS gpu EXIT 2

@@ -3,6 +3,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <tuple>
+
 #include <cmath>
 #include <limits>
 #include <variant>
@@ -34,17 +36,18 @@ TEST_CASE(
     REQUIRE(planSssr(validDesc(), plan, nullptr) == Result::Ok);
     std::vector<std::string> names;
     for (const Pass& pass : plan.passes) names.push_back(pass.name);
-    REQUIRE(names.size() == 5);
+    REQUIRE(names.size() == 4);
     CHECK(names[1] == "classify");
-    CHECK(names[2] == "compact");
-    CHECK(names[3] == "blue_noise_args");
-    CHECK(names[4] == "intersect");
+    CHECK(names[2] == "compact_noise_args");
+    CHECK(names[3] == "intersect");
     const auto& classify = std::get<DirectDispatch>(findPass(plan, "classify")->dispatch);
     CHECK(classify.groupsX == 240);
     CHECK(classify.groupsY == 135);
-    // 32,400 tiles in blocks of 64: 507 groups, one row.
-    const auto& compact = std::get<DirectDispatch>(findPass(plan, "compact")->dispatch);
-    CHECK((compact.groupsX == 507 && compact.groupsY == 1));
+    // 32,400 tiles in blocks of 64: 507 groups (more than the blue noise's 256), one row.
+    const Pass* compact = findPass(plan, "compact_noise_args");
+    CHECK(compact->pipeline == "sssr_blue_noise.compact");
+    const auto& compactGrid = std::get<DirectDispatch>(compact->dispatch);
+    CHECK((compactGrid.groupsX == 507 && compactGrid.groupsY == 1));
     const auto& intersect = std::get<IndirectDispatch>(findPass(plan, "intersect")->dispatch);
     CHECK(intersect.resource == "sssr_indirect_args");
     CHECK(intersect.offset == 0);
@@ -59,6 +62,22 @@ TEST_CASE(
         // 64 slots and a count per tile, 507 block and 8 superblock counts, a completion counter.
         if (buffer.name == "sssr_ray_scratch") CHECK(buffer.size == (32400ull * 65 + 507 + 8 + 1) * 4);
         if (buffer.name == "sssr_indirect_args") CHECK((buffer.size == 24 && buffer.indirectArgs));
+    }
+}
+
+TEST_CASE("the compaction's grid covers every block of 64 tiles and the blue noise's 256 groups", "[sssr]") {
+    // 4K: 480 x 270 = 129,600 tiles, 2,025 blocks in rows of 1,024; 64x64: one block, and the
+    // blue noise still needs its 16 x 16 groups.
+    for (const auto& [width, height, x, y] :
+         {std::tuple{3840u, 2160u, 1024u, 2u}, std::tuple{64u, 64u, 256u, 1u}}) {
+        INFO(width << "x" << height);
+        SssrDesc desc = validDesc();
+        desc.size = {width, height};
+        EffectPlan plan;
+        REQUIRE(planSssr(desc, plan, nullptr) == Result::Ok);
+        const auto& grid = std::get<DirectDispatch>(findPass(plan, "compact_noise_args")->dispatch);
+        CHECK(grid.groupsX == x);
+        CHECK(grid.groupsY == y);
     }
 }
 

@@ -1,4 +1,4 @@
-// glint SSSR, pass 3: ray-list compaction (docs/sssr.md, "The ray list"). Gathers the rays the
+// glint SSSR, ray-list compaction (docs/sssr.md, "The ray list"). Gathers the rays the
 // classification left in each tile's slots of the ray scratch buffer into the ray list, in a
 // fixed order: tiles row-major, each tile's rays in its pixels' row-major order. The order
 // does not depend on how the GPU schedules groups, so the intersection's groups of 64 rays,
@@ -12,11 +12,13 @@
 //   void GLINT_SSSR_StoreRay(uint index, uint entry);         the ray list (W H entries)
 //
 // Entry: from main, GLINT_SSSR_CompactRays(c, block, SV_GroupIndex), c the GLINT_SssrConstants
-// in a cbuffer (glint_sssr_common.hlsli; only c.inputSize is read), block =
-// SV_GroupID.y * GLINT_SSSR_GROUPS_PER_ROW + SV_GroupID.x.
-// Dispatch: [numthreads(64, 1, 1)], one group per block of 64 tiles: (min(B, 1024),
-// ceil(B / 1024), 1) groups for B = GLINT_WIRE_RayBlocks(ceil(W / 8) ceil(H / 8)); after the
-// classification, before the intersection (its indirect arguments need only counter 0).
+// in a cbuffer (glint_sssr_common.hlsli; only c.inputSize is read), in group-uniform control
+// flow, with 64 threads a group and block = SV_GroupID.y * GLINT_SSSR_GROUPS_PER_ROW +
+// SV_GroupID.x: (min(n, 1024), ceil(n / 1024), 1) groups for any n >= B =
+// GLINT_WIRE_RayBlocks(ceil(W / 8) ceil(H / 8)); groups past B return at once. It runs after
+// the classification and before the intersection. glint's entry (entry/sssr/sssr_blue_noise.cs.hlsl,
+// permutation `compact`) runs it in the blue-noise and arguments dispatch, [numthreads(8, 8, 1)],
+// n = max(256, B); it can also be a dispatch of its own.
 //
 // Each group finds its first ray from the superblock counts before its superblock and the
 // block counts before it in its superblock (at most 64 + 63 loads at any size), scans its 64

@@ -24,9 +24,10 @@ Pass sssrPass(const char* name, std::string pipeline, std::uint32_t groupX, std:
 std::vector<ResourceUse> sssrClassifyUses(const std::string& varianceHistory);
 std::vector<ResourceUse> sssrIntersectUses();
 // The blue-noise pass, which also turns `counters` (SSSR's four-word layout first) into
-// `arguments`.
+// `arguments`; with `tiles` (8x8 tiles of the frame), it also compacts "sssr_ray_scratch" into
+// "sssr_ray_list" (the pass "compact_noise_args").
 Pass sssrBlueNoisePass(const std::vector<std::byte>& constants, const std::string& counters,
-                       const std::string& arguments);
+                       const std::string& arguments, std::uint32_t tiles = 0);
 
 // SSSR's composite: "color" + the reflection image desc.compositeReflection x split-sum specular,
 // into "composite" (RGBA32F); reads "sssr_brdf_lut" and "base_color_metallic".

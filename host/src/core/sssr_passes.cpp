@@ -135,15 +135,25 @@ std::vector<ResourceUse> sssrIntersectUses() {
             {"g_glint_confidence", "sssr_confidence", Access::ReadWrite}};
 }
 
-// Blue noise and the indirect arguments share one dispatch (see the entry file).
+// Blue noise and the indirect arguments share one dispatch (see the entry file); with `tiles`
+// (the SSSR plan) the ray-list compaction too, one group per block of 64 tiles.
 Pass sssrBlueNoisePass(const std::vector<std::byte>& constants, const std::string& counters,
-                       const std::string& arguments) {
-    Pass pass = sssrPass("blue_noise_args", "sssr_blue_noise", 8, 8, constants);
-    pass.dispatch = DirectDispatch{GLINT_SSSR_BLUE_NOISE_SIZE / 8, GLINT_SSSR_BLUE_NOISE_SIZE / 8, 1};
+                       const std::string& arguments, std::uint32_t tiles) {
+    constexpr std::uint32_t noiseGroups = GLINT_SSSR_BLUE_NOISE_SIZE / 8;
+    Pass pass = sssrPass(tiles > 0 ? "compact_noise_args" : "blue_noise_args",
+                         tiles > 0 ? "sssr_blue_noise.compact" : "sssr_blue_noise", 8, 8, constants);
+    pass.dispatch = DirectDispatch{noiseGroups, noiseGroups, 1};
     pass.uses = {{"g_glint_blue_noise_source", "sssr_blue_noise_source", Access::Read},
                  {"g_glint_blue_noise", "sssr_blue_noise", Access::Write},
                  {"g_glint_counters", counters, Access::ReadWrite},
                  {"g_glint_arguments", arguments, Access::Write}};
+    if (tiles > 0) {
+        const std::uint32_t groups = std::max(noiseGroups * noiseGroups, shared::GLINT_WIRE_RayBlocks(tiles));
+        pass.dispatch = DirectDispatch{std::min(groups, GLINT_SSSR_GROUPS_PER_ROW),
+                                       core::divideRoundUp(groups, GLINT_SSSR_GROUPS_PER_ROW), 1};
+        pass.uses.push_back({"g_glint_ray_scratch", "sssr_ray_scratch", Access::ReadWrite});
+        pass.uses.push_back({"g_glint_ray_list", "sssr_ray_list", Access::Write});
+    }
     return pass;
 }
 
@@ -176,17 +186,6 @@ Pass classifyPass(const SssrDesc& desc, const std::vector<std::byte>& constants)
     pass.uses.insert(pass.uses.end(), {{"g_glint_counters", "sssr_counters", Access::ReadWrite},
                                        {"g_glint_ray_scratch", "sssr_ray_scratch", Access::ReadWrite},
                                        {"g_glint_tile_list", "sssr_tile_list", Access::Write}});
-    return pass;
-}
-
-// One group per block of 64 tiles, in rows of GLINT_SSSR_GROUPS_PER_ROW (glint_sssr_compact.hlsli).
-Pass compactPass(std::uint32_t tiles, const std::vector<std::byte>& constants) {
-    Pass pass = core::sssrPass("compact", "sssr_compact", GLINT_SSSR_RAYS_PER_GROUP, 1, constants);
-    const std::uint32_t blocks = shared::GLINT_WIRE_RayBlocks(tiles);
-    pass.dispatch = DirectDispatch{std::min(blocks, GLINT_SSSR_GROUPS_PER_ROW),
-                                   core::divideRoundUp(blocks, GLINT_SSSR_GROUPS_PER_ROW), 1};
-    pass.uses = {{"g_glint_ray_scratch", "sssr_ray_scratch", Access::ReadWrite},
-                 {"g_glint_ray_list", "sssr_ray_list", Access::Write}};
     return pass;
 }
 
@@ -253,8 +252,8 @@ Result planSssr(const SssrDesc& desc, EffectPlan& plan, std::string* error) {
     plan.buffers.push_back({"sssr_indirect_args", GLINT_SSSR_ARGUMENT_WORDS * 4u, true});
 
     plan.passes.push_back(classifyPass(desc, constants));
-    plan.passes.push_back(compactPass(static_cast<std::uint32_t>(tiles), constants));
-    plan.passes.push_back(core::sssrBlueNoisePass(constants, "sssr_counters", "sssr_indirect_args"));
+    plan.passes.push_back(core::sssrBlueNoisePass(constants, "sssr_counters", "sssr_indirect_args",
+                                                  static_cast<std::uint32_t>(tiles)));
     plan.passes.push_back(intersectPass(desc, constants));
     if (desc.composite) {
         plan.images.push_back({"composite", w, h, 1, Format::RGBA32Float});
