@@ -199,7 +199,8 @@ void addOutputs(EffectPlan& plan, const SssrDesc& sssr, const ReflectionsDenoise
     intermediate({"hit_distance", "sssr_radiance", denoiser ? denoisedBy : "intersect",
                   OutputDecoder::Channels, 3, 1});
     intermediate({"roughness", "sssr_roughness", "classify", OutputDecoder::Channels, 0, 1});
-    intermediate({"ray_list", "sssr_ray_list", "compact_noise_args", OutputDecoder::RayList, 0, 1, 0, "traced_pixels"});
+    intermediate({"ray_list", "sssr_ray_list", "compact_noise_args", OutputDecoder::RayList, 0, 1, 0,
+                  "traced_pixels"});
     intermediate(
         {"tile_list", "sssr_tile_list", "classify", OutputDecoder::TileList, 0, 1, 0, "listed_tiles"});
     if (sssr.debugOutput) {
