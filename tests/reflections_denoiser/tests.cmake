@@ -5,6 +5,7 @@ glint_add_test_suite(NAME reflections_denoiser LABELS gpu
     reflections_denoiser/ghosting_test.cpp
     reflections_denoiser/hdr_highlight_test.cpp
     reflections_denoiser/mirror_test.cpp
+    reflections_denoiser/repeat_test.cpp
     reflections_denoiser/denoiser_scene.cpp
     reflections_denoiser/reference_test.cpp
     reflections_denoiser/ratio_test.cpp
