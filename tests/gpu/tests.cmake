@@ -19,6 +19,7 @@ glint_add_test_suite(NAME gpu LABELS gpu HARNESS_SHADERS_ONLY
   SOURCES
     gpu/buffer_transfer_test.cpp
     gpu/context_test.cpp
+    gpu/effect_limits_test.cpp
     gpu/image_transfer_test.cpp
     gpu/sustained_test.cpp
     gpu/timestamps_test.cpp

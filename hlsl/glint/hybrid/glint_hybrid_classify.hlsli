@@ -6,8 +6,9 @@
 // aligned block of 32 entries belongs to one tile; ray-traced rays to a plain list. Tiles with
 // a glossy pixel go to the denoiser's tile list, mirrors included.
 //
-// Integration: the callbacks of glint_sssr_classify.hlsli except GLINT_SSSR_AddRays and
-// GLINT_SSSR_StoreRay (the SSSR ray list is not used), and these:
+// Integration: the callbacks of glint_sssr_classify.hlsli except GLINT_SSSR_AddRays,
+// GLINT_SSSR_StoreRayScratch and GLINT_SSSR_AddRayScratch (the SSSR ray list is not used), and
+// these:
 //
 //   uint GLINT_HYBRID_LoadFeedbackHistory(int2 tile);  last frame's counter image, R32_UINT
 //       ceil(W/8) x ceil(H/8); only in-range tiles are asked

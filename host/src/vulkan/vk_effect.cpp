@@ -4,6 +4,7 @@
 #include <cstring>
 #include <exception>
 #include <set>
+#include <string>
 #include <vector>
 
 namespace glint::vk {
@@ -113,6 +114,16 @@ Result createEffect(const Device& device, const EffectPlan& plan, EffectInstance
             stagedBytes += bytes;
         }
         for (const BufferDesc& buffer : plan.buffers) {
+            // Bound whole as storage buffers: a larger one is beyond what a descriptor may cover.
+            const VkDeviceSize limit = device.properties.limits.maxStorageBufferRange;
+            if (buffer.size > limit) {
+                destroyEffect(effect);
+                fail(error, plan.effect,
+                     "buffer '" + buffer.name + "' needs " + std::to_string(buffer.size) +
+                         " bytes, more than this device's maxStorageBufferRange (" + std::to_string(limit) +
+                         "); use a smaller resolution");
+                return Result::Unsupported;
+            }
             VkBufferUsageFlags usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
             if (buffer.indirectArgs) usage |= VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT;
             effect.buffers[buffer.name] = createBuffer(device, buffer.size, usage, MemoryUse::DeviceLocal);
