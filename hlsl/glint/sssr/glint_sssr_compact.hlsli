@@ -22,9 +22,9 @@
 //
 // Each group finds its first ray from the superblock counts before its superblock and the
 // block counts before it in its superblock (at most 64 + 63 loads at any size), scans its 64
-// tile counts, and copies its rays with all 64 threads. The group that finishes its reads last
-// (a completion counter) clears the block and superblock counts for the next frame: the
-// classification only adds to them, and the host never resets them.
+// tile counts, and copies its rays with all 64 threads, four at a time each. The group that
+// finishes its reads last (a completion counter) clears the block and superblock counts for
+// the next frame: the classification only adds to them, and the host never resets them.
 #ifndef GLINT_SSSR_COMPACT_HLSLI
 #define GLINT_SSSR_COMPACT_HLSLI
 
@@ -36,6 +36,7 @@ uint GLINT_SSSR_AddRayScratch(uint word, uint value);
 void GLINT_SSSR_StoreRay(uint index, uint entry);
 
 #define GLINT_SSSR_COMPACT_GROUP 64u
+#define GLINT_SSSR_COMPACT_BATCH 4u
 
 groupshared uint g_glint_sssr_compact_rays[GLINT_SSSR_COMPACT_GROUP];  // inclusive prefix of the tile counts
 groupshared uint g_glint_sssr_compact_first[GLINT_SSSR_COMPACT_GROUP]; // inclusive prefix of the partial offsets
@@ -108,12 +109,28 @@ void GLINT_SSSR_CompactRays(GLINT_SssrConstants c, uint block, uint lane)
             GLINT_SSSR_StoreRayScratch(firstCount + word, 0u);
     }
 
-    for (uint ray = lane; ray < blockRays; ray += GLINT_SSSR_COMPACT_GROUP)
+    // Four rays a thread at a time: the four loads are issued before any store waits on them,
+    // so a block of many rays (a mirror-filled one holds 4,096) pays a quarter of the latency.
+    for (uint first = lane; first < blockRays; first += GLINT_SSSR_COMPACT_BATCH * GLINT_SSSR_COMPACT_GROUP)
     {
-        uint tileInBlock = GLINT_SSSR_CompactTileOf(ray);
-        uint tileFirstRay = tileInBlock == 0 ? 0u : g_glint_sssr_compact_rays[tileInBlock - 1u];
-        uint entry = GLINT_SSSR_LoadRayScratch(GLINT_WIRE_RayScratchSlot(firstTile + tileInBlock, ray - tileFirstRay));
-        GLINT_SSSR_StoreRay(blockFirstRay + ray, entry);
+        uint entries[GLINT_SSSR_COMPACT_BATCH];
+        [unroll] for (uint k = 0; k < GLINT_SSSR_COMPACT_BATCH; ++k)
+        {
+            uint ray = first + k * GLINT_SSSR_COMPACT_GROUP;
+            entries[k] = 0u;
+            if (ray < blockRays)
+            {
+                uint tileInBlock = GLINT_SSSR_CompactTileOf(ray);
+                uint tileFirstRay = tileInBlock == 0 ? 0u : g_glint_sssr_compact_rays[tileInBlock - 1u];
+                entries[k] = GLINT_SSSR_LoadRayScratch(GLINT_WIRE_RayScratchSlot(firstTile + tileInBlock, ray - tileFirstRay));
+            }
+        }
+        [unroll] for (uint k = 0; k < GLINT_SSSR_COMPACT_BATCH; ++k)
+        {
+            uint ray = first + k * GLINT_SSSR_COMPACT_GROUP;
+            if (ray < blockRays)
+                GLINT_SSSR_StoreRay(blockFirstRay + ray, entries[k]);
+        }
     }
 }
 
