@@ -21,9 +21,9 @@
 // n = max(256, B); it can also be a dispatch of its own.
 //
 // Each group finds its first ray from the superblock counts before its superblock and the
-// block counts before it in its superblock (at most 64 + 63 loads at any size), scans its 64
-// tile counts, and copies its rays with all 64 threads, four at a time each. The group that
-// finishes its reads last (a completion counter) clears the block and superblock counts for
+// block counts before it in its superblock (each thread loads at most two counts up to 16.7
+// million pixels, 17 at the largest size), scans its 64 tile counts, and copies its rays with
+// all 64 threads, four at a time each. The group that finishes its reads last (a completion counter) clears the block and superblock counts for
 // the next frame: the classification only adds to them, and the host never resets them.
 #ifndef GLINT_SSSR_COMPACT_HLSLI
 #define GLINT_SSSR_COMPACT_HLSLI
