@@ -276,9 +276,7 @@ report::Section runSection(const std::filesystem::path& dir, const nlohmann::jso
     const nlohmann::json lastErrorsOfFrame = last.value("errors", nlohmann::json::object());
     for (const auto& effect : summary.at("effects")) {
         const std::string name = effect.get<std::string>();
-        const EffectDescriptor* descriptor = findEffect(name);
-        if (!descriptor) continue;
-        const ScoredOutput* scored = replay::scoredOutput(name);
+        const ScoredOutput* scored = replay::scoredOutput(name); // null for an unknown effect
         const nlohmann::json error = lastErrorsOfFrame.value(name, nlohmann::json::object());
         if (scored && !scored->noisy.empty() && error.contains("image") && error.at("image").is_string())
             for (report::Figure& figure : zoomFigures(frameDir, name, error.at("image").get<std::string>(),

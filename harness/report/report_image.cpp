@@ -10,8 +10,6 @@
 #include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfOutputFile.h>
 #include <png.h>
-#include <sstream>
-#include <stdexcept>
 
 #include <algorithm>
 #include <array>
@@ -22,6 +20,7 @@
 #include <cstring>
 #include <filesystem>
 #include <set>
+#include <sstream>
 #include <stdexcept>
 #include <utility>
 
